@@ -1,0 +1,395 @@
+//! From a spec to integer periods: exact times, quantization, figures.
+
+use crate::error::Error;
+use crate::sigmoid::SigmoidInTime;
+use crate::solve::{MAX_ITERATIONS, TimeCurve, pulse_time};
+use crate::spec::{Arithmetic, Curve, Discretization, Rounding, Spec, Timer, Word};
+
+mod sealed {
+    pub trait Sealed {}
+    impl Sealed for u16 {}
+    impl Sealed for u32 {}
+}
+
+/// An integer type a table can be generated into: `u16` or `u32`.
+pub trait TableWord: Copy + sealed::Sealed {
+    /// The [`Word`] this type is.
+    const WORD: Word;
+    /// Converts a period already checked to fit.
+    fn from_ticks(ticks: u32) -> Self;
+}
+
+impl TableWord for u16 {
+    const WORD: Word = Word::U16;
+    fn from_ticks(ticks: u32) -> Self {
+        ticks as u16
+    }
+}
+
+impl TableWord for u32 {
+    const WORD: Word = Word::U32;
+    fn from_ticks(ticks: u32) -> Self {
+        ticks
+    }
+}
+
+/// What a generated table amounts to. Times in seconds, frequencies in Hz
+/// (steps/s), acceleration in Hz/s, jerk in Hz/s².
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Figures {
+    /// Number of entries.
+    pub len: u32,
+    /// First entry, in ticks.
+    pub first_ticks: u32,
+    /// Last entry, in ticks.
+    pub last_ticks: u32,
+    /// Shortest entry, in ticks.
+    pub min_ticks: u32,
+    /// Longest entry, in ticks.
+    pub max_ticks: u32,
+    /// Sum of all entries, in ticks.
+    pub total_ticks: u64,
+    /// Ramp duration as played: `total_ticks * ticks_per_step / timer_hz`.
+    pub duration_s: f64,
+    /// Step frequency of the first entry.
+    pub start_hz: f64,
+    /// Step frequency of the last entry.
+    pub final_hz: f64,
+    /// Largest acceleration between consecutive entries of the integer table.
+    pub max_accel_hz_s: f64,
+    /// Largest jerk between consecutive accelerations of the integer table.
+    pub max_jerk_hz_s2: f64,
+    /// Largest distance of a pulse edge (a prefix sum of the table) from its
+    /// unrounded time under the chosen discretization, in ticks.
+    pub max_edge_error_ticks: f64,
+    /// Last pulse edge minus its unrounded time, in ticks (the drift).
+    pub total_error_ticks: f64,
+    /// Ticks left between the longest entry and the largest value the word holds.
+    pub overflow_margin_ticks: u32,
+}
+
+/// Turns exact periods into integers and keeps the figures.
+struct Quantizer {
+    rounding: Rounding,
+    timer: Timer,
+    scale: f64,
+    exact_edge: f64,
+    emitted: u64,
+    prev_ticks: u32,
+    prev_accel: f64,
+    figures: Figures,
+}
+
+impl Quantizer {
+    fn new(spec: &Spec) -> Self {
+        Quantizer {
+            rounding: spec.rounding,
+            timer: spec.timer,
+            scale: spec.timer.ticks_per_second(),
+            exact_edge: 0.0,
+            emitted: 0,
+            prev_ticks: 0,
+            prev_accel: 0.0,
+            figures: Figures {
+                len: 0,
+                first_ticks: 0,
+                last_ticks: 0,
+                min_ticks: u32::MAX,
+                max_ticks: 0,
+                total_ticks: 0,
+                duration_s: 0.0,
+                start_hz: 0.0,
+                final_hz: 0.0,
+                max_accel_hz_s: 0.0,
+                max_jerk_hz_s2: 0.0,
+                max_edge_error_ticks: 0.0,
+                total_error_ticks: 0.0,
+                overflow_margin_ticks: 0,
+            },
+        }
+    }
+
+    /// Quantizes entry `index`, whose exact length is `entry` ticks and whose
+    /// exact end is `edge` ticks from the start (the running sum of entries when
+    /// `None`).
+    fn push(&mut self, index: u32, entry: f64, edge: Option<f64>) -> Result<u32, Error> {
+        self.exact_edge = match edge {
+            Some(edge) => edge,
+            None => self.exact_edge + entry,
+        };
+        let rounded = match self.rounding {
+            Rounding::Truncate => libm::trunc(entry),
+            Rounding::Nearest => libm::round(entry),
+            Rounding::Diffuse => libm::round(self.exact_edge) - self.emitted as f64,
+        };
+        let max = self.timer.word.max();
+        if !rounded.is_finite() || rounded > max as f64 {
+            return Err(Error::PeriodOverflow {
+                index,
+                ticks: entry,
+                word: self.timer.word,
+                timer_hz: self.timer.timer_hz,
+                lowest_hz: self.timer.lowest_frequency(),
+            });
+        }
+        if rounded < 1.0 {
+            return Err(Error::PeriodZero {
+                index,
+                highest_hz: self.scale,
+            });
+        }
+        let ticks = rounded as u32;
+        self.emitted += ticks as u64;
+        self.record(index, ticks);
+        Ok(ticks)
+    }
+
+    fn record(&mut self, index: u32, ticks: u32) {
+        let fig = &mut self.figures;
+        let error = self.emitted as f64 - self.exact_edge;
+        fig.max_edge_error_ticks = fig.max_edge_error_ticks.max(libm::fabs(error));
+        fig.total_error_ticks = error;
+        fig.min_ticks = fig.min_ticks.min(ticks);
+        fig.max_ticks = fig.max_ticks.max(ticks);
+        if index == 0 {
+            fig.first_ticks = ticks;
+        } else {
+            // Acceleration at the edge between the two entries: frequency change
+            // over the time between the entries' midpoints.
+            let f_prev = self.scale / self.prev_ticks as f64;
+            let f = self.scale / ticks as f64;
+            let dt = (self.prev_ticks as f64 + ticks as f64) / 2.0 / self.scale;
+            let accel = (f - f_prev) / dt;
+            fig.max_accel_hz_s = fig.max_accel_hz_s.max(libm::fabs(accel));
+            if index >= 2 {
+                // Consecutive accelerations sit one entry apart.
+                let jerk = (accel - self.prev_accel) / (self.prev_ticks as f64 / self.scale);
+                fig.max_jerk_hz_s2 = fig.max_jerk_hz_s2.max(libm::fabs(jerk));
+            }
+            self.prev_accel = accel;
+        }
+        self.prev_ticks = ticks;
+        fig.last_ticks = ticks;
+        fig.len = index + 1;
+    }
+
+    fn finish(mut self) -> Figures {
+        let fig = &mut self.figures;
+        fig.total_ticks = self.emitted;
+        fig.duration_s = self.emitted as f64 / self.scale;
+        fig.start_hz = self.scale / fig.first_ticks as f64;
+        fig.final_hz = self.scale / fig.last_ticks as f64;
+        fig.overflow_margin_ticks = self.timer.word.max() - fig.max_ticks;
+        self.figures
+    }
+}
+
+/// A curve's time-domain model, for the `exact` and `left_endpoint` discretizations.
+enum TimeModel {
+    Sigmoid(SigmoidInTime),
+}
+
+impl TimeModel {
+    fn new(curve: &Curve) -> Self {
+        match curve {
+            Curve::Sigmoid(s) => TimeModel::Sigmoid(SigmoidInTime::new(s)),
+        }
+    }
+
+    fn curve(&self) -> &dyn TimeCurve {
+        match self {
+            TimeModel::Sigmoid(c) => c,
+        }
+    }
+}
+
+impl Spec {
+    /// Computes the table into `out` and returns its figures.
+    ///
+    /// `out` must hold exactly [`len`](Spec::len) entries of the spec's word.
+    /// No allocation, no panic: the same bits as `period_table!` on any target.
+    ///
+    /// ```
+    /// use profile_core::{Curve, Discretization, Rounding, Arithmetic, Sigmoid, Spec, Timer};
+    ///
+    /// // Seed 000's orange curve, as its C code computes it.
+    /// let spec = Spec::new(
+    ///     Curve::Sigmoid(Sigmoid { fmin: 500.0, fmax: 64_000.0, flexible: 8.0, len: 1000 }),
+    ///     Timer::new(10_000_000),
+    /// )
+    /// .with_discretization(Discretization::Index)
+    /// .with_rounding(Rounding::Truncate)
+    /// .with_arithmetic(Arithmetic::F32);
+    /// let mut period = [0u16; 1000];
+    /// spec.generate(&mut period)?;
+    /// assert_eq!((period[0], period[999]), (19183, 156));
+    /// # Ok::<(), profile_core::Error>(())
+    /// ```
+    pub fn generate<W: TableWord>(&self, out: &mut [W]) -> Result<Figures, Error> {
+        self.validate()?;
+        if W::WORD != self.timer.word {
+            return Err(Error::WordMismatch {
+                expected: self.timer.word,
+                got: W::WORD,
+            });
+        }
+        if out.len() != self.len() as usize {
+            return Err(Error::BufferLength {
+                expected: self.len(),
+                got: out.len(),
+            });
+        }
+        self.for_each_period(|index, ticks| {
+            if let Some(slot) = out.get_mut(index as usize) {
+                *slot = W::from_ticks(ticks);
+            }
+        })
+    }
+
+    /// Computes the table's figures without storing it.
+    pub fn figures(&self) -> Result<Figures, Error> {
+        self.for_each_period(|_, _| {})
+    }
+
+    /// Computes the table entry by entry, calling `sink(index, ticks)` for each,
+    /// and returns its figures. Stops at the first entry that does not fit.
+    pub fn for_each_period<F: FnMut(u32, u32)>(&self, mut sink: F) -> Result<Figures, Error> {
+        self.validate()?;
+        let len = self.len();
+        let scale = self.timer.ticks_per_second();
+        let mut quantizer = Quantizer::new(self);
+        match (self.curve, self.discretization) {
+            (Curve::Sigmoid(s), Discretization::Index) => {
+                for k in 0..len {
+                    let entry = match self.arithmetic {
+                        Arithmetic::F32 => scale / s.freq_at_index_f32(k) as f64,
+                        Arithmetic::F64 => scale / s.freq_at_index(k),
+                    };
+                    sink(k, quantizer.push(k, entry, None)?);
+                }
+            }
+            (curve, discretization) => {
+                let model = TimeModel::new(&curve);
+                let c = model.curve();
+                let duration = c.duration();
+                let mut t = 0.0;
+                for k in 0..len {
+                    let next = if k + 1 == len {
+                        duration
+                    } else {
+                        // f is non-decreasing, so the next edge is no later than
+                        // one period at the current frequency.
+                        let hi = duration.min(t + 1.0 / c.freq(t));
+                        pulse_time(c, (k + 1) as f64, t, hi, MAX_ITERATIONS).ok_or(
+                            Error::NoConvergence {
+                                index: k + 1,
+                                iterations: MAX_ITERATIONS,
+                            },
+                        )?
+                    };
+                    let ticks = match discretization {
+                        Discretization::LeftEndpoint => {
+                            quantizer.push(k, scale / c.freq(t), None)?
+                        }
+                        _ => quantizer.push(k, (next - t) * scale, Some(next * scale))?,
+                    };
+                    sink(k, ticks);
+                    t = next;
+                }
+            }
+        }
+        Ok(quantizer.finish())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::spec::Sigmoid;
+
+    fn orange() -> Spec {
+        Spec::new(
+            Curve::Sigmoid(Sigmoid {
+                fmin: 500.0,
+                fmax: 64_000.0,
+                flexible: 8.0,
+                len: 1000,
+            }),
+            Timer::new(10_000_000),
+        )
+    }
+
+    #[test]
+    fn seed_orange_in_compatibility_mode() {
+        let spec = orange()
+            .with_discretization(Discretization::Index)
+            .with_rounding(Rounding::Truncate)
+            .with_arithmetic(Arithmetic::F32);
+        let fig = spec.figures().unwrap();
+        assert_eq!((fig.first_ticks, fig.last_ticks), (19183, 156));
+        // The seed says "about 1 s"; the table plays in 0.412 s.
+        assert!(
+            (fig.duration_s - 0.412).abs() < 0.0005,
+            "{}",
+            fig.duration_s
+        );
+        // Truncation drifts about -500 ticks over the ramp.
+        assert!(fig.total_error_ticks < -400.0 && fig.total_error_ticks > -600.0);
+    }
+
+    #[test]
+    fn default_mode_edges_within_half_a_tick() {
+        let fig = orange().figures().unwrap();
+        assert!(
+            fig.max_edge_error_ticks <= 0.5,
+            "{}",
+            fig.max_edge_error_ticks
+        );
+        // The exact total is len / mean frequency.
+        let exact = 1e7 * 1000.0 / 32_250.0;
+        assert!((fig.total_ticks as f64 - exact).abs() <= 0.5);
+    }
+
+    #[test]
+    fn overflow_names_the_entry_and_the_lowest_frequency() {
+        let spec = Spec::new(
+            Curve::Sigmoid(Sigmoid {
+                fmin: 100.0,
+                fmax: 1000.0,
+                flexible: 4.0,
+                len: 100,
+            }),
+            Timer::new(10_000_000),
+        )
+        .with_discretization(Discretization::Index);
+        let err = spec.figures().unwrap_err();
+        let Error::PeriodOverflow {
+            index, lowest_hz, ..
+        } = err
+        else {
+            panic!("{err:?}")
+        };
+        assert_eq!(index, 0);
+        assert!((lowest_hz - 152.59).abs() < 0.005);
+    }
+
+    #[test]
+    fn buffer_must_match_len_and_word() {
+        let mut short = [0u16; 10];
+        assert_eq!(
+            orange().generate(&mut short),
+            Err(Error::BufferLength {
+                expected: 1000,
+                got: 10
+            })
+        );
+        let mut wide = [0u32; 1000];
+        assert_eq!(
+            orange().generate(&mut wide),
+            Err(Error::WordMismatch {
+                expected: Word::U16,
+                got: Word::U32
+            })
+        );
+    }
+}

@@ -1,0 +1,125 @@
+//! The sigmoid S-curve of seeds 000 and 003, over the step index and over time.
+
+use crate::solve::TimeCurve;
+use crate::spec::Sigmoid;
+
+/// `ln(1 + e^x)` without overflow or loss for large `|x|`.
+fn softplus(x: f64) -> f64 {
+    if x > 0.0 {
+        x + libm::log1p(libm::exp(-x))
+    } else {
+        libm::log1p(libm::exp(x))
+    }
+}
+
+/// `1 / (1 + e^-x)`.
+fn logistic(x: f64) -> f64 {
+    1.0 / (1.0 + libm::exp(-x))
+}
+
+impl Sigmoid {
+    /// Frequency at step index `i` (`discretization = index`), in Hz.
+    pub fn freq_at_index(&self, i: u32) -> f64 {
+        let half = self.len as f64 / 2.0;
+        let x = self.flexible * (i as f64 - half) / half;
+        (self.fmax - self.fmin) * logistic(x) + self.fmin
+    }
+
+    /// Frequency at step index `i` computed as seed 000's `CalculateSModelLine`
+    /// does in C: single precision, `expf`, and a double-precision `1.0 / ...`.
+    pub fn freq_at_index_f32(&self, i: u32) -> f32 {
+        let len = self.len as f32;
+        let flexible = self.flexible as f32;
+        let fmin = self.fmin as f32;
+        let delt = self.fmax as f32 - fmin;
+        let melo = flexible * (i as f32 - len / 2.0) / (len / 2.0);
+        let deno = (1.0f64 / (1.0f32 + libm::expf(-melo)) as f64) as f32;
+        delt * deno + fmin
+    }
+
+    /// Ramp duration in time: `len / (fmin + (fmax - fmin) / 2)`, in s.
+    pub fn duration(&self) -> f64 {
+        self.len as f64 / (self.fmin + (self.fmax - self.fmin) / 2.0)
+    }
+}
+
+/// The sigmoid over `[0, T]`, with its closed-form step count.
+pub(crate) struct SigmoidInTime {
+    fmin: f64,
+    delt: f64,
+    flexible: f64,
+    half: f64,
+    duration: f64,
+    softplus_start: f64,
+}
+
+impl SigmoidInTime {
+    pub(crate) fn new(s: &Sigmoid) -> Self {
+        let duration = s.duration();
+        SigmoidInTime {
+            fmin: s.fmin,
+            delt: s.fmax - s.fmin,
+            flexible: s.flexible,
+            half: duration / 2.0,
+            duration,
+            softplus_start: softplus(-s.flexible),
+        }
+    }
+
+    fn arg(&self, t: f64) -> f64 {
+        self.flexible * (t - self.half) / self.half
+    }
+}
+
+impl TimeCurve for SigmoidInTime {
+    fn freq(&self, t: f64) -> f64 {
+        self.fmin + self.delt * logistic(self.arg(t))
+    }
+
+    /// `N(t) = fmin t + (fmax - fmin) (T / 2 flexible) (softplus(s(t)) - softplus(-flexible))`.
+    fn steps(&self, t: f64) -> f64 {
+        self.fmin * t
+            + self.delt
+                * (self.half / self.flexible)
+                * (softplus(self.arg(t)) - self.softplus_start)
+    }
+
+    fn duration(&self) -> f64 {
+        self.duration
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn step_count_reaches_len_at_the_end() {
+        let s = Sigmoid {
+            fmin: 500.0,
+            fmax: 64_000.0,
+            flexible: 8.0,
+            len: 1000,
+        };
+        let c = SigmoidInTime::new(&s);
+        assert!((c.steps(c.duration()) - 1000.0).abs() < 1e-9);
+        assert_eq!(c.steps(0.0), 0.0);
+        // In time, 1000 steps at an average of (500 + 64000) / 2 Hz.
+        assert!((c.duration() - 1000.0 / 32_250.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn index_curve_matches_the_seed_first_and_last() {
+        let s = Sigmoid {
+            fmin: 500.0,
+            fmax: 64_000.0,
+            flexible: 8.0,
+            len: 1000,
+        };
+        // f[0] = 521.29 Hz: the curve never reaches fmin.
+        assert!((s.freq_at_index(0) - 521.29).abs() < 0.01);
+        assert_eq!((1e7 / s.freq_at_index(0)) as u32, 19183);
+        assert_eq!((1e7 / s.freq_at_index(999)) as u32, 156);
+        assert_eq!((1e7 / s.freq_at_index_f32(0) as f64) as u32, 19183);
+    }
+}

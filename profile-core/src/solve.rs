@@ -1,0 +1,117 @@
+//! Pulse times from the step count: solve `N(t) = k` for `t`.
+
+/// The iteration bound of [`pulse_time`]. Safeguarded Newton converges in a
+/// handful of iterations; pure bisection of an `f64` bracket needs at most 64.
+pub(crate) const MAX_ITERATIONS: u32 = 100;
+
+/// A curve defined in time: frequency, step count and ramp duration.
+pub(crate) trait TimeCurve {
+    /// Step frequency at time `t`, in Hz. Non-decreasing over `[0, duration]`.
+    fn freq(&self, t: f64) -> f64;
+    /// Steps taken by time `t`: `N(t) = ∫0^t f`.
+    fn steps(&self, t: f64) -> f64;
+    /// The time at which `N` reaches the table length.
+    fn duration(&self) -> f64;
+}
+
+/// Solves `N(t) = target` for `t` in `[lo, hi]`, where `N(lo) <= target <= N(hi)`.
+///
+/// Newton's method on `N` (whose derivative is `f`), falling back to bisection
+/// whenever a Newton step leaves the bracket; the bracket shrinks every
+/// iteration. Returns `None` if `max_iterations` pass without convergence or the
+/// curve yields a non-finite value: never loops without bound.
+pub(crate) fn pulse_time<C: TimeCurve + ?Sized>(
+    curve: &C,
+    target: f64,
+    mut lo: f64,
+    mut hi: f64,
+    max_iterations: u32,
+) -> Option<f64> {
+    let mut t = lo + 0.5 * (hi - lo);
+    // Start from the left end's Newton step: for the accelerating curves used
+    // here it lands close to the root.
+    let f_lo = curve.freq(lo);
+    if f_lo > 0.0 {
+        let guess = lo + (target - curve.steps(lo)) / f_lo;
+        if guess > lo && guess < hi {
+            t = guess;
+        }
+    }
+    for _ in 0..max_iterations {
+        let g = curve.steps(t) - target;
+        let slope = curve.freq(t);
+        if !g.is_finite() || !slope.is_finite() {
+            return None;
+        }
+        if g == 0.0 {
+            return Some(t);
+        }
+        if g < 0.0 {
+            lo = t;
+        } else {
+            hi = t;
+        }
+        let mut next = t - g / slope;
+        if !(next > lo && next < hi) {
+            next = lo + 0.5 * (hi - lo);
+        }
+        let tolerance = 4.0 * f64::EPSILON * libm::fabs(t);
+        if libm::fabs(next - t) <= tolerance || hi - lo <= tolerance {
+            return Some(next);
+        }
+        t = next;
+    }
+    None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `f(t) = 1 + t`, `N(t) = t + t²/2`.
+    struct Ramp;
+    impl TimeCurve for Ramp {
+        fn freq(&self, t: f64) -> f64 {
+            1.0 + t
+        }
+        fn steps(&self, t: f64) -> f64 {
+            t + t * t / 2.0
+        }
+        fn duration(&self) -> f64 {
+            2.0
+        }
+    }
+
+    /// A curve whose step count is NaN: the solver must give up, not loop.
+    struct Broken;
+    impl TimeCurve for Broken {
+        fn freq(&self, _: f64) -> f64 {
+            1.0
+        }
+        fn steps(&self, _: f64) -> f64 {
+            f64::NAN
+        }
+        fn duration(&self) -> f64 {
+            1.0
+        }
+    }
+
+    #[test]
+    fn converges_to_the_closed_form() {
+        // t + t²/2 = 3  =>  t = -1 + sqrt(7)
+        let t = pulse_time(&Ramp, 3.0, 0.0, 4.0, MAX_ITERATIONS).unwrap();
+        assert!((t - (-1.0 + 7f64.sqrt())).abs() < 1e-15, "{t}");
+    }
+
+    #[test]
+    fn iteration_bound_is_enforced() {
+        // One iteration cannot reach f64 precision from a wide bracket.
+        assert_eq!(pulse_time(&Ramp, 3.0, 0.0, 4.0, 1), None);
+        assert!(pulse_time(&Ramp, 3.0, 0.0, 4.0, 8).is_some());
+    }
+
+    #[test]
+    fn non_finite_curve_is_an_error_not_a_hang() {
+        assert_eq!(pulse_time(&Broken, 0.5, 0.0, 1.0, MAX_ITERATIONS), None);
+    }
+}

@@ -1,0 +1,3 @@
+//! Stepper-motor acceleration tables computed at compile time.
+pub use profile_core::*;
+pub use profile_macros::period_table;
