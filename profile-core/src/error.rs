@@ -28,6 +28,22 @@ pub enum Key {
     Flexible,
     /// `len`
     Len,
+    /// `f_inf`
+    FInf,
+    /// `tau`
+    Tau,
+    /// `accel`
+    Accel,
+    /// `f1`
+    F1,
+    /// `f2`
+    F2,
+    /// `shape`
+    Shape,
+    /// `jerk`
+    Jerk,
+    /// `segments`
+    Segments,
 }
 
 impl Key {
@@ -38,12 +54,20 @@ impl Key {
         Key::Fmin,
         Key::Fmax,
         Key::Flexible,
+        Key::FInf,
+        Key::Tau,
+        Key::Accel,
+        Key::F1,
+        Key::F2,
+        Key::Shape,
+        Key::Jerk,
         Key::TimerHz,
         Key::Word,
         Key::TicksPerStep,
         Key::Discretization,
         Key::Rounding,
         Key::Arithmetic,
+        Key::Segments,
     ];
 
     /// The key as written by users.
@@ -60,6 +84,14 @@ impl Key {
             Key::Fmax => "fmax",
             Key::Flexible => "flexible",
             Key::Len => "len",
+            Key::FInf => "f_inf",
+            Key::Tau => "tau",
+            Key::Accel => "accel",
+            Key::F1 => "f1",
+            Key::F2 => "f2",
+            Key::Shape => "shape",
+            Key::Jerk => "jerk",
+            Key::Segments => "segments",
         }
     }
 
@@ -115,6 +147,61 @@ pub enum Error {
         other: Key,
         /// That parameter's value.
         other_value: f64,
+    },
+    /// A number must differ from 0.
+    Zero {
+        /// The parameter.
+        key: Key,
+    },
+    /// A number must be greater than a bound derived from other parameters.
+    TooSmall {
+        /// The parameter.
+        key: Key,
+        /// Its value.
+        value: f64,
+        /// The bound it must exceed.
+        min: f64,
+        /// Why, in words.
+        why: &'static str,
+    },
+    /// A number must be a whole number (integer arithmetic).
+    NotWhole {
+        /// The parameter.
+        key: Key,
+        /// Its value.
+        value: f64,
+    },
+    /// An intermediate of seed 004's integer code would overflow its C type.
+    IntegerOverflow {
+        /// The parameter to blame.
+        key: Key,
+        /// The C expression.
+        expression: &'static str,
+        /// Its value.
+        value: u128,
+        /// The C type's maximum.
+        max: u64,
+    },
+    /// The curve's parameters make the ramp longer than [`MAX_LEN`](crate::MAX_LEN).
+    RampTooLong {
+        /// The parameter that sets the length.
+        key: Key,
+        /// The steps the ramp would take.
+        steps: f64,
+        /// The maximum.
+        max: u32,
+    },
+    /// A segment of a segment table holds no step.
+    EmptySegment {
+        /// The segment's index.
+        index: u32,
+        /// The number of steps in the ramp.
+        steps: u32,
+    },
+    /// A segment table needs a curve in time.
+    SegmentsNeedTime {
+        /// The discretization asked for.
+        discretization: crate::Discretization,
     },
     /// `len` is 0.
     LenZero,
@@ -191,6 +278,11 @@ impl Error {
             Error::NotFinite { key, .. }
             | Error::NotPositive { key, .. }
             | Error::TooLarge { key, .. }
+            | Error::Zero { key }
+            | Error::TooSmall { key, .. }
+            | Error::NotWhole { key, .. }
+            | Error::IntegerOverflow { key, .. }
+            | Error::RampTooLong { key, .. }
             | Error::NotGreater { key, .. }
             | Error::Unsupported { key, .. } => Some(key),
             Error::LenZero | Error::LenTooLarge { .. } => Some(Key::Len),
@@ -198,6 +290,7 @@ impl Error {
             Error::TicksPerStep { .. } => Some(Key::TicksPerStep),
             Error::PeriodOverflow { .. } => Some(Key::Fmin),
             Error::PeriodZero { .. } => Some(Key::Fmax),
+            Error::EmptySegment { .. } | Error::SegmentsNeedTime { .. } => Some(Key::Segments),
             Error::BufferLength { .. } | Error::WordMismatch { .. } => None,
             Error::NoConvergence { .. } => Some(Key::Curve),
         }
@@ -224,6 +317,39 @@ impl fmt::Display for Error {
             } => write!(
                 f,
                 "`{key}` must be greater than `{other}` (got {value} <= {other_value})"
+            ),
+            Error::Zero { key } => write!(f, "`{key}` must not be 0"),
+            Error::TooSmall {
+                key,
+                value,
+                min,
+                why,
+            } => write!(f, "`{key}` must be greater than {min} {why} (got {value})"),
+            Error::NotWhole { key, value } => write!(
+                f,
+                "`{key}` must be a whole number with `arithmetic = integer` (got {value})"
+            ),
+            Error::IntegerOverflow {
+                key,
+                expression,
+                value,
+                max,
+            } => write!(
+                f,
+                "`{key}` overflows the integer `pulse()` code: `{expression}` is {value}, more than {max}"
+            ),
+            Error::RampTooLong { key, steps, max } => write!(
+                f,
+                "`{key}` makes the ramp {steps:.0} steps long; at most {max} are allowed"
+            ),
+            Error::EmptySegment { index, steps } => write!(
+                f,
+                "segment {index} holds no step of the {steps}-step ramp; use fewer `segments`"
+            ),
+            Error::SegmentsNeedTime { discretization } => write!(
+                f,
+                "`segments` cuts the curve into equal-time pieces and needs `discretization = exact` (got `{}`)",
+                discretization.name()
             ),
             Error::LenZero => f.write_str("`len` must be at least 1 (got 0)"),
             Error::LenTooLarge { len, max } => {

@@ -1,8 +1,9 @@
 //! From a spec to integer periods: exact times, quantization, figures.
 
+use crate::curves::TimeModel;
 use crate::error::Error;
-use crate::sigmoid::SigmoidInTime;
-use crate::solve::{MAX_ITERATIONS, TimeCurve, pulse_time};
+use crate::linear::IntegerLinear;
+use crate::solve::{MAX_ITERATIONS, TimeCurve, pulse_time, time_after_ramp};
 use crate::spec::{Arithmetic, Curve, Discretization, Rounding, Spec, Timer, Word};
 
 mod sealed {
@@ -122,6 +123,16 @@ impl Quantizer {
             Rounding::Nearest => libm::round(entry),
             Rounding::Diffuse => libm::round(self.exact_edge) - self.emitted as f64,
         };
+        self.check(index, rounded, entry)
+    }
+
+    /// Records entry `index` already rounded by the curve's own arithmetic.
+    fn push_exact(&mut self, index: u32, ticks: u64, entry: f64) -> Result<u32, Error> {
+        self.exact_edge += entry;
+        self.check(index, ticks as f64, entry)
+    }
+
+    fn check(&mut self, index: u32, rounded: f64, entry: f64) -> Result<u32, Error> {
         let max = self.timer.word.max();
         if !rounded.is_finite() || rounded > max as f64 {
             return Err(Error::PeriodOverflow {
@@ -184,23 +195,22 @@ impl Quantizer {
     }
 }
 
-/// A curve's time-domain model, for the `exact` and `left_endpoint` discretizations.
-enum TimeModel {
-    Sigmoid(SigmoidInTime),
-}
-
-impl TimeModel {
-    fn new(curve: &Curve) -> Self {
-        match curve {
-            Curve::Sigmoid(s) => TimeModel::Sigmoid(SigmoidInTime::new(s)),
-        }
+/// The exact time of pulse edge `k` (when `N(t) = k`), in s.
+pub(crate) fn edge_time(c: &dyn TimeCurve, k: u32) -> Result<f64, Error> {
+    let steps = k as f64;
+    if let Some(t) = c.time_at(steps) {
+        return Ok(t);
     }
-
-    fn curve(&self) -> &dyn TimeCurve {
-        match self {
-            TimeModel::Sigmoid(c) => c,
-        }
+    let (ramp_time, ramp_steps) = c.ramp_end();
+    if steps >= ramp_steps {
+        return Ok(time_after_ramp(c, steps));
     }
+    // f is non-decreasing and at least f(0), so edge k is no later than k / f(0).
+    let hi = ramp_time.min(steps / c.freq(0.0));
+    pulse_time(c, steps, 0.0, hi, MAX_ITERATIONS).ok_or(Error::NoConvergence {
+        index: k,
+        iterations: MAX_ITERATIONS,
+    })
 }
 
 impl Spec {
@@ -263,30 +273,34 @@ impl Spec {
                 for k in 0..len {
                     let entry = match self.arithmetic {
                         Arithmetic::F32 => scale / s.freq_at_index_f32(k) as f64,
-                        Arithmetic::F64 => scale / s.freq_at_index(k),
+                        _ => scale / s.freq_at_index(k),
                     };
                     sink(k, quantizer.push(k, entry, None)?);
+                }
+            }
+            (Curve::Linear(l), Discretization::Index) => {
+                if self.arithmetic == Arithmetic::Integer {
+                    let t = self.timer;
+                    let int = IntegerLinear::new(&l, len, t.ticks_per_step, t.timer_hz)?;
+                    for k in 0..len {
+                        // The reload is the article's integer division; its
+                        // exact value is the same ratio before truncation.
+                        let exact =
+                            t.timer_hz as f64 / (t.ticks_per_step as f64 * int.freq(k) as f64);
+                        sink(k, quantizer.push_exact(k, int.reload(k), exact)?);
+                    }
+                } else {
+                    for k in 0..len {
+                        sink(k, quantizer.push(k, scale / l.freq_at_index(k), None)?);
+                    }
                 }
             }
             (curve, discretization) => {
                 let model = TimeModel::new(&curve);
                 let c = model.curve();
-                let duration = c.duration();
                 let mut t = 0.0;
                 for k in 0..len {
-                    let next = if k + 1 == len {
-                        duration
-                    } else {
-                        // f is non-decreasing, so the next edge is no later than
-                        // one period at the current frequency.
-                        let hi = duration.min(t + 1.0 / c.freq(t));
-                        pulse_time(c, (k + 1) as f64, t, hi, MAX_ITERATIONS).ok_or(
-                            Error::NoConvergence {
-                                index: k + 1,
-                                iterations: MAX_ITERATIONS,
-                            },
-                        )?
-                    };
+                    let next = edge_time(c, k + 1)?;
                     let ticks = match discretization {
                         Discretization::LeftEndpoint => {
                             quantizer.push(k, scale / c.freq(t), None)?

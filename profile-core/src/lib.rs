@@ -30,22 +30,32 @@
 #[cfg(feature = "std")]
 extern crate std;
 
+mod curves;
 #[cfg(feature = "codegen")]
 pub mod emit;
 mod error;
+mod exponential;
 mod generate;
+mod jerk;
+mod linear;
 #[cfg(feature = "codegen")]
 pub mod params;
+mod segments;
 mod sigmoid;
 mod solve;
 mod spec;
 #[cfg(feature = "std")]
 mod table;
+mod three_stage;
 mod validate;
 
 pub use error::{Error, Key};
 pub use generate::{Figures, TableWord};
-pub use spec::{Arithmetic, Curve, Discretization, MAX_LEN, Rounding, Sigmoid, Spec, Timer, Word};
+pub use segments::SegmentFigures;
+pub use spec::{
+    Arithmetic, Curve, Discretization, Exponential, ExponentialExtent, JerkLimited, Linear,
+    LinearExtent, MAX_LEN, Rounding, Sigmoid, Spec, ThreeStage, Timer, Word,
+};
 #[cfg(feature = "std")]
 pub use table::Table;
 pub use validate::MAX_FLEXIBLE;

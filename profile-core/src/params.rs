@@ -12,7 +12,8 @@ use std::vec::Vec;
 
 use crate::error::{Error, Key};
 use crate::spec::{
-    Arithmetic, Curve, Discretization, MAX_LEN, Rounding, Sigmoid, Spec, Timer, Word,
+    Arithmetic, Curve, Discretization, Exponential, ExponentialExtent, JerkLimited, Linear,
+    LinearExtent, MAX_LEN, Rounding, Sigmoid, Spec, ThreeStage, Timer, Word,
 };
 
 /// A value as written by the user.
@@ -59,20 +60,13 @@ pub struct Diagnostic<L> {
 }
 
 /// The curves a spec can name.
-pub const CURVES: &[&str] = &["sigmoid"];
-
-/// The curve a spec names, once its name is known to be valid.
-#[derive(Clone, Copy)]
-enum CurveKind {
-    Sigmoid,
-}
-
-impl CurveKind {
-    /// Only called with a name from [`CURVES`].
-    fn from_name(_name: &str) -> Self {
-        CurveKind::Sigmoid
-    }
-}
+pub const CURVES: &[&str] = &[
+    "sigmoid",
+    "exponential",
+    "linear",
+    "three_stage",
+    "jerk_limited",
+];
 
 /// Keys every curve takes.
 const COMMON: &[Key] = &[
@@ -83,30 +77,51 @@ const COMMON: &[Key] = &[
     Key::Discretization,
     Key::Rounding,
     Key::Arithmetic,
+    Key::Segments,
 ];
 
-/// The keys `curve` takes besides the common ones, the required ones first.
-fn curve_keys(curve: &str) -> &'static [Key] {
-    match curve {
-        "sigmoid" => &[Key::Len, Key::Fmin, Key::Fmax, Key::Flexible],
-        _ => &[],
-    }
+/// A curve's own keys: those it requires, and pairs of which exactly one is given.
+struct CurveKeys {
+    required: &'static [Key],
+    one_of: Option<[Key; 2]>,
 }
 
-/// Keys that must be given for `curve`.
-fn required(curve: &str) -> Vec<Key> {
-    let mut keys = curve_keys(curve).to_vec();
-    keys.push(Key::TimerHz);
-    keys
+fn curve_keys(curve: &str) -> CurveKeys {
+    let (required, one_of): (&'static [Key], _) = match curve {
+        "sigmoid" => (&[Key::Len, Key::Fmin, Key::Fmax, Key::Flexible], None),
+        "exponential" => (
+            &[Key::Fmin, Key::Fmax, Key::FInf],
+            Some([Key::Len, Key::Tau]),
+        ),
+        "linear" => (&[Key::Fmin, Key::Fmax], Some([Key::Len, Key::Accel])),
+        "three_stage" => (
+            &[
+                Key::Fmin,
+                Key::Fmax,
+                Key::Accel,
+                Key::F1,
+                Key::F2,
+                Key::Shape,
+            ],
+            None,
+        ),
+        "jerk_limited" => (&[Key::Fmin, Key::Fmax, Key::Accel, Key::Jerk], None),
+        _ => (&[], None),
+    };
+    CurveKeys { required, one_of }
 }
 
-/// Every key `curve` accepts.
+/// Every key `curve` accepts, in documentation order.
 pub fn keys_for(curve: &str) -> Vec<Key> {
-    let specific = curve_keys(curve);
+    let own = curve_keys(curve);
     Key::ALL
         .iter()
         .copied()
-        .filter(|k| COMMON.contains(k) || specific.contains(k))
+        .filter(|k| {
+            COMMON.contains(k)
+                || own.required.contains(k)
+                || own.one_of.is_some_and(|pair| pair.contains(k))
+        })
         .collect()
 }
 
@@ -145,97 +160,162 @@ pub fn suggest<'a>(word: &str, candidates: impl IntoIterator<Item = &'a str>) ->
         .map(|(_, c)| c)
 }
 
+/// The unit a numeric key is given in, for messages.
+pub fn unit(key: Key) -> &'static str {
+    match key {
+        Key::Fmin | Key::Fmax | Key::FInf | Key::F1 | Key::F2 => "Hz (steps/s)",
+        Key::TimerHz => "Hz",
+        Key::Accel => "Hz/s",
+        Key::Jerk => "Hz/s²",
+        Key::Tau => "s",
+        Key::Shape => "1/s",
+        _ => "",
+    }
+}
+
+/// A table's layout: one entry per step, or seed 001's segments.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Layout {
+    /// One period per step: `[u16; len]`.
+    Steps,
+    /// `n` equal-time segments of (period, step count): `[(u16, u16); n]`.
+    Segments(u32),
+}
+
+/// What a list of arguments asks for.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Parsed {
+    /// The table's spec.
+    pub spec: Spec,
+    /// Its layout.
+    pub layout: Layout,
+}
+
 struct Collector<'a, L> {
     args: &'a [Arg<L>],
     whole: &'a L,
-    diagnostics: Vec<Diagnostic<L>>,
+    /// Diagnostics with the index of the argument they concern, for source order.
+    diagnostics: Vec<(usize, Diagnostic<L>)>,
 }
 
 impl<L: Clone> Collector<'_, L> {
-    fn error(&mut self, loc: &L, message: String) {
-        self.diagnostics.push(Diagnostic {
-            loc: loc.clone(),
-            message,
-        });
+    fn at_arg(&mut self, index: usize, key: bool, message: String) {
+        let arg = &self.args[index];
+        let loc = if key { &arg.key_loc } else { &arg.value_loc };
+        self.diagnostics.push((
+            index,
+            Diagnostic {
+                loc: loc.clone(),
+                message,
+            },
+        ));
     }
 
-    fn find(&self, key: Key) -> Option<&Arg<L>> {
-        self.args.iter().find(|a| a.key == key.name())
+    fn at_whole(&mut self, message: String) {
+        self.diagnostics.push((
+            usize::MAX,
+            Diagnostic {
+                loc: self.whole.clone(),
+                message,
+            },
+        ));
+    }
+
+    fn find(&self, key: Key) -> Option<(usize, &Arg<L>)> {
+        self.args
+            .iter()
+            .enumerate()
+            .find(|(_, a)| a.key == key.name())
     }
 
     fn float(&mut self, key: Key) -> Option<f64> {
-        let arg = self.find(key)?.clone();
-        match arg.value {
-            Value::Int(v) => Some(v as f64),
-            Value::Float(v) => Some(v),
-            Value::Name(ref n) => {
-                self.error(
-                    &arg.value_loc,
-                    format!("`{key}` expects a number in {}, got `{n}`", unit(key)),
-                );
+        let (i, arg) = self.find(key)?;
+        match &arg.value {
+            Value::Int(v) => Some(*v as f64),
+            Value::Float(v) => Some(*v),
+            Value::Name(n) => {
+                let message = format!("`{key}` expects a number in {}, got `{n}`", unit(key));
+                self.at_arg(i, false, message);
                 None
             }
         }
     }
 
     fn int(&mut self, key: Key, expected: &str) -> Option<i128> {
-        let arg = self.find(key)?.clone();
-        match arg.value {
-            Value::Int(v) => Some(v),
-            ref other => {
-                self.error(
-                    &arg.value_loc,
-                    format!("`{key}` expects {expected}, got `{other}`"),
-                );
+        let (i, arg) = self.find(key)?;
+        match &arg.value {
+            Value::Int(v) => Some(*v),
+            other => {
+                let message = format!("`{key}` expects {expected}, got `{other}`");
+                self.at_arg(i, false, message);
+                None
+            }
+        }
+    }
+
+    /// An integer key with a range; `check` says what is wrong with a value.
+    fn ranged<T>(
+        &mut self,
+        key: Key,
+        expected: &str,
+        check: impl Fn(i128) -> Result<T, String>,
+    ) -> Option<T> {
+        let v = self.int(key, expected)?;
+        match check(v) {
+            Ok(t) => Some(t),
+            Err(message) => {
+                let (i, _) = self.find(key)?;
+                self.at_arg(i, false, message);
                 None
             }
         }
     }
 
     fn name<T: Copy>(&mut self, key: Key, choices: &[(&'static str, T)]) -> Option<T> {
-        let arg = self.find(key)?.clone();
-        let names = || quoted_list(choices.iter().map(|(n, _)| *n));
-        match arg.value {
-            Value::Name(ref n) => match choices.iter().find(|(c, _)| c == n) {
-                Some((_, v)) => Some(*v),
+        let (i, arg) = self.find(key)?;
+        let names = quoted_list(choices.iter().map(|(n, _)| *n));
+        let message = match &arg.value {
+            Value::Name(n) => match choices.iter().find(|(c, _)| c == n) {
+                Some((_, v)) => return Some(*v),
                 None => {
                     let hint = suggest(n, choices.iter().map(|(c, _)| *c))
                         .map(|s| format!("; did you mean `{s}`?"))
                         .unwrap_or_default();
-                    self.error(
-                        &arg.value_loc,
-                        format!("`{key}` must be one of {} (got `{n}`){hint}", names()),
-                    );
-                    None
+                    format!("`{key}` must be one of {names} (got `{n}`){hint}")
                 }
             },
-            ref other => {
-                self.error(
-                    &arg.value_loc,
-                    format!("`{key}` expects one of {}, got `{other}`", names()),
-                );
-                None
-            }
+            other => format!("`{key}` expects one of {names}, got `{other}`"),
+        };
+        self.at_arg(i, false, message);
+        None
+    }
+
+    fn finish(mut self) -> Vec<Diagnostic<L>> {
+        self.diagnostics.sort_by_key(|(i, _)| *i);
+        self.diagnostics.into_iter().map(|(_, d)| d).collect()
+    }
+}
+
+fn len_check(len: i128) -> Result<u32, String> {
+    if len < 1 {
+        Err(format!("`len` must be at least 1 (got {len})"))
+    } else if len > MAX_LEN as i128 {
+        Err(Error::LenTooLarge {
+            len: u64::try_from(len).unwrap_or(u64::MAX),
+            max: MAX_LEN,
         }
+        .to_string())
+    } else {
+        Ok(len as u32)
     }
 }
 
-/// The unit a numeric key is given in, for messages.
-pub fn unit(key: Key) -> &'static str {
-    match key {
-        Key::Fmin | Key::Fmax => "Hz (steps/s)",
-        Key::TimerHz => "Hz",
-        Key::Flexible => "units of the logistic's half-width",
-        _ => "",
-    }
-}
-
-/// Checks `args` and builds the spec they describe.
+/// Checks `args` and builds the table they describe.
 ///
 /// `whole` locates the entire argument list, for missing keys. All problems
-/// found in keys, kinds and names are reported together; then the spec's own
-/// validation runs.
-pub fn spec_from_args<L: Clone>(args: &[Arg<L>], whole: &L) -> Result<Spec, Vec<Diagnostic<L>>> {
+/// found in keys, kinds and names are reported together, in source order;
+/// then the spec's own validation runs.
+pub fn spec_from_args<L: Clone>(args: &[Arg<L>], whole: &L) -> Result<Parsed, Vec<Diagnostic<L>>> {
     let mut c = Collector {
         args,
         whole,
@@ -243,19 +323,18 @@ pub fn spec_from_args<L: Clone>(args: &[Arg<L>], whole: &L) -> Result<Spec, Vec<
     };
 
     // Which curve, so that its keys are known.
-    let curve_name = match c.find(Key::Curve).cloned() {
+    let curve_name: Option<&str> = match c.find(Key::Curve) {
         None => {
-            c.error(
-                whole,
-                format!(
-                    "missing key `curve`: expected one of {}",
-                    quoted_list(CURVES)
-                ),
-            );
+            c.at_whole(format!(
+                "missing key `curve`: expected one of {}",
+                quoted_list(CURVES)
+            ));
             None
         }
-        Some(arg) => match &arg.value {
-            Value::Name(n) if CURVES.contains(&n.as_str()) => Some(n.clone()),
+        Some((i, arg)) => match &arg.value {
+            Value::Name(n) if CURVES.contains(&n.as_str()) => {
+                CURVES.iter().copied().find(|c| c == n)
+            }
             other => {
                 let hint = match other {
                     Value::Name(n) => suggest(n, CURVES.iter().copied())
@@ -263,79 +342,100 @@ pub fn spec_from_args<L: Clone>(args: &[Arg<L>], whole: &L) -> Result<Spec, Vec<
                         .unwrap_or_default(),
                     _ => String::new(),
                 };
-                c.error(
-                    &arg.value_loc,
-                    format!(
-                        "`curve` must be one of {} (got `{other}`){hint}",
-                        quoted_list(CURVES)
-                    ),
+                let message = format!(
+                    "`curve` must be one of {} (got `{other}`){hint}",
+                    quoted_list(CURVES)
                 );
+                c.at_arg(i, false, message);
                 None
             }
         },
     };
+    let valid = match curve_name {
+        Some(n) => keys_for(n),
+        None => Key::ALL.to_vec(),
+    };
 
     // Unknown, inapplicable and duplicate keys.
+    let mut suggested = Vec::new();
     for (i, arg) in args.iter().enumerate() {
         match Key::from_name(&arg.key) {
             None => {
-                let valid = match &curve_name {
-                    Some(n) => keys_for(n),
-                    None => Key::ALL.to_vec(),
-                };
-                let hint = suggest(&arg.key, valid.iter().map(|k| k.name()))
+                let near = suggest(&arg.key, valid.iter().map(|k| k.name()));
+                suggested.extend(near.and_then(Key::from_name));
+                let hint = near
                     .map(|s| format!("did you mean `{s}`? "))
                     .unwrap_or_default();
-                c.error(
-                    &arg.key_loc,
-                    format!(
-                        "unknown key `{}`; {hint}expected one of {}",
-                        arg.key,
-                        quoted_list(valid.iter().map(|k| k.name()))
-                    ),
+                let message = format!(
+                    "unknown key `{}`; {hint}expected one of {}",
+                    arg.key,
+                    quoted_list(valid.iter().map(|k| k.name()))
                 );
+                c.at_arg(i, true, message);
             }
             Some(key) => {
-                if let Some(n) = &curve_name {
-                    if !keys_for(n).contains(&key) {
-                        c.error(
-                            &arg.key_loc,
-                            format!(
-                                "`{key}` does not apply to `curve = {n}`, which takes {}",
-                                quoted_list(keys_for(n).iter().map(|k| k.name()))
-                            ),
+                if let Some(n) = curve_name {
+                    if !valid.contains(&key) {
+                        let message = format!(
+                            "`{key}` does not apply to `curve = {n}`, which takes {}",
+                            quoted_list(valid.iter().map(|k| k.name()))
                         );
+                        c.at_arg(i, true, message);
                     }
                 }
                 if args[..i].iter().any(|a| a.key == arg.key) {
-                    c.error(&arg.key_loc, format!("duplicate key `{key}`"));
+                    c.at_arg(i, true, format!("duplicate key `{key}`"));
                 }
             }
         }
     }
 
     let Some(curve_name) = curve_name else {
-        return Err(c.diagnostics);
+        return Err(c.finish());
     };
-    let missing: Vec<Key> = required(&curve_name)
-        .into_iter()
-        .filter(|k| c.find(*k).is_none())
+    let own = curve_keys(curve_name);
+    let mut required = own.required.to_vec();
+    required.push(Key::TimerHz);
+    let missing: Vec<Key> = required
+        .iter()
+        .copied()
+        .filter(|k| c.find(*k).is_none() && !suggested.contains(k))
         .collect();
     if !missing.is_empty() {
-        let keys = quoted_list(missing.iter().map(|k| k.name()));
         let plural = if missing.len() == 1 { "key" } else { "keys" };
-        c.error(
-            c.whole,
-            format!(
-                "missing {plural} {keys}: `curve = {curve_name}` needs {}",
-                quoted_list(required(&curve_name).iter().map(|k| k.name()))
+        c.at_whole(format!(
+            "missing {plural} {}: `curve = {curve_name}` needs {}",
+            quoted_list(missing.iter().map(|k| k.name())),
+            quoted_list(required.iter().map(|k| k.name()))
+        ));
+    }
+    if let Some([a, b]) = own.one_of {
+        match (c.find(a).map(|(i, _)| i), c.find(b).map(|(i, _)| i)) {
+            (Some(i), Some(j)) => c.at_arg(
+                i.max(j),
+                true,
+                format!("give one of `{a}` and `{b}`, not both: each sets the ramp's length"),
             ),
-        );
+            (None, None) if !suggested.contains(&a) && !suggested.contains(&b) => c.at_whole(
+                format!("missing key: `curve = {curve_name}` needs one of `{a}` and `{b}`"),
+            ),
+            _ => {}
+        }
     }
 
-    let timer_hz = c.int(Key::TimerHz, "an integer number of Hz");
+    let timer_hz = c.ranged(Key::TimerHz, "an integer number of Hz", |v| {
+        if v < 1 {
+            Err(format!("`timer_hz` must be greater than 0 (got {v})"))
+        } else {
+            u32::try_from(v)
+                .map_err(|_| format!("`timer_hz` must be at most {} (got {v})", u32::MAX))
+        }
+    });
     let word = c.name(Key::Word, &[("u16", Word::U16), ("u32", Word::U32)]);
-    let ticks_per_step = c.int(Key::TicksPerStep, "1 or 2");
+    let ticks_per_step = c.ranged(Key::TicksPerStep, "1 or 2", |v| match v {
+        1 | 2 => Ok(v as u8),
+        _ => Err(format!("`ticks_per_step` must be 1 or 2 (got {v})")),
+    });
     let discretization = c.name(
         Key::Discretization,
         &[
@@ -354,50 +454,69 @@ pub fn spec_from_args<L: Clone>(args: &[Arg<L>], whole: &L) -> Result<Spec, Vec<
     );
     let arithmetic = c.name(
         Key::Arithmetic,
-        &[("f64", Arithmetic::F64), ("f32", Arithmetic::F32)],
+        &[
+            ("f64", Arithmetic::F64),
+            ("f32", Arithmetic::F32),
+            ("integer", Arithmetic::Integer),
+        ],
     );
+    let segments = c.ranged(Key::Segments, "an integer number of segments", |v| {
+        if v < 1 {
+            Err(format!("`segments` must be at least 1 (got {v})"))
+        } else if v > MAX_LEN as i128 {
+            Err(format!("`segments` must be at most {MAX_LEN} (got {v})"))
+        } else {
+            Ok(v as u32)
+        }
+    });
 
-    let curve = match CurveKind::from_name(&curve_name) {
-        CurveKind::Sigmoid => {
-            let len = c.int(Key::Len, "an integer number of entries");
-            let fmin = c.float(Key::Fmin);
-            let fmax = c.float(Key::Fmax);
-            let flexible = c.float(Key::Flexible);
-            Curve::Sigmoid(Sigmoid {
-                fmin: fmin.unwrap_or(f64::NAN),
-                fmax: fmax.unwrap_or(f64::NAN),
-                flexible: flexible.unwrap_or(f64::NAN),
-                len: len.map(|l| int_len(&mut c, l)).unwrap_or(0),
-            })
-        }
+    let nan = f64::NAN;
+    let float = |c: &mut Collector<'_, L>, key| c.float(key).unwrap_or(nan);
+    let len = c.ranged(Key::Len, "an integer number of entries", len_check);
+    let fmin = float(&mut c, Key::Fmin);
+    let fmax = float(&mut c, Key::Fmax);
+    let curve = match curve_name {
+        "sigmoid" => Curve::Sigmoid(Sigmoid {
+            fmin,
+            fmax,
+            flexible: float(&mut c, Key::Flexible),
+            len: len.unwrap_or(0),
+        }),
+        "exponential" => Curve::Exponential(Exponential {
+            fmin,
+            fmax,
+            f_inf: float(&mut c, Key::FInf),
+            extent: match len {
+                Some(n) => ExponentialExtent::Len(n),
+                None => ExponentialExtent::Tau(float(&mut c, Key::Tau)),
+            },
+        }),
+        "linear" => Curve::Linear(Linear {
+            fmin,
+            fmax,
+            extent: match len {
+                Some(n) => LinearExtent::Len(n),
+                None => LinearExtent::Accel(float(&mut c, Key::Accel)),
+            },
+        }),
+        "three_stage" => Curve::ThreeStage(ThreeStage {
+            fmin,
+            fmax,
+            accel: float(&mut c, Key::Accel),
+            f1: float(&mut c, Key::F1),
+            f2: float(&mut c, Key::F2),
+            shape: float(&mut c, Key::Shape),
+        }),
+        _ => Curve::JerkLimited(JerkLimited {
+            fmin,
+            fmax,
+            accel: float(&mut c, Key::Accel),
+            jerk: float(&mut c, Key::Jerk),
+        }),
     };
-    let timer_hz = timer_hz.map(|v| match u32::try_from(v) {
-        Ok(hz) => hz,
-        Err(_) => {
-            let loc = c.find(Key::TimerHz).map(|a| a.value_loc.clone());
-            let message = if v < 0 {
-                format!("`timer_hz` must be greater than 0 (got {v})")
-            } else {
-                format!("`timer_hz` must be at most {} (got {v})", u32::MAX)
-            };
-            c.error(loc.as_ref().unwrap_or(whole), message);
-            0
-        }
-    });
-    let ticks_per_step = ticks_per_step.map(|v| match v {
-        1 | 2 => v as u8,
-        _ => {
-            let loc = c.find(Key::TicksPerStep).map(|a| a.value_loc.clone());
-            c.error(
-                loc.as_ref().unwrap_or(whole),
-                format!("`ticks_per_step` must be 1 or 2 (got {v})"),
-            );
-            1
-        }
-    });
 
     if !c.diagnostics.is_empty() {
-        return Err(c.diagnostics);
+        return Err(c.finish());
     }
     let spec = Spec {
         curve,
@@ -412,25 +531,15 @@ pub fn spec_from_args<L: Clone>(args: &[Arg<L>], whole: &L) -> Result<Spec, Vec<
     };
     spec.validate()
         .map_err(|e| std::vec![locate(&e, args, whole)])?;
-    Ok(spec)
-}
-
-fn int_len<L: Clone>(c: &mut Collector<'_, L>, len: i128) -> u32 {
-    if (1..=MAX_LEN as i128).contains(&len) {
-        return len as u32;
-    }
-    let loc = c.find(Key::Len).map(|a| a.value_loc.clone());
-    let message = if len < 1 {
-        format!("`len` must be at least 1 (got {len})")
-    } else {
-        Error::LenTooLarge {
-            len: u64::try_from(len).unwrap_or(u64::MAX),
-            max: MAX_LEN,
+    let layout = match segments {
+        Some(n) => {
+            spec.check_segments(n)
+                .map_err(|e| std::vec![locate(&e, args, whole)])?;
+            Layout::Segments(n)
         }
-        .to_string()
+        None => Layout::Steps,
     };
-    c.error(loc.as_ref().unwrap_or(c.whole), message);
-    0
+    Ok(Parsed { spec, layout })
 }
 
 /// Places a core error at the value of the key it blames (or on `whole`).
@@ -487,7 +596,7 @@ mod tests {
 
     #[test]
     fn builds_the_orange_spec_with_defaults() {
-        let spec = spec_from_args(&args(&orange()), &999).unwrap();
+        let spec = spec_from_args(&args(&orange()), &999).unwrap().spec;
         assert_eq!(spec.discretization, Discretization::Exact);
         assert_eq!(spec.rounding, Rounding::Diffuse);
         assert_eq!(spec.timer, Timer::new(10_000_000));
@@ -500,21 +609,13 @@ mod tests {
         list[4].0 = "flexibel";
         assert_eq!(
             errors(&list),
-            std::vec![
-                (
-                    8,
-                    "unknown key `flexibel`; did you mean `flexible`? expected one of `curve`, \
+            std::vec![(
+                8,
+                "unknown key `flexibel`; did you mean `flexible`? expected one of `curve`, \
                      `len`, `fmin`, `fmax`, `flexible`, `timer_hz`, `word`, `ticks_per_step`, \
-                     `discretization`, `rounding`, `arithmetic`"
-                        .to_string()
-                ),
-                (
-                    999,
-                    "missing key `flexible`: `curve = sigmoid` needs `len`, `fmin`, `fmax`, \
-                     `flexible`, `timer_hz`"
-                        .to_string()
-                ),
-            ]
+                     `discretization`, `rounding`, `arithmetic`, `segments`"
+                    .to_string()
+            )]
         );
     }
 
@@ -547,14 +648,10 @@ mod tests {
         list[1].1 = Value::Float(1000.5);
         list[2].1 = name("slow");
         list.push(("rounding", name("round")));
+        // Reported together, in source order.
         assert_eq!(
             errors(&list),
             std::vec![
-                (
-                    13,
-                    "`rounding` must be one of `truncate`, `nearest`, `diffuse` (got `round`)"
-                        .to_string()
-                ),
                 (
                     3,
                     "`len` expects an integer number of entries, got `1000.5`".to_string()
@@ -562,6 +659,11 @@ mod tests {
                 (
                     5,
                     "`fmin` expects a number in Hz (steps/s), got `slow`".to_string()
+                ),
+                (
+                    13,
+                    "`rounding` must be one of `truncate`, `nearest`, `diffuse` (got `round`)"
+                        .to_string()
                 ),
             ]
         );

@@ -50,6 +50,7 @@ pub(crate) struct SigmoidInTime {
     flexible: f64,
     half: f64,
     duration: f64,
+    len: f64,
     softplus_start: f64,
 }
 
@@ -62,6 +63,7 @@ impl SigmoidInTime {
             flexible: s.flexible,
             half: duration / 2.0,
             duration,
+            len: s.len as f64,
             softplus_start: softplus(-s.flexible),
         }
     }
@@ -84,8 +86,12 @@ impl TimeCurve for SigmoidInTime {
                 * (softplus(self.arg(t)) - self.softplus_start)
     }
 
-    fn duration(&self) -> f64 {
-        self.duration
+    fn ramp_end(&self) -> (f64, f64) {
+        (self.duration, self.len)
+    }
+
+    fn end_freq(&self) -> f64 {
+        self.fmin + self.delt
     }
 }
 
@@ -102,10 +108,10 @@ mod tests {
             len: 1000,
         };
         let c = SigmoidInTime::new(&s);
-        assert!((c.steps(c.duration()) - 1000.0).abs() < 1e-9);
+        assert!((c.steps(c.ramp_end().0) - 1000.0).abs() < 1e-9);
         assert_eq!(c.steps(0.0), 0.0);
         // In time, 1000 steps at an average of (500 + 64000) / 2 Hz.
-        assert!((c.duration() - 1000.0 / 32_250.0).abs() < 1e-15);
+        assert!((c.ramp_end().0 - 1000.0 / 32_250.0).abs() < 1e-15);
     }
 
     #[test]

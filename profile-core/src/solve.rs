@@ -4,14 +4,31 @@
 /// handful of iterations; pure bisection of an `f64` bracket needs at most 64.
 pub(crate) const MAX_ITERATIONS: u32 = 100;
 
-/// A curve defined in time: frequency, step count and ramp duration.
+/// A curve defined in time: frequency and step count. After its ramp ends the
+/// curve holds its end frequency.
 pub(crate) trait TimeCurve {
-    /// Step frequency at time `t`, in Hz. Non-decreasing over `[0, duration]`.
+    /// Step frequency at time `t`, in Hz. Positive and non-decreasing.
     fn freq(&self, t: f64) -> f64;
     /// Steps taken by time `t`: `N(t) = ∫0^t f`.
     fn steps(&self, t: f64) -> f64;
-    /// The time at which `N` reaches the table length.
-    fn duration(&self) -> f64;
+    /// Time and step count at which the ramp reaches its end frequency.
+    fn ramp_end(&self) -> (f64, f64);
+    /// The frequency held after the ramp.
+    fn end_freq(&self) -> f64;
+    /// The time of step `k` in closed form, where the curve has one.
+    fn time_at(&self, _k: f64) -> Option<f64> {
+        None
+    }
+}
+
+/// The time at which `N` reaches `steps`, for `steps` at or past the ramp's end.
+pub(crate) fn time_after_ramp<C: TimeCurve + ?Sized>(curve: &C, steps: f64) -> f64 {
+    let (t, n) = curve.ramp_end();
+    if steps <= n {
+        t
+    } else {
+        t + (steps - n) / curve.end_freq()
+    }
 }
 
 /// Solves `N(t) = target` for `t` in `[lo, hi]`, where `N(lo) <= target <= N(hi)`.
@@ -77,8 +94,11 @@ mod tests {
         fn steps(&self, t: f64) -> f64 {
             t + t * t / 2.0
         }
-        fn duration(&self) -> f64 {
-            2.0
+        fn ramp_end(&self) -> (f64, f64) {
+            (2.0, 4.0)
+        }
+        fn end_freq(&self) -> f64 {
+            3.0
         }
     }
 
@@ -91,7 +111,10 @@ mod tests {
         fn steps(&self, _: f64) -> f64 {
             f64::NAN
         }
-        fn duration(&self) -> f64 {
+        fn ramp_end(&self) -> (f64, f64) {
+            (1.0, 1.0)
+        }
+        fn end_freq(&self) -> f64 {
             1.0
         }
     }

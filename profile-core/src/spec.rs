@@ -128,6 +128,12 @@ pub enum Arithmetic {
     /// (`CalculateSModelLine`), so tables migrated from C keep their bits.
     /// Applies to `curve = sigmoid` with `discretization = index`.
     F32,
+    /// Integer arithmetic, operation for operation as seed 004's `pulse()`:
+    /// `A = (fmax - fmin)(fmax + fmin) / (2 trans)`, `f[i] = isqrt(2 A i + fmin²)`,
+    /// `reload = timer_hz / (ticks_per_step f[i])`, all integer divisions. Applies
+    /// to `curve = linear` with `discretization = index` and `rounding = truncate`;
+    /// where the article's 16-bit variables would overflow, an error.
+    Integer,
 }
 
 impl Arithmetic {
@@ -136,6 +142,7 @@ impl Arithmetic {
         match self {
             Arithmetic::F64 => "f64",
             Arithmetic::F32 => "f32",
+            Arithmetic::Integer => "integer",
         }
     }
 }
@@ -159,12 +166,105 @@ pub struct Sigmoid {
     pub len: u32,
 }
 
+/// How long an exponential ramp is: a step budget or a time constant.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ExponentialExtent {
+    /// `fmax` is reached exactly at the end of step `len`; `tau` is solved for.
+    Len(u32),
+    /// The time constant `tau`, in s; the table runs until `fmax` is reached.
+    Tau(f64),
+}
+
+/// The exponential ramp of seed 001: `f(t) = fmin + (f_inf - fmin)(1 - exp(-t/tau))`,
+/// cut where it reaches `fmax`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Exponential {
+    /// Start frequency `f0`, in Hz.
+    pub fmin: f64,
+    /// Frequency at the end of the ramp, in Hz. Below `f_inf`.
+    pub fmax: f64,
+    /// The asymptote the exponential approaches, in Hz.
+    pub f_inf: f64,
+    /// Step budget or time constant.
+    pub extent: ExponentialExtent,
+}
+
+/// How long a linear ramp is: a step count or an acceleration.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum LinearExtent {
+    /// Number of entries; the acceleration is solved for.
+    Len(u32),
+    /// Constant acceleration, in Hz/s; the table runs until `fmax` is reached.
+    Accel(f64),
+}
+
+/// Constant acceleration (seed 004): `f(t) = fmin + a t`, so after `i` steps
+/// `f_i = sqrt(fmin² + 2 a i)`.
+///
+/// In time (`exact`, `left_endpoint`), `len` entries take the ramp from `fmin`
+/// to `fmax`: `a = (fmax² - fmin²) / (2 len)`. Over the index (`index`, the
+/// seed's table), entry `i` is `1 / f_i` for `i = 0..=trans` with
+/// `trans = len - 1`, so the last entry is at `fmax`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Linear {
+    /// Start frequency, in Hz.
+    pub fmin: f64,
+    /// End frequency, in Hz.
+    pub fmax: f64,
+    /// Step count or acceleration.
+    pub extent: LinearExtent,
+}
+
+/// The three-stage curve of Zeng, Hu and Hu (seed 002): exponential up to `f1`,
+/// linear at `accel` up to `f2`, parabolic up to `fmax`, with frequency and
+/// acceleration continuous at both joints. The table runs until `fmax`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ThreeStage {
+    /// Start frequency `f0`, in Hz.
+    pub fmin: f64,
+    /// Final frequency `fc`, reached with zero acceleration, in Hz.
+    pub fmax: f64,
+    /// Acceleration `a` of the linear stage (the peak), in Hz/s.
+    pub accel: f64,
+    /// Frequency where the exponential stage hands over to the linear one, in Hz.
+    pub f1: f64,
+    /// Frequency where the linear stage hands over to the parabola, in Hz.
+    pub f2: f64,
+    /// Shape `B` of the exponential stage, in 1/s: positive is convex
+    /// (acceleration falls towards `a`), negative concave. Not 0.
+    pub shape: f64,
+}
+
+/// The jerk-limited (7-segment) S-curve: acceleration rises at `jerk` up to
+/// `accel`, holds, and falls back to zero at `fmax`. When `accel` cannot be
+/// reached within the speed change, the peak acceleration is lower
+/// (triangular acceleration). The table runs until `fmax`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct JerkLimited {
+    /// Start frequency, in Hz.
+    pub fmin: f64,
+    /// Final frequency, in Hz.
+    pub fmax: f64,
+    /// Largest acceleration, in Hz/s.
+    pub accel: f64,
+    /// Jerk, in Hz/s².
+    pub jerk: f64,
+}
+
 /// A curve and its parameters.
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[non_exhaustive]
 pub enum Curve {
     /// The sigmoid S-curve (seeds 000, 003).
     Sigmoid(Sigmoid),
+    /// The exponential ramp (seed 001).
+    Exponential(Exponential),
+    /// Constant acceleration (seed 004).
+    Linear(Linear),
+    /// Exponential, linear, parabolic (seed 002).
+    ThreeStage(ThreeStage),
+    /// Jerk-limited S-curve.
+    JerkLimited(JerkLimited),
 }
 
 impl Curve {
@@ -172,19 +272,22 @@ impl Curve {
     pub const fn name(&self) -> &'static str {
         match self {
             Curve::Sigmoid(_) => "sigmoid",
+            Curve::Exponential(_) => "exponential",
+            Curve::Linear(_) => "linear",
+            Curve::ThreeStage(_) => "three_stage",
+            Curve::JerkLimited(_) => "jerk_limited",
         }
     }
 
-    /// The number of table entries this curve produces.
-    pub fn len(&self) -> u32 {
-        match self {
-            Curve::Sigmoid(s) => s.len,
+    /// The start and end frequencies, in Hz.
+    pub fn frequencies(&self) -> (f64, f64) {
+        match *self {
+            Curve::Sigmoid(c) => (c.fmin, c.fmax),
+            Curve::Exponential(c) => (c.fmin, c.fmax),
+            Curve::Linear(c) => (c.fmin, c.fmax),
+            Curve::ThreeStage(c) => (c.fmin, c.fmax),
+            Curve::JerkLimited(c) => (c.fmin, c.fmax),
         }
-    }
-
-    /// `true` when the curve produces no entries (never for a valid curve).
-    pub fn is_empty(&self) -> bool {
-        self.len() == 0
     }
 }
 
@@ -262,14 +365,22 @@ impl Spec {
         self
     }
 
-    /// The number of entries the table has.
+    /// The number of entries the table has: `len` where given, otherwise the
+    /// steps until the curve reaches `fmax`, rounded up (the final fraction of
+    /// a step is taken at `fmax`). 0 for an invalid spec.
     pub fn len(&self) -> u32 {
-        self.curve.len()
+        let index = self.discretization == Discretization::Index;
+        let (steps, given) = crate::curves::ramp_steps(&self.curve, index);
+        crate::curves::entries(
+            steps,
+            given,
+            index && matches!(self.curve, Curve::Linear(_)),
+        )
     }
 
     /// `true` when the table has no entries (never for a valid spec).
     pub fn is_empty(&self) -> bool {
-        self.curve.is_empty()
+        self.len() == 0
     }
 
     /// Checks every parameter and combination without computing the table.

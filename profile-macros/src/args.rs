@@ -1,52 +1,62 @@
 //! `key = value, ...` into the shared argument schema of `profile-core`.
+//!
+//! Locations are the offending tokens themselves, so an error can cover a
+//! whole `-500` (a `Span` cannot be joined on stable Rust).
 
-use proc_macro2::{Span, TokenStream};
+use proc_macro2::TokenStream;
 use profile_core::params::{Arg, Value};
+use quote::ToTokens;
 use syn::parse::{Parse, ParseStream, Parser};
 use syn::punctuated::Punctuated;
 use syn::{Ident, Lit, Token};
 
-struct Pair(Arg<Span>);
+/// Where an argument is: the tokens to underline. Empty means the whole call.
+pub(crate) type Loc = TokenStream;
+
+struct Pair(Arg<Loc>);
 
 impl Parse for Pair {
     fn parse(input: ParseStream) -> syn::Result<Self> {
-        let key: Ident = input.parse()?;
-        input.parse::<Token![=]>()?;
-        let (value, value_loc) = parse_value(input)?;
+        let key: Ident = input
+            .parse()
+            .map_err(|e| syn::Error::new(e.span(), "expected a key, as in `len = 1000`"))?;
+        input
+            .parse::<Token![=]>()
+            .map_err(|e| syn::Error::new(e.span(), format!("expected `=` after `{key}`")))?;
+        let (value, value_loc) = parse_value(input, &key)?;
         Ok(Pair(Arg {
             key: key.to_string(),
-            key_loc: key.span(),
+            key_loc: key.into_token_stream(),
             value,
             value_loc,
         }))
     }
 }
 
-fn parse_value(input: ParseStream) -> syn::Result<(Value, Span)> {
+fn parse_value(input: ParseStream, key: &Ident) -> syn::Result<(Value, Loc)> {
+    let expected = || format!("`{key}` expects a number or a name");
     if input.peek(Ident) {
         let ident: Ident = input.parse()?;
-        return Ok((Value::Name(ident.to_string()), ident.span()));
+        return Ok((Value::Name(ident.to_string()), ident.into_token_stream()));
     }
     let minus: Option<Token![-]> = input.parse()?;
     let lit: Lit = input
         .parse()
-        .map_err(|e| syn::Error::new(e.span(), "expected a number or a name"))?;
-    let span = match minus {
-        Some(ref m) => m.span.join(lit.span()).unwrap_or(lit.span()),
-        None => lit.span(),
-    };
+        .map_err(|e| syn::Error::new(e.span(), expected()))?;
+    let mut loc = minus.to_token_stream();
+    lit.to_tokens(&mut loc);
     let sign = if minus.is_some() { -1 } else { 1 };
     let value = match &lit {
         Lit::Int(i) => Value::Int(sign * i.base10_parse::<i128>()?),
         Lit::Float(f) => Value::Float(sign as f64 * f.base10_parse::<f64>()?),
         Lit::Str(s) if minus.is_none() => Value::Name(s.value()),
-        _ => return Err(syn::Error::new(span, "expected a number or a name")),
+        _ => return Err(syn::Error::new_spanned(loc, expected())),
     };
-    Ok((value, span))
+    Ok((value, loc))
 }
 
 /// Parses the macro's input into arguments, or a syntax error.
-pub(crate) fn parse(input: TokenStream) -> syn::Result<Vec<Arg<Span>>> {
+pub(crate) fn parse(input: TokenStream) -> syn::Result<Vec<Arg<Loc>>> {
     let pairs = Punctuated::<Pair, Token![,]>::parse_terminated.parse2(input)?;
     Ok(pairs.into_iter().map(|p| p.0).collect())
 }
@@ -77,21 +87,26 @@ mod tests {
                 ("word", Value::Name("u32".into())),
             ]
         );
+        assert_eq!(args[1].value_loc.to_string(), "- 5");
     }
 
     #[test]
-    fn syntax_errors_are_errors() {
-        for bad in [
-            "curve",
-            "curve =",
-            "= 5",
-            "len = 5 6",
-            "len = true",
-            "len = -x",
-            "len = 'c'",
+    fn syntax_errors_say_what_is_expected() {
+        for (bad, message) in [
+            ("curve", "expected `=` after `curve`"),
+            ("curve =", "`curve` expects a number or a name"),
+            ("= 5", "expected a key, as in `len = 1000`"),
+            ("len = 5 6", "expected `,`"),
+            ("len = true", "`len` expects a number or a name"),
+            ("len = -x", "`len` expects a number or a name"),
+            ("len = 'c'", "`len` expects a number or a name"),
+            ("len = -\"x\"", "`len` expects a number or a name"),
         ] {
             let tokens: TokenStream = bad.parse().unwrap();
-            assert!(parse(tokens).is_err(), "{bad}");
+            let err = parse(tokens)
+                .err()
+                .unwrap_or_else(|| panic!("`{bad}` parsed"));
+            assert_eq!(err.to_string(), message, "{bad}");
         }
     }
 }

@@ -1,16 +1,18 @@
 //! Arguments to a table, through `profile-core` and its emitter.
 
-use proc_macro2::{Span, TokenStream};
+use proc_macro2::TokenStream;
 use profile_core::emit;
-use profile_core::params::{self, Diagnostic};
+use profile_core::params::{self, Diagnostic, Layout};
 
-fn to_error(diagnostics: Vec<Diagnostic<Span>>) -> syn::Error {
+use crate::args::Loc;
+
+fn to_error(diagnostics: Vec<Diagnostic<Loc>>) -> syn::Error {
     let mut errors = diagnostics
         .into_iter()
-        .map(|d| syn::Error::new(d.loc, d.message));
+        .map(|d| syn::Error::new_spanned(d.loc, d.message));
     let mut first = errors
         .next()
-        .unwrap_or_else(|| syn::Error::new(Span::call_site(), "invalid arguments"));
+        .unwrap_or_else(|| syn::Error::new(proc_macro2::Span::call_site(), "invalid arguments"));
     for e in errors {
         first.combine(e);
     }
@@ -18,24 +20,40 @@ fn to_error(diagnostics: Vec<Diagnostic<Span>>) -> syn::Error {
 }
 
 /// Expands `period_table!(...)`; errors become `compile_error!`s.
+///
+/// Several errors expand to several `compile_error!` statements, so they are
+/// wrapped in a block to stay one expression.
 pub(crate) fn period_table(input: TokenStream) -> TokenStream {
     match try_period_table(input) {
         Ok(tokens) => tokens,
-        Err(e) => e.to_compile_error(),
+        Err(e) => {
+            let errors = e.to_compile_error();
+            quote::quote!({ #errors })
+        }
     }
 }
 
 fn try_period_table(input: TokenStream) -> syn::Result<TokenStream> {
-    let whole = Span::call_site();
+    let whole = TokenStream::new();
     let args = crate::args::parse(input)?;
-    let spec = params::spec_from_args(&args, &whole).map_err(to_error)?;
-    let table = spec
-        .table()
-        .map_err(|e| to_error(vec![params::locate(&e, &args, &whole)]))?;
-    let source = emit::rust_array(spec.timer.word, &table.periods);
+    let parsed = params::spec_from_args(&args, &whole).map_err(to_error)?;
+    let spec = parsed.spec;
+    let locate = |e| to_error(vec![params::locate(&e, &args, &whole)]);
+    let source = match parsed.layout {
+        Layout::Steps => {
+            let table = spec.table().map_err(locate)?;
+            emit::rust_array(spec.timer.word, &table.periods)
+        }
+        Layout::Segments(n) => {
+            let mut pairs = Vec::with_capacity(n as usize);
+            spec.for_each_segment(n, |_, period, count| pairs.push((period, count)))
+                .map_err(locate)?;
+            emit::rust_pairs(spec.timer.word, &pairs)
+        }
+    };
     source.parse().map_err(|e| {
         syn::Error::new(
-            whole,
+            proc_macro2::Span::call_site(),
             format!("internal error: emitted source does not parse: {e}"),
         )
     })

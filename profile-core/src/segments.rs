@@ -1,0 +1,157 @@
+//! Seed 001's compact layout: the ramp cut into equal-time segments, each a
+//! (timer period, step count) pair.
+//!
+//! A segment table spends `2 n` words of flash instead of `len`, and pays in
+//! accuracy: every step of a segment has the same period, so pulse edges
+//! drift from the curve within a segment. [`SegmentFigures`] reports both.
+
+use crate::curves::TimeModel;
+use crate::error::Error;
+use crate::generate::{TableWord, edge_time};
+use crate::spec::{Discretization, Rounding, Spec};
+
+/// What a segment table amounts to.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SegmentFigures {
+    /// Number of segments.
+    pub segments: u32,
+    /// Steps in the ramp: the sum of the step counts.
+    pub steps: u32,
+    /// Flash of the segment table, in bytes.
+    pub flash_bytes: u32,
+    /// Flash of the per-step table of the same ramp, in bytes.
+    pub per_step_flash_bytes: u32,
+    /// Sum of `period * count` over the segments, in ticks.
+    pub total_ticks: u64,
+    /// Ramp duration as played, in s.
+    pub duration_s: f64,
+    /// Largest distance of a played pulse edge from the curve's exact edge, in ticks.
+    pub max_edge_error_ticks: f64,
+    /// Last played edge minus the exact end of the ramp, in ticks.
+    pub total_error_ticks: f64,
+}
+
+impl Spec {
+    /// Checks that the spec can be cut into `segments` equal-time segments
+    /// (a valid spec in time, `discretization = exact`, at least one segment).
+    pub fn check_segments(&self, segments: u32) -> Result<(), Error> {
+        self.validate()?;
+        if self.discretization != Discretization::Exact {
+            return Err(Error::SegmentsNeedTime {
+                discretization: self.discretization,
+            });
+        }
+        if segments == 0 {
+            return Err(Error::Zero {
+                key: crate::Key::Segments,
+            });
+        }
+        Ok(())
+    }
+
+    /// Computes the segment table into `out` (one `(period, count)` pair per
+    /// segment) and returns its figures.
+    ///
+    /// Segment `i` spans `[i T/n, (i+1) T/n]` of the ramp's duration `T`. Its
+    /// count is the difference of the rounded step counts at its ends, so the
+    /// counts sum to the ramp's steps exactly; its period is the segment's
+    /// duration over its count, rounded as `rounding` says (`diffuse` rounds
+    /// to nearest). A segment that holds no step is an error: use fewer.
+    pub fn generate_segments<W: TableWord>(
+        &self,
+        out: &mut [(W, W)],
+    ) -> Result<SegmentFigures, Error> {
+        if W::WORD != self.timer.word {
+            return Err(Error::WordMismatch {
+                expected: self.timer.word,
+                got: W::WORD,
+            });
+        }
+        let n = u32::try_from(out.len()).unwrap_or(u32::MAX);
+        self.for_each_segment(n, |i, period, count| {
+            if let Some(slot) = out.get_mut(i as usize) {
+                *slot = (W::from_ticks(period), W::from_ticks(count));
+            }
+        })
+    }
+
+    /// Computes `segments` segments, calling `sink(index, period, count)` for each.
+    pub fn for_each_segment<F: FnMut(u32, u32, u32)>(
+        &self,
+        segments: u32,
+        mut sink: F,
+    ) -> Result<SegmentFigures, Error> {
+        self.check_segments(segments)?;
+        let len = self.len();
+        let scale = self.timer.ticks_per_second();
+        let max = self.timer.word.max();
+        let model = TimeModel::new(&self.curve);
+        let c = model.curve();
+        let duration = edge_time(c, len)?;
+        let dt = duration / segments as f64;
+
+        let mut steps_before = 0u32;
+        let mut step = 0u32;
+        let mut played = 0u64;
+        let mut max_error = 0.0f64;
+        let mut last_error = 0.0;
+        for i in 0..segments {
+            let steps_after = if i + 1 == segments {
+                len
+            } else {
+                libm::round(c.steps((i + 1) as f64 * dt)).clamp(0.0, len as f64) as u32
+            };
+            let count = steps_after.saturating_sub(steps_before);
+            if count == 0 {
+                return Err(Error::EmptySegment {
+                    index: i,
+                    steps: len,
+                });
+            }
+            let exact = dt * scale / count as f64;
+            let period = match self.rounding {
+                Rounding::Truncate => libm::trunc(exact),
+                Rounding::Nearest | Rounding::Diffuse => libm::round(exact),
+            };
+            if period > max as f64 || count > max {
+                return Err(Error::PeriodOverflow {
+                    index: step,
+                    ticks: exact.max(count as f64),
+                    word: self.timer.word,
+                    timer_hz: self.timer.timer_hz,
+                    lowest_hz: self.timer.lowest_frequency(),
+                });
+            }
+            if period < 1.0 {
+                return Err(Error::PeriodZero {
+                    index: step,
+                    highest_hz: scale,
+                });
+            }
+            let period = period as u32;
+            for _ in 0..count {
+                played += period as u64;
+                step += 1;
+                let error = played as f64 - edge_time(c, step)? * scale;
+                max_error = max_error.max(libm::fabs(error));
+                last_error = error;
+            }
+            sink(i, period, count);
+            steps_before = steps_after;
+        }
+        let word_bytes = match self.timer.word {
+            crate::Word::U16 => 2,
+            crate::Word::U32 => 4,
+        };
+        Ok(SegmentFigures {
+            segments,
+            steps: len,
+            flash_bytes: 2 * word_bytes * segments,
+            per_step_flash_bytes: word_bytes * len,
+            total_ticks: played,
+            duration_s: played as f64 / scale,
+            max_edge_error_ticks: max_error,
+            total_error_ticks: last_error,
+        })
+    }
+}

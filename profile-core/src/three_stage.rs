@@ -1,0 +1,174 @@
+//! The exponential-linear-parabolic curve of Zeng, Hu and Hu (seed 002).
+
+use crate::solve::TimeCurve;
+use crate::spec::ThreeStage;
+
+/// The curve with its joints solved (DESIGN section 2):
+/// `C = f1 - f0 + a/B`, `t1 = ln(1 + B (f1 - f0)/a) / B`, `t2 = t1 + (f2 - f1)/a`,
+/// `b = a² / (4 (fc - f2))`, `tc = t2 + 2 (fc - f2)/a` (the paper's `a/4b`
+/// would break slope continuity; `a/2b` is right).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct ThreeStageInTime {
+    f0: f64,
+    f1: f64,
+    f2: f64,
+    fc: f64,
+    a: f64,
+    shape: f64,
+    c: f64,
+    b: f64,
+    pub(crate) t1: f64,
+    pub(crate) t2: f64,
+    pub(crate) tc: f64,
+    n1: f64,
+    n2: f64,
+    nc: f64,
+}
+
+impl ThreeStageInTime {
+    pub(crate) fn new(s: &ThreeStage) -> Self {
+        let (f0, f1, f2, fc, a, shape) = (s.fmin, s.f1, s.f2, s.fmax, s.accel, s.shape);
+        let c = f1 - f0 + a / shape;
+        let t1 = libm::log1p(shape * (f1 - f0) / a) / shape;
+        let t2 = t1 + (f2 - f1) / a;
+        let b = a * a / (4.0 * (fc - f2));
+        let tc = t2 + 2.0 * (fc - f2) / a;
+        let mut curve = ThreeStageInTime {
+            f0,
+            f1,
+            f2,
+            fc,
+            a,
+            shape,
+            c,
+            b,
+            t1,
+            t2,
+            tc,
+            n1: 0.0,
+            n2: 0.0,
+            nc: 0.0,
+        };
+        // Each stage's count starts where the previous one ends.
+        curve.n1 = (f0 + c) * t1 + c * libm::expm1(-shape * t1) / shape;
+        let d = t2 - t1;
+        curve.n2 = curve.n1 + f1 * d + a * d * d / 2.0;
+        let d = t2 - tc;
+        curve.nc = curve.n2 + fc * (tc - t2) + b / 3.0 * d * d * d;
+        curve
+    }
+
+    /// Steps until `fmax`.
+    pub(crate) fn ramp_steps(&self) -> f64 {
+        self.nc
+    }
+
+    /// Acceleration `df/dt` at `t`, in Hz/s.
+    #[cfg(test)]
+    pub(crate) fn accel(&self, t: f64) -> f64 {
+        if t < self.t1 {
+            self.shape * self.c * libm::exp(-self.shape * t)
+        } else if t < self.t2 {
+            self.a
+        } else if t < self.tc {
+            -2.0 * self.b * (t - self.tc)
+        } else {
+            0.0
+        }
+    }
+}
+
+impl TimeCurve for ThreeStageInTime {
+    fn freq(&self, t: f64) -> f64 {
+        if t < self.t1 {
+            self.f0 - self.c * libm::expm1(-self.shape * t)
+        } else if t < self.t2 {
+            self.f1 + self.a * (t - self.t1)
+        } else if t < self.tc {
+            let d = t - self.tc;
+            self.fc - self.b * d * d
+        } else {
+            self.fc
+        }
+    }
+
+    fn steps(&self, t: f64) -> f64 {
+        if t < self.t1 {
+            // (f0 + C) t + C (exp(-B t) - 1) / B
+            (self.f0 + self.c) * t + self.c * libm::expm1(-self.shape * t) / self.shape
+        } else if t < self.t2 {
+            let d = t - self.t1;
+            self.n1 + self.f1 * d + self.a * d * d / 2.0
+        } else if t < self.tc {
+            let d = t - self.tc;
+            let d2 = self.t2 - self.tc;
+            self.n2 + self.fc * (t - self.t2) - self.b / 3.0 * (d * d * d - d2 * d2 * d2)
+        } else {
+            self.nc + self.fc * (t - self.tc)
+        }
+    }
+
+    fn ramp_end(&self) -> (f64, f64) {
+        (self.tc, self.nc)
+    }
+
+    fn end_freq(&self) -> f64 {
+        self.fc
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn zeng(shape: f64) -> ThreeStageInTime {
+        ThreeStageInTime::new(&ThreeStage {
+            fmin: 100.0,
+            fmax: 1200.0,
+            accel: 4000.0,
+            f1: 400.0,
+            f2: 900.0,
+            shape,
+        })
+    }
+
+    /// Value and slope continuous at both joints; zero acceleration at `fc`.
+    #[test]
+    fn joints_are_smooth() {
+        for shape in [12.0, -5.0] {
+            let c = zeng(shape);
+            for t in [c.t1, c.t2] {
+                let h = 1e-9;
+                assert!((c.freq(t - h) - c.freq(t + h)).abs() < 1e-4, "f at {t}");
+                let slope_left = (c.freq(t - h) - c.freq(t - 2.0 * h)) / h;
+                let slope_right = (c.freq(t + 2.0 * h) - c.freq(t + h)) / h;
+                assert!(
+                    (slope_left - slope_right).abs() < 1.0,
+                    "{slope_left} {slope_right}"
+                );
+                assert!((c.accel(t - 1e-12) - c.accel(t + 1e-12)).abs() < 1e-3);
+            }
+            assert!((c.freq(c.t1) - 400.0).abs() < 1e-9);
+            assert!((c.freq(c.t2) - 900.0).abs() < 1e-9);
+            assert!(c.accel(c.tc - 1e-12).abs() < 1e-6);
+            assert!((c.freq(c.tc) - 1200.0).abs() < 1e-9);
+        }
+    }
+
+    /// The closed-form step count is the integral of the frequency.
+    #[test]
+    fn step_count_integrates_frequency() {
+        let c = zeng(12.0);
+        let n = 200_000;
+        let h = c.tc / n as f64;
+        let mut sum = 0.0;
+        for i in 0..n {
+            sum += c.freq((i as f64 + 0.5) * h) * h;
+        }
+        assert!(
+            (sum - c.steps(c.tc)).abs() < 1e-6,
+            "{sum} {}",
+            c.steps(c.tc)
+        );
+    }
+}
