@@ -1,4 +1,6 @@
-//! Stepper-motor acceleration tables computed at compile time.
+#![doc = include_str!("../README.md")]
 #![no_std]
+#![forbid(unsafe_code)]
+
 pub use profile_core::*;
-pub use profile_macros::period_table;
+pub use profile_macros::{include_profiles, period_table};

@@ -30,6 +30,8 @@
 #[cfg(feature = "std")]
 extern crate std;
 
+#[cfg(feature = "codegen")]
+pub mod build;
 mod curves;
 #[cfg(feature = "codegen")]
 pub mod emit;
@@ -57,5 +59,5 @@ pub use spec::{
     LinearExtent, MAX_LEN, Rounding, Sigmoid, Spec, ThreeStage, Timer, Word,
 };
 #[cfg(feature = "std")]
-pub use table::Table;
+pub use table::{SegmentTable, Table};
 pub use validate::MAX_FLEXIBLE;

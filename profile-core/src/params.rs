@@ -542,6 +542,62 @@ pub fn spec_from_args<L: Clone>(args: &[Arg<L>], whole: &L) -> Result<Parsed, Ve
     Ok(Parsed { spec, layout })
 }
 
+/// The spec's parameters as `(key, value)` pairs, in documentation order, as
+/// a user would write them (defaults included): for docs, headers, reports.
+pub fn describe(spec: &Spec) -> Vec<(Key, String)> {
+    let mut out = std::vec![(Key::Curve, spec.curve.name().to_string())];
+    let num = |v: f64| format!("{v}");
+    match spec.curve {
+        Curve::Sigmoid(c) => out.extend([
+            (Key::Len, c.len.to_string()),
+            (Key::Fmin, num(c.fmin)),
+            (Key::Fmax, num(c.fmax)),
+            (Key::Flexible, num(c.flexible)),
+        ]),
+        Curve::Exponential(c) => {
+            out.extend([
+                (Key::Fmin, num(c.fmin)),
+                (Key::Fmax, num(c.fmax)),
+                (Key::FInf, num(c.f_inf)),
+            ]);
+            out.push(match c.extent {
+                ExponentialExtent::Len(n) => (Key::Len, n.to_string()),
+                ExponentialExtent::Tau(t) => (Key::Tau, num(t)),
+            });
+        }
+        Curve::Linear(c) => {
+            out.extend([(Key::Fmin, num(c.fmin)), (Key::Fmax, num(c.fmax))]);
+            out.push(match c.extent {
+                LinearExtent::Len(n) => (Key::Len, n.to_string()),
+                LinearExtent::Accel(a) => (Key::Accel, num(a)),
+            });
+        }
+        Curve::ThreeStage(c) => out.extend([
+            (Key::Fmin, num(c.fmin)),
+            (Key::Fmax, num(c.fmax)),
+            (Key::Accel, num(c.accel)),
+            (Key::F1, num(c.f1)),
+            (Key::F2, num(c.f2)),
+            (Key::Shape, num(c.shape)),
+        ]),
+        Curve::JerkLimited(c) => out.extend([
+            (Key::Fmin, num(c.fmin)),
+            (Key::Fmax, num(c.fmax)),
+            (Key::Accel, num(c.accel)),
+            (Key::Jerk, num(c.jerk)),
+        ]),
+    }
+    out.extend([
+        (Key::TimerHz, spec.timer.timer_hz.to_string()),
+        (Key::Word, spec.timer.word.name().to_string()),
+        (Key::TicksPerStep, spec.timer.ticks_per_step.to_string()),
+        (Key::Discretization, spec.discretization.name().to_string()),
+        (Key::Rounding, spec.rounding.name().to_string()),
+        (Key::Arithmetic, spec.arithmetic.name().to_string()),
+    ]);
+    out
+}
+
 /// Places a core error at the value of the key it blames (or on `whole`).
 pub fn locate<L: Clone>(error: &Error, args: &[Arg<L>], whole: &L) -> Diagnostic<L> {
     let loc = error

@@ -6,6 +6,7 @@
 
 mod args;
 mod expand;
+mod include;
 
 /// Computes a period table at compile time and expands to an array expression.
 ///
@@ -49,4 +50,27 @@ mod expand;
 #[proc_macro]
 pub fn period_table(input: proc_macro::TokenStream) -> proc_macro::TokenStream {
     expand::period_table(input.into()).into()
+}
+
+/// Declares one module per profile of a TOML file, at compile time.
+///
+/// The path is relative to the crate's `Cargo.toml` (`CARGO_MANIFEST_DIR`).
+/// Each `[profiles.NAME]` becomes `pub mod NAME` with `PERIODS` (or
+/// `SEGMENTS`), `LEN`, `TIMER_HZ`, `TICKS_PER_STEP`, `TOTAL_TICKS` and the
+/// other figures as constants, documented with the profile's parameters.
+/// Cargo rebuilds the crate when the file changes.
+///
+/// ```ignore
+/// stepper_profiles::include_profiles!("profiles.toml");
+///
+/// fn first_period() -> u16 {
+///     orange::PERIODS[0]
+/// }
+/// ```
+///
+/// A mistake in the file is a compile error on the path, reading
+/// `profiles.toml:LINE:COL: message` with the line and a caret.
+#[proc_macro]
+pub fn include_profiles(input: proc_macro::TokenStream) -> proc_macro::TokenStream {
+    include::include_profiles(input.into()).into()
 }

@@ -1,0 +1,406 @@
+//! `profiles.toml`: profiles declared in a file, for build scripts and the
+//! `include_profiles!` macro.
+//!
+//! ```toml
+//! [defaults]            # optional: any key, applied where a profile omits it
+//! timer_hz = 10_000_000
+//!
+//! [profiles.orange]     # one table per profile; the name becomes a module
+//! curve = "sigmoid"
+//! len = 1000
+//! fmin = 500
+//! fmax = 64000
+//! flexible = 8
+//! ```
+//!
+//! A profile takes exactly the keys of `period_table!`; names (`curve`,
+//! `rounding`, ...) are strings. A default that does not apply to a
+//! profile's curve (`flexible` for a linear ramp) is ignored for it.
+//!
+//! In a build script:
+//!
+//! ```no_run
+//! # fn main() -> Result<(), Box<dyn std::error::Error>> {
+//! let out_dir = std::env::var("OUT_DIR")?;
+//! profile_core::build::Profiles::load("profiles.toml")?.write_rust(&out_dir)?;
+//! # Ok(()) }
+//! ```
+//!
+//! and in the crate: `include!(concat!(env!("OUT_DIR"), "/profiles.rs"));`.
+//! Every mistake in the file is reported as `profiles.toml:LINE:COL: message`
+//! with the line and a caret under the offending text.
+
+use std::collections::BTreeMap;
+use std::fmt;
+use std::ops::Range;
+use std::path::{Path, PathBuf};
+use std::string::{String, ToString};
+use std::vec::Vec;
+use std::{format, println};
+
+use serde::Deserialize;
+use toml::Spanned;
+
+use crate::emit::{self, Generated, Profile};
+use crate::error::Key;
+use crate::params::{self, Arg, Diagnostic, Layout, Value};
+
+type Table = BTreeMap<Spanned<String>, Spanned<toml::Value>>;
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct File {
+    defaults: Option<Table>,
+    profiles: Option<Spanned<BTreeMap<Spanned<String>, Spanned<Table>>>>,
+}
+
+/// Problems with a profiles file, each at its `file:line:col`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct LoadError {
+    text: String,
+}
+
+impl LoadError {
+    /// Every problem, rendered with its location, source line and caret.
+    pub fn message(&self) -> &str {
+        &self.text
+    }
+}
+
+impl fmt::Display for LoadError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.text)
+    }
+}
+
+impl std::error::Error for LoadError {}
+
+/// 1-based line and column (in characters) of byte `offset`.
+fn line_col(source: &str, offset: usize) -> (usize, usize) {
+    let offset = offset.min(source.len());
+    let before = source.get(..offset).unwrap_or(source);
+    let line = before.matches('\n').count() + 1;
+    let line_start = before.rfind('\n').map_or(0, |i| i + 1);
+    let col = source
+        .get(line_start..offset)
+        .map_or(0, |s| s.chars().count())
+        + 1;
+    (line, col)
+}
+
+/// Renders diagnostics as `file:line:col: message`, the line, and a caret.
+fn render(file: &str, source: &str, diagnostics: &[Diagnostic<Range<usize>>]) -> LoadError {
+    let mut text = String::new();
+    for (i, d) in diagnostics.iter().enumerate() {
+        if i > 0 {
+            text.push('\n');
+        }
+        let (line, col) = line_col(source, d.loc.start);
+        text.push_str(&format!("{file}:{line}:{col}: {}\n", d.message));
+        if let Some(src_line) = source.lines().nth(line - 1) {
+            let number = line.to_string();
+            let pad = " ".repeat(number.len());
+            let width = source
+                .get(d.loc.clone())
+                .map_or(1, |s| s.lines().next().unwrap_or("").chars().count().max(1));
+            let width = width.min(src_line.chars().count().saturating_sub(col - 1).max(1));
+            text.push_str(&format!(
+                "{pad} |\n{number} | {src_line}\n{pad} | {}{}\n",
+                " ".repeat(col - 1),
+                "^".repeat(width)
+            ));
+        }
+    }
+    LoadError { text }
+}
+
+const KEYWORDS: &[&str] = &[
+    "as", "async", "await", "break", "const", "continue", "crate", "dyn", "else", "enum", "extern",
+    "false", "fn", "for", "gen", "if", "impl", "in", "let", "loop", "match", "mod", "move", "mut",
+    "pub", "ref", "return", "self", "static", "struct", "super", "trait", "true", "try", "type",
+    "unsafe", "use", "where", "while", "abstract", "become", "box", "do", "final", "macro",
+    "override", "priv", "typeof", "unsized", "virtual", "yield",
+];
+
+/// Why `name` cannot be a module name, if it cannot.
+fn bad_name(name: &str) -> Option<String> {
+    let valid = name
+        .chars()
+        .next()
+        .is_some_and(|c| c.is_ascii_lowercase() || c == '_')
+        && name
+            .chars()
+            .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_')
+        && name != "_";
+    if !valid {
+        Some(format!(
+            "profile name `{name}` must be a snake_case Rust identifier \
+             (lowercase letters, digits and `_`, not starting with a digit): it names a module"
+        ))
+    } else if KEYWORDS.contains(&name) {
+        Some(format!(
+            "profile name `{name}` is a Rust keyword and cannot name a module"
+        ))
+    } else {
+        None
+    }
+}
+
+fn value(key: &str, v: &Spanned<toml::Value>) -> Result<Value, Diagnostic<Range<usize>>> {
+    let kind = match v.get_ref() {
+        toml::Value::Integer(i) => return Ok(Value::Int(*i as i128)),
+        toml::Value::Float(f) => return Ok(Value::Float(*f)),
+        toml::Value::String(s) => return Ok(Value::Name(s.clone())),
+        toml::Value::Boolean(_) => "a boolean",
+        toml::Value::Datetime(_) => "a date",
+        toml::Value::Array(_) => "an array",
+        toml::Value::Table(_) => "a table",
+    };
+    Err(Diagnostic {
+        loc: v.span(),
+        message: format!("`{key}` expects a number or a string, got {kind}"),
+    })
+}
+
+fn sorted(table: &Table) -> Vec<(&Spanned<String>, &Spanned<toml::Value>)> {
+    let mut entries: Vec<_> = table.iter().collect();
+    entries.sort_by_key(|(k, _)| k.span().start);
+    entries
+}
+
+/// The profiles of one file, checked and computed.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Profiles {
+    file: String,
+    path: Option<PathBuf>,
+    profiles: Vec<Profile>,
+}
+
+impl Profiles {
+    /// Reads, checks and computes every profile of the file at `path`.
+    pub fn load(path: impl AsRef<Path>) -> Result<Self, LoadError> {
+        let path = path.as_ref();
+        let source = std::fs::read_to_string(path).map_err(|e| LoadError {
+            text: format!("cannot read `{}`: {e}", path.display()),
+        })?;
+        let mut profiles = Self::parse(&path.display().to_string(), &source)?;
+        profiles.path = Some(path.to_path_buf());
+        Ok(profiles)
+    }
+
+    /// Checks and computes the profiles in `source`; `file` names it in messages.
+    pub fn parse(file: &str, source: &str) -> Result<Self, LoadError> {
+        let parsed: File = toml::from_str(source).map_err(|e| {
+            let loc = e.span().unwrap_or(0..0);
+            render(
+                file,
+                source,
+                &[Diagnostic {
+                    loc,
+                    message: e.message().to_string(),
+                }],
+            )
+        })?;
+        let mut diagnostics = Vec::new();
+
+        let mut defaults = Vec::new();
+        for (key, v) in parsed.defaults.as_ref().map(sorted).unwrap_or_default() {
+            if Key::from_name(key.get_ref()).is_none() {
+                let names = Key::ALL.iter().map(|k| k.name());
+                let hint = params::suggest(key.get_ref(), names.clone())
+                    .map(|s| format!("did you mean `{s}`? "))
+                    .unwrap_or_default();
+                let list: Vec<String> = names.map(|n| format!("`{n}`")).collect();
+                diagnostics.push(Diagnostic {
+                    loc: key.span(),
+                    message: format!(
+                        "unknown key `{}` in `[defaults]`; {hint}expected one of {}",
+                        key.get_ref(),
+                        list.join(", ")
+                    ),
+                });
+                continue;
+            }
+            match value(key.get_ref(), v) {
+                Ok(value) => defaults.push(Arg {
+                    key: key.get_ref().clone(),
+                    key_loc: key.span(),
+                    value,
+                    value_loc: v.span(),
+                }),
+                Err(d) => diagnostics.push(d),
+            }
+        }
+
+        let Some(profiles_table) = parsed.profiles else {
+            diagnostics.push(Diagnostic {
+                loc: 0..0,
+                message: "no profiles: declare at least one `[profiles.NAME]` table".to_string(),
+            });
+            return Err(render(file, source, &diagnostics));
+        };
+        let mut names: Vec<_> = profiles_table.get_ref().iter().collect();
+        names.sort_by_key(|(k, _)| k.span().start);
+        if names.is_empty() {
+            diagnostics.push(Diagnostic {
+                loc: profiles_table.span(),
+                message: "no profiles: declare at least one `[profiles.NAME]` table".to_string(),
+            });
+        }
+
+        let mut profiles = Vec::new();
+        for (name, table) in names {
+            if let Some(message) = bad_name(name.get_ref()) {
+                diagnostics.push(Diagnostic {
+                    loc: name.span(),
+                    message,
+                });
+                continue;
+            }
+            let mut args = Vec::new();
+            for (key, v) in sorted(table.get_ref()) {
+                match value(key.get_ref(), v) {
+                    Ok(value) => args.push(Arg {
+                        key: key.get_ref().clone(),
+                        key_loc: key.span(),
+                        value,
+                        value_loc: v.span(),
+                    }),
+                    Err(d) => diagnostics.push(d),
+                }
+            }
+            // Defaults fill what the profile omits, where its curve takes them.
+            let curve = args
+                .iter()
+                .chain(&defaults)
+                .find(|a| a.key == "curve")
+                .and_then(|a| match &a.value {
+                    Value::Name(n) if params::CURVES.contains(&n.as_str()) => Some(n.clone()),
+                    _ => None,
+                });
+            for d in &defaults {
+                let applies = match &curve {
+                    Some(c) => params::keys_for(c).iter().any(|k| k.name() == d.key),
+                    None => true,
+                };
+                if applies && !args.iter().any(|a| a.key == d.key) {
+                    args.push(d.clone());
+                }
+            }
+            let whole = name.span();
+            let parsed = match params::spec_from_args(&args, &whole) {
+                Ok(p) => p,
+                Err(mut d) => {
+                    diagnostics.append(&mut d);
+                    continue;
+                }
+            };
+            let spec = parsed.spec;
+            let table = match parsed.layout {
+                Layout::Steps => spec.table().map(Generated::Steps),
+                Layout::Segments(n) => spec.segment_table(n).map(Generated::Segments),
+            };
+            match table {
+                Ok(table) => profiles.push(Profile {
+                    name: name.get_ref().clone(),
+                    table,
+                }),
+                Err(e) => diagnostics.push(params::locate(&e, &args, &whole)),
+            }
+        }
+        if !diagnostics.is_empty() {
+            return Err(render(file, source, &diagnostics));
+        }
+        Ok(Profiles {
+            file: file.to_string(),
+            path: None,
+            profiles,
+        })
+    }
+
+    /// The profiles, in file order.
+    pub fn profiles(&self) -> &[Profile] {
+        &self.profiles
+    }
+
+    /// The file's name as used in messages.
+    pub fn file(&self) -> &str {
+        &self.file
+    }
+
+    /// Rust source with one module per profile (what `include_profiles!` expands to).
+    pub fn rust_source(&self) -> String {
+        emit::rust_modules(&self.profiles)
+    }
+
+    /// A C99 header with every profile's table and figures.
+    pub fn c_header(&self) -> String {
+        let stem = Path::new(&self.file)
+            .file_stem()
+            .map_or("profiles".into(), |s| s.to_string_lossy().into_owned());
+        let guard: String = stem
+            .chars()
+            .map(|c| {
+                if c.is_ascii_alphanumeric() {
+                    c.to_ascii_uppercase()
+                } else {
+                    '_'
+                }
+            })
+            .collect();
+        let source = Path::new(&self.file)
+            .file_name()
+            .map_or(self.file.clone(), |s| s.to_string_lossy().into_owned());
+        emit::c_header(
+            &format!("STEPPER_PROFILES_{guard}_H"),
+            &source,
+            &self.profiles,
+        )
+    }
+
+    /// Writes `profiles.rs` into `out_dir` (to `include!`) and, for a file
+    /// read with [`Profiles::load`], prints `cargo::rerun-if-changed` for it.
+    pub fn write_rust(&self, out_dir: impl AsRef<Path>) -> Result<PathBuf, LoadError> {
+        let target = out_dir.as_ref().join("profiles.rs");
+        write(&target, &self.rust_source())?;
+        if let Some(path) = &self.path {
+            println!("cargo::rerun-if-changed={}", path.display());
+        }
+        Ok(target)
+    }
+
+    /// Writes the C header to `path`.
+    pub fn write_c_header(&self, path: impl AsRef<Path>) -> Result<(), LoadError> {
+        write(path.as_ref(), &self.c_header())
+    }
+}
+
+fn write(path: &Path, contents: &str) -> Result<(), LoadError> {
+    std::fs::write(path, contents).map_err(|e| LoadError {
+        text: format!("cannot write `{}`: {e}", path.display()),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn line_and_column_count_characters() {
+        let src = "a = 1\nbé = 2\n";
+        assert_eq!(line_col(src, 0), (1, 1));
+        assert_eq!(line_col(src, 6), (2, 1));
+        assert_eq!(line_col(src, src.find('=').unwrap()), (1, 3));
+        assert_eq!(line_col(src, src.rfind('2').unwrap()), (2, 6));
+    }
+
+    #[test]
+    fn names_must_be_module_names() {
+        assert!(bad_name("orange").is_none());
+        assert!(bad_name("seed_004_exact").is_none());
+        assert!(bad_name("Orange").is_some());
+        assert!(bad_name("4th").is_some());
+        assert!(bad_name("my profile").is_some());
+        assert!(bad_name("type").is_some());
+    }
+}

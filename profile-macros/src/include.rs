@@ -1,0 +1,50 @@
+//! `include_profiles!("profiles.toml")`: one module per profile of a file.
+
+use std::path::Path;
+
+use proc_macro2::{Literal, TokenStream};
+use profile_core::build::Profiles;
+use syn::LitStr;
+
+/// Expands `include_profiles!(path)`; errors become a `compile_error!` on the path.
+pub(crate) fn include_profiles(input: TokenStream) -> TokenStream {
+    match try_include(input) {
+        Ok(tokens) => tokens,
+        Err(e) => e.to_compile_error(),
+    }
+}
+
+fn try_include(input: TokenStream) -> syn::Result<TokenStream> {
+    let lit: LitStr = syn::parse2(input).map_err(|e| {
+        syn::Error::new(
+            e.span(),
+            "expected the path of a profiles file, relative to the crate's Cargo.toml: \
+             `include_profiles!(\"profiles.toml\")`",
+        )
+    })?;
+    let dir = std::env::var("CARGO_MANIFEST_DIR").map_err(|_| {
+        syn::Error::new(
+            lit.span(),
+            "`CARGO_MANIFEST_DIR` is not set: build with Cargo to resolve the path",
+        )
+    })?;
+    let relative = lit.value();
+    let path = Path::new(&dir).join(&relative);
+    let source = std::fs::read_to_string(&path).map_err(|e| {
+        syn::Error::new(lit.span(), format!("cannot read `{}`: {e}", path.display()))
+    })?;
+    let profiles = Profiles::parse(&relative, &source)
+        .map_err(|e| syn::Error::new(lit.span(), e.message()))?;
+    let items: TokenStream = profiles.rust_source().parse().map_err(|e| {
+        syn::Error::new(
+            lit.span(),
+            format!("internal error: emitted source does not parse: {e}"),
+        )
+    })?;
+    // Make Cargo rebuild when the file changes.
+    let tracked = Literal::string(&path.to_string_lossy());
+    Ok(quote::quote! {
+        #items
+        const _: &[u8] = include_bytes!(#tracked);
+    })
+}
