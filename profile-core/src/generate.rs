@@ -18,6 +18,8 @@ pub trait TableWord: Copy + sealed::Sealed {
     const WORD: Word;
     /// Converts a period already checked to fit.
     fn from_ticks(ticks: u32) -> Self;
+    /// The value as `u32`.
+    fn into_ticks(self) -> u32;
 }
 
 impl TableWord for u16 {
@@ -25,12 +27,18 @@ impl TableWord for u16 {
     fn from_ticks(ticks: u32) -> Self {
         ticks as u16
     }
+    fn into_ticks(self) -> u32 {
+        self as u32
+    }
 }
 
 impl TableWord for u32 {
     const WORD: Word = Word::U32;
     fn from_ticks(ticks: u32) -> Self {
         ticks
+    }
+    fn into_ticks(self) -> u32 {
+        self
     }
 }
 

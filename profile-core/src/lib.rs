@@ -42,6 +42,7 @@ mod jerk;
 mod linear;
 #[cfg(feature = "codegen")]
 pub mod params;
+pub mod player;
 mod segments;
 mod sigmoid;
 mod solve;

@@ -26,14 +26,20 @@ impl Sigmoid {
     }
 
     /// Frequency at step index `i` computed as seed 000's `CalculateSModelLine`
-    /// does in C: single precision, `expf`, and a double-precision `1.0 / ...`.
+    /// does in C: single precision, a correctly rounded `expf`, and a
+    /// double-precision `1.0 / ...`.
     pub fn freq_at_index_f32(&self, i: u32) -> f32 {
         let len = self.len as f32;
         let flexible = self.flexible as f32;
         let fmin = self.fmin as f32;
         let delt = self.fmax as f32 - fmin;
         let melo = flexible * (i as f32 - len / 2.0) / (len / 2.0);
-        let deno = (1.0f64 / (1.0f32 + libm::expf(-melo)) as f64) as f32;
+        // C's `expf` is (nearly always) correctly rounded; `libm::expf` is off
+        // by one ulp for about 1% of inputs, which can flip a truncated
+        // period. `exp` in double precision rounded to float is correctly
+        // rounded but for rare double roundings, and identical on every target.
+        let e = libm::exp(-melo as f64) as f32;
+        let deno = (1.0f64 / (1.0f32 + e) as f64) as f32;
         delt * deno + fmin
     }
 

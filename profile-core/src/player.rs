@@ -1,0 +1,348 @@
+//! Playing tables in firmware: a move of `S` steps from an acceleration
+//! table and a deceleration table, one call per step.
+//!
+//! The period of each step is the slower of two candidates:
+//!
+//! - the acceleration side: a cursor on the acceleration ramp that walks one
+//!   step per step towards the cruise position (up at the start, up or down
+//!   after [`Player::set_cruise`]);
+//! - the deceleration side: the deceleration ramp read backwards, indexed by
+//!   the steps that remain, so the last step of the move is always the
+//!   deceleration ramp's slowest entry.
+//!
+//! Taking the slower of the two gives the full trapezoid for long moves and
+//! the triangle for short ones, with the switch point exactly where the two
+//! ramps cross, for symmetric and asymmetric tables alike; the move ends at
+//! exactly `S` steps, at rest. Consecutive periods never differ by more than
+//! consecutive entries of the tables do.
+//!
+//! [`Player::next_period`] is O(1), with no division, no floating point and no
+//! panic on any input. [`Player::stop`] searches the deceleration ramp once
+//! (O(log n) for a per-step table, O(segments) for a segment table).
+//!
+//! ```
+//! use profile_core::player::{Player, Ramp};
+//!
+//! static ACCEL: [u16; 4] = [4000, 2500, 2000, 1800];
+//! let mut player = Player::new(Ramp::steps(&ACCEL));
+//! player.start(10);
+//! let mut periods = [0u16; 10];
+//! for p in periods.iter_mut() {
+//!     *p = player.next_period().unwrap();
+//! }
+//! assert_eq!(player.next_period(), None);
+//! assert_eq!(periods, [4000, 2500, 2000, 1800, 1800, 1800, 1800, 2000, 2500, 4000]);
+//! ```
+
+use crate::generate::TableWord;
+
+/// A ramp to play: a table ordered from slow (rest) to fast.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Ramp<'a, W> {
+    /// One period per table entry, each held for `hold` steps (seed 000's
+    /// `CountForAcc` divider; 1 plays every entry once).
+    Steps {
+        /// Periods in ticks, slowest first.
+        periods: &'a [W],
+        /// Steps per entry; 0 is taken as 1.
+        hold: u32,
+    },
+    /// Seed 001's layout: `(period, steps)` per segment, slowest first.
+    Segments(&'a [(W, W)]),
+}
+
+impl<'a, W: TableWord> Ramp<'a, W> {
+    /// A per-step table, each entry played once.
+    pub const fn steps(periods: &'a [W]) -> Self {
+        Ramp::Steps { periods, hold: 1 }
+    }
+
+    /// A per-step table, each entry held for `hold` steps.
+    pub const fn held(periods: &'a [W], hold: u32) -> Self {
+        Ramp::Steps { periods, hold }
+    }
+
+    /// A segment table.
+    pub const fn segments(pairs: &'a [(W, W)]) -> Self {
+        Ramp::Segments(pairs)
+    }
+
+    fn hold(&self) -> u32 {
+        match *self {
+            Ramp::Steps { hold, .. } => hold.max(1),
+            Ramp::Segments(_) => 1,
+        }
+    }
+
+    /// Steps the ramp takes from rest to its top speed.
+    pub fn len_steps(&self) -> u32 {
+        match *self {
+            Ramp::Steps { periods, hold } => {
+                (periods.len() as u64 * hold.max(1) as u64).min(u32::MAX as u64) as u32
+            }
+            Ramp::Segments(pairs) => pairs
+                .iter()
+                .fold(0u32, |n, &(_, c)| n.saturating_add(c.into_ticks())),
+        }
+    }
+
+    /// Period of the step at `pos` along the ramp (0 = slowest).
+    pub fn period_at(&self, pos: u32) -> Option<W> {
+        let c = Cursor::at(self, pos)?;
+        Some(c.period(self))
+    }
+}
+
+/// A position along a ramp, kept as (entry, step within entry) so that
+/// moving by one step needs no division.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct Cursor {
+    pos: u32,
+    entry: u32,
+    within: u32,
+}
+
+impl Cursor {
+    /// The cursor at step `pos`, or `None` past the end or on an empty ramp.
+    fn at<W: TableWord>(ramp: &Ramp<'_, W>, pos: u32) -> Option<Cursor> {
+        match *ramp {
+            Ramp::Steps { periods, hold } => {
+                let hold = hold.max(1);
+                let entry = pos / hold;
+                ((entry as usize) < periods.len()).then_some(Cursor {
+                    pos,
+                    entry,
+                    within: pos % hold,
+                })
+            }
+            Ramp::Segments(pairs) => {
+                let mut start = 0u32;
+                for (i, &(_, count)) in pairs.iter().enumerate() {
+                    let count = count.into_ticks();
+                    if pos - start < count {
+                        return Some(Cursor {
+                            pos,
+                            entry: i as u32,
+                            within: pos - start,
+                        });
+                    }
+                    start = start.saturating_add(count);
+                    if start > pos {
+                        return None;
+                    }
+                }
+                None
+            }
+        }
+    }
+
+    fn entry_len<W: TableWord>(ramp: &Ramp<'_, W>, entry: u32) -> u32 {
+        match *ramp {
+            Ramp::Steps { .. } => ramp.hold(),
+            Ramp::Segments(pairs) => pairs.get(entry as usize).map_or(0, |p| p.1.into_ticks()),
+        }
+    }
+
+    fn period<W: TableWord>(&self, ramp: &Ramp<'_, W>) -> W {
+        let found = match *ramp {
+            Ramp::Steps { periods, .. } => periods.get(self.entry as usize).copied(),
+            Ramp::Segments(pairs) => pairs.get(self.entry as usize).map(|p| p.0),
+        };
+        found.unwrap_or(W::from_ticks(0))
+    }
+
+    /// One step towards the fast end; stays put at the last step.
+    fn forward<W: TableWord>(&mut self, ramp: &Ramp<'_, W>, last: u32) {
+        if self.pos >= last {
+            return;
+        }
+        self.pos += 1;
+        self.within += 1;
+        while self.within >= Self::entry_len(ramp, self.entry) {
+            self.within = 0;
+            self.entry += 1;
+            if self.entry as usize >= ramp_entries(ramp) {
+                break;
+            }
+        }
+    }
+
+    /// One step towards the slow end; stays put at step 0.
+    fn backward<W: TableWord>(&mut self, ramp: &Ramp<'_, W>) {
+        if self.pos == 0 {
+            return;
+        }
+        self.pos -= 1;
+        if self.within > 0 {
+            self.within -= 1;
+            return;
+        }
+        // Previous non-empty entry.
+        while self.entry > 0 {
+            self.entry -= 1;
+            let len = Self::entry_len(ramp, self.entry);
+            if len > 0 {
+                self.within = len - 1;
+                return;
+            }
+        }
+    }
+}
+
+fn ramp_entries<W: TableWord>(ramp: &Ramp<'_, W>) -> usize {
+    match *ramp {
+        Ramp::Steps { periods, .. } => periods.len(),
+        Ramp::Segments(pairs) => pairs.len(),
+    }
+}
+
+/// The first cursor of a ramp whose first entries may be empty segments.
+fn first<W: TableWord>(ramp: &Ramp<'_, W>) -> Option<Cursor> {
+    Cursor::at(ramp, 0)
+}
+
+/// Plays moves from an acceleration ramp and a deceleration ramp.
+#[derive(Clone, Debug)]
+pub struct Player<'a, W> {
+    accel: Ramp<'a, W>,
+    decel: Ramp<'a, W>,
+    accel_last: u32,
+    decel_last: u32,
+    /// Where the acceleration side is, and where it is heading.
+    acc: Option<Cursor>,
+    cruise: u32,
+    /// The deceleration side, at `min(remaining - 1, decel_last)`.
+    dec: Option<Cursor>,
+    remaining: u32,
+    last_period: u32,
+}
+
+impl<'a, W: TableWord> Player<'a, W> {
+    /// A player that decelerates along the acceleration ramp read backwards.
+    pub fn new(accel: Ramp<'a, W>) -> Self {
+        Self::with_decel(accel, accel)
+    }
+
+    /// A player with its own deceleration ramp (also ordered slow to fast),
+    /// for asymmetric moves.
+    pub fn with_decel(accel: Ramp<'a, W>, decel: Ramp<'a, W>) -> Self {
+        let accel_last = accel.len_steps().saturating_sub(1);
+        let decel_last = decel.len_steps().saturating_sub(1);
+        Player {
+            accel,
+            decel,
+            accel_last,
+            decel_last,
+            acc: None,
+            cruise: accel_last,
+            dec: None,
+            remaining: 0,
+            last_period: 0,
+        }
+    }
+
+    /// Starts a move of `steps` steps from rest, cruising at the top of the
+    /// acceleration ramp. A move on an empty ramp has no steps.
+    pub fn start(&mut self, steps: u32) {
+        self.acc = first(&self.accel);
+        self.cruise = self.accel_last;
+        let ok = self.acc.is_some() && self.decel.len_steps() > 0;
+        self.remaining = if ok { steps } else { 0 };
+        self.dec = match self.remaining {
+            0 => None,
+            r => Cursor::at(&self.decel, (r - 1).min(self.decel_last)),
+        };
+        self.last_period = 0;
+    }
+
+    /// Cruises at step `pos` of the acceleration ramp (the entry index for a
+    /// table without divider) instead of its top; takes effect by walking the
+    /// ramp up or down one step per step. Clamped to the ramp.
+    pub fn set_cruise(&mut self, pos: u32) {
+        self.cruise = pos.min(self.accel_last);
+    }
+
+    /// Decelerates from the current speed to rest: the deceleration ramp is
+    /// entered at its entry nearest the current period that is not faster,
+    /// and the move ends when the ramp's slowest entry has played. A stop
+    /// never lengthens a move.
+    pub fn stop(&mut self) {
+        if self.remaining == 0 {
+            return;
+        }
+        if self.last_period == 0 {
+            // Not moving yet: nothing to stop.
+            self.remaining = 0;
+            return;
+        }
+        // Largest position whose period is not faster than the current one:
+        // periods fall along the ramp, so search for the boundary.
+        let current = self.last_period;
+        let (mut lo, mut hi) = (0u32, self.decel_last);
+        if self.period_dec(hi) >= current {
+            lo = hi;
+        } else {
+            while hi - lo > 1 {
+                let mid = lo + (hi - lo) / 2;
+                if self.period_dec(mid) >= current {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+        }
+        let needed = lo + 1;
+        if needed < self.remaining {
+            self.remaining = needed;
+            self.dec = Cursor::at(&self.decel, lo);
+        }
+    }
+
+    fn period_dec(&self, pos: u32) -> u32 {
+        self.decel.period_at(pos).map_or(0, |w| w.into_ticks())
+    }
+
+    /// Steps left in the move.
+    pub fn remaining(&self) -> u32 {
+        self.remaining
+    }
+
+    /// `true` when the move has played all its steps.
+    pub fn is_done(&self) -> bool {
+        self.remaining == 0
+    }
+
+    /// The period of the next step, in ticks, or `None` when the move is done.
+    pub fn next_period(&mut self) -> Option<W> {
+        if self.remaining == 0 {
+            return None;
+        }
+        let (acc, dec) = match (self.acc.as_mut(), self.dec.as_mut()) {
+            (Some(a), Some(d)) => (a, d),
+            _ => {
+                self.remaining = 0;
+                return None;
+            }
+        };
+        let pa = acc.period(&self.accel);
+        let pd = dec.period(&self.decel);
+        let period = if pa.into_ticks() >= pd.into_ticks() {
+            pa
+        } else {
+            pd
+        };
+        self.remaining -= 1;
+        // Acceleration side: one step towards the cruise position.
+        if acc.pos < self.cruise {
+            acc.forward(&self.accel, self.accel_last);
+        } else if acc.pos > self.cruise {
+            acc.backward(&self.accel);
+        }
+        // Deceleration side: follows the steps that remain.
+        if self.remaining > 0 && self.remaining - 1 < dec.pos {
+            dec.backward(&self.decel);
+        }
+        self.last_period = period.into_ticks();
+        Some(period)
+    }
+}
