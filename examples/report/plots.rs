@@ -1,0 +1,193 @@
+//! SVG plots of tables: frequency against time and step, acceleration against time.
+
+use std::path::Path;
+
+use plotters::prelude::*;
+
+/// One table as plotted: `(time of the step's start in s, frequency in Hz)`
+/// per step, and the accelerations between consecutive steps.
+pub struct Series {
+    pub label: String,
+    pub color: RGBColor,
+    /// Per step: start time (s), step frequency (Hz).
+    pub steps: Vec<(f64, f64)>,
+    /// Per edge between steps: time (s), acceleration (Hz/s).
+    pub accel: Vec<(f64, f64)>,
+}
+
+impl Series {
+    /// From periods in ticks on a timer of `ticks_per_second` (per step).
+    pub fn from_periods(
+        label: &str,
+        color: RGBColor,
+        periods: &[u32],
+        ticks_per_second: f64,
+    ) -> Self {
+        let mut t = 0.0;
+        let mut steps = Vec::with_capacity(periods.len());
+        for &p in periods {
+            let dt = p as f64 / ticks_per_second;
+            steps.push((t, 1.0 / dt));
+            t += dt;
+        }
+        let accel = steps
+            .windows(2)
+            .zip(periods.windows(2))
+            .map(|(s, p)| {
+                let dt = (p[0] + p[1]) as f64 / 2.0 / ticks_per_second;
+                (s[1].0, (s[1].1 - s[0].1) / dt)
+            })
+            .collect();
+        Series {
+            label: label.to_string(),
+            color,
+            steps,
+            accel,
+        }
+    }
+
+    fn duration(&self) -> f64 {
+        self.steps.last().map_or(0.0, |s| s.0)
+    }
+}
+
+type PlotResult = Result<(), Box<dyn std::error::Error>>;
+
+fn bounds(values: impl Iterator<Item = f64>) -> (f64, f64) {
+    let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+        (lo.min(v), hi.max(v))
+    });
+    if !lo.is_finite() || !hi.is_finite() {
+        return (0.0, 1.0);
+    }
+    let pad = ((hi - lo) * 0.05).max(1e-9);
+    (lo.min(0.0), hi + pad)
+}
+
+fn chart<DB: DrawingBackend>(
+    area: &DrawingArea<DB, plotters::coord::Shift>,
+    caption: &str,
+    x_desc: &str,
+    y_desc: &str,
+    series: &[(&Series, Vec<(f64, f64)>)],
+) -> PlotResult
+where
+    DB::ErrorType: 'static,
+{
+    let (x0, x1) = bounds(series.iter().flat_map(|(_, p)| p.iter().map(|q| q.0)));
+    let (y0, y1) = bounds(series.iter().flat_map(|(_, p)| p.iter().map(|q| q.1)));
+    let mut chart = ChartBuilder::on(area)
+        .caption(caption, ("sans-serif", 18))
+        .margin(12)
+        .x_label_area_size(40)
+        .y_label_area_size(80)
+        .build_cartesian_2d(x0..x1, y0..y1)?;
+    chart
+        .configure_mesh()
+        .x_desc(x_desc)
+        .y_desc(y_desc)
+        .draw()?;
+    for (s, points) in series {
+        let color = s.color;
+        chart
+            .draw_series(LineSeries::new(
+                points.iter().copied(),
+                color.stroke_width(2),
+            ))?
+            .label(s.label.clone())
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
+            });
+    }
+    if series.len() > 1 {
+        chart
+            .configure_series_labels()
+            .border_style(BLACK)
+            .background_style(WHITE.mix(0.8))
+            .position(SeriesLabelPosition::LowerRight)
+            .draw()?;
+    }
+    Ok(())
+}
+
+/// One profile: frequency against time, against step, acceleration against time.
+pub fn profile(path: &Path, title: &str, s: &Series) -> PlotResult {
+    let root = SVGBackend::new(path, (900, 1000)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let areas = root.split_evenly((3, 1));
+    let by_step: Vec<(f64, f64)> = s
+        .steps
+        .iter()
+        .enumerate()
+        .map(|(i, p)| (i as f64, p.1))
+        .collect();
+    chart(
+        &areas[0],
+        &format!("{title}: frequency against time"),
+        "time (s)",
+        "step frequency (Hz)",
+        &[(s, s.steps.clone())],
+    )?;
+    chart(
+        &areas[1],
+        &format!("{title}: frequency against step"),
+        "step",
+        "step frequency (Hz)",
+        &[(s, by_step)],
+    )?;
+    chart(
+        &areas[2],
+        &format!("{title}: acceleration against time"),
+        "time (s)",
+        "acceleration (Hz/s)",
+        &[(s, s.accel.clone())],
+    )?;
+    root.present()?;
+    Ok(())
+}
+
+/// Several tables on one chart: frequency against time (or step).
+pub fn overlay(path: &Path, title: &str, series: &[Series], by_step: bool) -> PlotResult {
+    let root = SVGBackend::new(path, (900, 560)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let points: Vec<(&Series, Vec<(f64, f64)>)> = series
+        .iter()
+        .map(|s| {
+            let p = if by_step {
+                s.steps
+                    .iter()
+                    .enumerate()
+                    .map(|(i, p)| (i as f64, p.1))
+                    .collect()
+            } else {
+                s.steps.clone()
+            };
+            (s, p)
+        })
+        .collect();
+    let x_desc = if by_step { "step index" } else { "time (s)" };
+    chart(&root, title, x_desc, "step frequency (Hz)", &points)?;
+    root.present()?;
+    Ok(())
+}
+
+/// Tables side by side, each on its own time axis.
+pub fn side_by_side(path: &Path, title: &str, series: &[Series]) -> PlotResult {
+    let root = SVGBackend::new(path, (1200, 480)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let (top, body) = root.split_vertically(36);
+    top.titled(title, ("sans-serif", 20))?;
+    let areas = body.split_evenly((1, series.len().max(1)));
+    for (area, s) in areas.iter().zip(series) {
+        let caption = format!("{} ({:.3} s)", s.label, s.duration());
+        chart(
+            area,
+            &caption,
+            "time (s)",
+            "step frequency (Hz)",
+            &[(s, s.steps.clone())],
+        )?;
+    }
+    root.present()?;
+    Ok(())
+}
