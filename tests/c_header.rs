@@ -1,0 +1,388 @@
+//! The C header of the shipped `profiles.toml` compiles cleanly as C99 and
+//! holds the same tables and figures as the Rust side.
+//!
+//! The test writes `profiles.h` with `Profiles::write_c_header`, generates a
+//! C program that prints every profile's first and last entries, its sum and
+//! each `#define`, compiles it with `cc -std=c99 -Wall -Wextra -Werror
+//! -pedantic` (set `CC` to use another compiler), runs it and compares.
+
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use profile_core::build::Profiles;
+use profile_core::emit::Generated;
+
+const FLAGS: &[&str] = &["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic"];
+
+fn work_dir(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join("c_header")
+        .join(name);
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// A printed figure: integers exactly, floating-point figures by their bits.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+enum Figure {
+    Int(u64),
+    Float(u64),
+}
+
+fn float(v: f64) -> Figure {
+    Figure::Float(v.to_bits())
+}
+
+/// What the C program must print for each profile, from the Rust tables.
+fn expected(profiles: &Profiles) -> BTreeMap<String, BTreeMap<String, Figure>> {
+    let mut all = BTreeMap::new();
+    for p in profiles.profiles() {
+        let mut m = BTreeMap::new();
+        let int = |v: u64| Figure::Int(v);
+        match &p.table {
+            Generated::Steps(t) => {
+                let f = &t.figures;
+                let word = match t.spec.timer.word {
+                    profile_core::Word::U16 => 2,
+                    profile_core::Word::U32 => 4,
+                };
+                m.insert("entries".into(), int(t.periods.len() as u64));
+                m.insert("word_bytes".into(), int(word));
+                m.insert("first".into(), int(u64::from(t.periods[0])));
+                m.insert("last".into(), int(u64::from(*t.periods.last().unwrap())));
+                m.insert(
+                    "sum".into(),
+                    int(t.periods.iter().map(|&p| u64::from(p)).sum()),
+                );
+                m.insert("TIMER_HZ".into(), int(u64::from(t.spec.timer.timer_hz)));
+                m.insert(
+                    "TICKS_PER_STEP".into(),
+                    int(u64::from(t.spec.timer.ticks_per_step)),
+                );
+                m.insert("LEN".into(), int(u64::from(f.len)));
+                m.insert("TOTAL_TICKS".into(), int(f.total_ticks));
+                m.insert("FIRST_TICKS".into(), int(u64::from(f.first_ticks)));
+                m.insert("LAST_TICKS".into(), int(u64::from(f.last_ticks)));
+                m.insert("DURATION_S".into(), float(f.duration_s));
+                m.insert("START_HZ".into(), float(f.start_hz));
+                m.insert("FINAL_HZ".into(), float(f.final_hz));
+            }
+            Generated::Segments(t) => {
+                let f = &t.figures;
+                let (p0, c0) = t.pairs[0];
+                let (pn, cn) = *t.pairs.last().unwrap();
+                m.insert("entries".into(), int(t.pairs.len() as u64));
+                m.insert("first".into(), int(u64::from(p0)));
+                m.insert("first_count".into(), int(u64::from(c0)));
+                m.insert("last".into(), int(u64::from(pn)));
+                m.insert("last_count".into(), int(u64::from(cn)));
+                m.insert(
+                    "steps".into(),
+                    int(t.pairs.iter().map(|&(_, c)| u64::from(c)).sum()),
+                );
+                m.insert(
+                    "sum".into(),
+                    int(t
+                        .pairs
+                        .iter()
+                        .map(|&(p, c)| u64::from(p) * u64::from(c))
+                        .sum()),
+                );
+                m.insert("TIMER_HZ".into(), int(u64::from(t.spec.timer.timer_hz)));
+                m.insert(
+                    "TICKS_PER_STEP".into(),
+                    int(u64::from(t.spec.timer.ticks_per_step)),
+                );
+                m.insert("SEGMENT_COUNT".into(), int(u64::from(f.segments)));
+                m.insert("LEN".into(), int(u64::from(f.steps)));
+                m.insert("TOTAL_TICKS".into(), int(f.total_ticks));
+                m.insert("DURATION_S".into(), float(f.duration_s));
+            }
+        }
+        all.insert(p.name.clone(), m);
+    }
+    all
+}
+
+/// `#define NAME_FIGURE value` lines of the header, per profile, in order:
+/// whether each is a floating-point figure.
+fn defines(header: &str, profiles: &Profiles) -> BTreeMap<String, Vec<(String, bool)>> {
+    let mut out: BTreeMap<String, Vec<(String, bool)>> = BTreeMap::new();
+    for line in header.lines() {
+        let Some(rest) = line.strip_prefix("#define ") else {
+            continue;
+        };
+        let Some((macro_name, value)) = rest.split_once(' ') else {
+            continue; // the include guard
+        };
+        let owner = profiles
+            .profiles()
+            .iter()
+            .map(|p| p.name.to_uppercase())
+            .filter(|upper| macro_name.starts_with(&format!("{upper}_")))
+            .max_by_key(|upper| upper.len())
+            .unwrap_or_else(|| panic!("`#define {macro_name}` belongs to no profile"));
+        let figure = macro_name[owner.len() + 1..].to_string();
+        let is_float = !value.ends_with(['u', 'l']) && value.contains(['.', 'e', 'E']);
+        out.entry(owner.to_lowercase())
+            .or_default()
+            .push((figure, is_float));
+    }
+    out
+}
+
+/// A C program printing `name key value` lines for every profile.
+fn program(profiles: &Profiles, defines: &BTreeMap<String, Vec<(String, bool)>>) -> String {
+    let mut c = String::new();
+    c.push_str("#include <stdio.h>\n#include <stddef.h>\n");
+    c.push_str("#include \"profiles.h\"\n#include \"profiles.h\" /* the guard */\n\n");
+    c.push_str("unsigned long other_first(void);\n\n");
+    c.push_str("int main(void)\n{\n    size_t i, n;\n    unsigned long long sum, steps;\n\n");
+    for p in profiles.profiles() {
+        let name = &p.name;
+        let up = name.to_uppercase();
+        let _ = writeln!(c, "    /* {name} */");
+        match &p.table {
+            Generated::Steps(_) => {
+                let t = format!("{up}_PERIODS");
+                let _ = writeln!(
+                    c,
+                    "    n = sizeof({t}) / sizeof({t}[0]);\n    sum = 0;\n    \
+                     for (i = 0; i < n; i++) {{\n        sum += {t}[i];\n    }}"
+                );
+                let _ = writeln!(
+                    c,
+                    "    printf(\"{name} entries %lu\\n\", (unsigned long)n);\n    \
+                     printf(\"{name} word_bytes %lu\\n\", (unsigned long)sizeof({t}[0]));\n    \
+                     printf(\"{name} first %lu\\n\", (unsigned long){t}[0]);\n    \
+                     printf(\"{name} last %lu\\n\", (unsigned long){t}[n - 1]);\n    \
+                     printf(\"{name} sum %llu\\n\", sum);"
+                );
+            }
+            Generated::Segments(_) => {
+                let t = format!("{up}_SEGMENTS");
+                let _ = writeln!(
+                    c,
+                    "    n = sizeof({t}) / sizeof({t}[0]);\n    sum = 0;\n    steps = 0;\n    \
+                     for (i = 0; i < n; i++) {{\n        \
+                     sum += (unsigned long long){t}[i][0] * {t}[i][1];\n        \
+                     steps += {t}[i][1];\n    }}"
+                );
+                let _ = writeln!(
+                    c,
+                    "    printf(\"{name} entries %lu\\n\", (unsigned long)n);\n    \
+                     printf(\"{name} first %lu\\n\", (unsigned long){t}[0][0]);\n    \
+                     printf(\"{name} first_count %lu\\n\", (unsigned long){t}[0][1]);\n    \
+                     printf(\"{name} last %lu\\n\", (unsigned long){t}[n - 1][0]);\n    \
+                     printf(\"{name} last_count %lu\\n\", (unsigned long){t}[n - 1][1]);\n    \
+                     printf(\"{name} steps %llu\\n\", steps);\n    \
+                     printf(\"{name} sum %llu\\n\", sum);"
+                );
+            }
+        }
+        for (figure, is_float) in defines.get(name).map(Vec::as_slice).unwrap_or(&[]) {
+            let m = format!("{up}_{figure}");
+            if *is_float {
+                let _ = writeln!(c, "    printf(\"{name} {figure} %.17g\\n\", (double){m});");
+            } else {
+                let _ = writeln!(
+                    c,
+                    "    printf(\"{name} {figure} %llu\\n\", (unsigned long long){m});"
+                );
+            }
+        }
+        c.push('\n');
+    }
+    c.push_str("    printf(\"other_first %lu\\n\", other_first());\n    return 0;\n}\n");
+    c
+}
+
+fn run(command: &mut Command, what: &str) -> String {
+    let output = command.output().unwrap_or_else(|e| {
+        panic!(
+            "cannot run {what} ({:?}): {e}. The C header test needs a C99 compiler: \
+             install one (e.g. `apt-get install gcc`) or set CC",
+            command.get_program()
+        )
+    });
+    let stdout = String::from_utf8_lossy(&output.stdout).into_owned();
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        output.status.success(),
+        "{what} failed ({}):\n{stdout}{stderr}",
+        output.status
+    );
+    assert!(
+        stderr.trim().is_empty(),
+        "{what} printed warnings or errors:\n{stderr}"
+    );
+    stdout
+}
+
+/// Writes the header of `profiles`, compiles and runs a program printing
+/// it, checks every figure against the Rust tables; returns what C printed.
+fn check_header(profiles: &Profiles, dir_name: &str) -> BTreeMap<String, BTreeMap<String, Figure>> {
+    let dir = work_dir(dir_name);
+    let header_path = dir.join("profiles.h");
+    profiles.write_c_header(&header_path).unwrap();
+    let header = fs::read_to_string(&header_path).unwrap();
+    assert_eq!(header, profiles.c_header());
+
+    let defines = defines(&header, profiles);
+    let first = profiles.profiles()[0].name.to_uppercase();
+    let first_table = match profiles.profiles()[0].table {
+        Generated::Steps(_) => format!("{first}_PERIODS[0]"),
+        Generated::Segments(_) => format!("{first}_SEGMENTS[0][0]"),
+    };
+    fs::write(dir.join("main.c"), program(profiles, &defines)).unwrap();
+    // A second translation unit: the tables are `static`, so including the
+    // header twice in one program must link.
+    fs::write(
+        dir.join("other.c"),
+        format!(
+            "#include \"profiles.h\"\n\nunsigned long other_first(void);\n\n\
+             unsigned long other_first(void)\n{{\n    return {first_table};\n}}\n"
+        ),
+    )
+    .unwrap();
+
+    let cc = std::env::var("CC").unwrap_or_else(|_| "cc".to_string());
+    let exe = dir.join("profiles");
+    run(
+        Command::new(&cc)
+            .args(FLAGS)
+            .arg("-o")
+            .arg(&exe)
+            .arg("main.c")
+            .arg("other.c")
+            .current_dir(&dir),
+        &format!("`{cc} {}`", FLAGS.join(" ")),
+    );
+    let stdout = run(&mut Command::new(&exe), "the compiled C program");
+
+    let expected = expected(profiles);
+    let mut printed: BTreeMap<String, BTreeMap<String, Figure>> = BTreeMap::new();
+    for line in stdout.lines() {
+        let fields: Vec<&str> = line.split(' ').collect();
+        if let ["other_first", v] = fields[..] {
+            let v = Figure::Int(v.parse::<u64>().unwrap());
+            let name = &profiles.profiles()[0].name;
+            assert_eq!(Some(&v), expected[name].get("first"), "other.c");
+            continue;
+        }
+        let [name, figure, value] = fields[..] else {
+            panic!("unexpected line `{line}`");
+        };
+        let is_float = defines
+            .get(name)
+            .is_some_and(|d| d.iter().any(|(f, fl)| f == figure && *fl));
+        let value = if is_float {
+            float(
+                value
+                    .parse::<f64>()
+                    .unwrap_or_else(|e| panic!("`{line}`: {e}")),
+            )
+        } else {
+            Figure::Int(value.parse().unwrap_or_else(|e| panic!("`{line}`: {e}")))
+        };
+        printed
+            .entry(name.to_string())
+            .or_default()
+            .insert(figure.to_string(), value);
+    }
+    assert!(stdout.contains("other_first "), "other.c was not called");
+
+    // Every profile, every figure; the C side has no more and no fewer.
+    assert_eq!(
+        printed.keys().collect::<Vec<_>>(),
+        expected.keys().collect::<Vec<_>>(),
+        "profiles in the header"
+    );
+    for (name, want) in &expected {
+        let got = &printed[name];
+        for (figure, value) in want {
+            assert_eq!(
+                got.get(figure),
+                Some(value),
+                "`{name}` {figure}: C printed {:?}, Rust has {value:?}",
+                got.get(figure)
+            );
+        }
+        let extra: Vec<_> = got.keys().filter(|k| !want.contains_key(*k)).collect();
+        assert!(extra.is_empty(), "`{name}`: figures not checked: {extra:?}");
+        // The figures describe the table.
+        assert_eq!(got["sum"], got["TOTAL_TICKS"], "`{name}`: sum");
+        if got.contains_key("FIRST_TICKS") {
+            assert_eq!(got["first"], got["FIRST_TICKS"], "`{name}`");
+            assert_eq!(got["last"], got["LAST_TICKS"], "`{name}`");
+            assert_eq!(got["entries"], got["LEN"], "`{name}`");
+        } else {
+            assert_eq!(got["entries"], got["SEGMENT_COUNT"], "`{name}`");
+            assert_eq!(got["steps"], got["LEN"], "`{name}`");
+        }
+    }
+    printed
+}
+
+#[test]
+fn the_c_header_compiles_and_matches_the_rust_tables() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("profiles.toml");
+    let profiles = Profiles::load(&path).unwrap_or_else(|e| panic!("{e}"));
+    assert!(
+        profiles
+            .c_header()
+            .contains("#ifndef STEPPER_PROFILES_PROFILES_H\n")
+    );
+    let printed = check_header(&profiles, "shipped");
+
+    // The seeds, through C.
+    let orange = &printed["sigmoid_orange"];
+    assert_eq!(
+        (orange["first"], orange["last"]),
+        (Figure::Int(19183), Figure::Int(156))
+    );
+    assert_eq!(printed["exponential"]["LEN"], Figure::Int(120));
+    let linear = &printed["linear_integer"];
+    assert_eq!(
+        (linear["first"], linear["last"]),
+        (Figure::Int(50_000), Figure::Int(5_000))
+    );
+}
+
+/// 32-bit words: `uint32_t` tables with periods above 65 535.
+#[test]
+fn u32_tables_in_c() {
+    let source = r#"
+[defaults]
+timer_hz = 10_000_000
+word = "u32"
+
+[profiles.slow_linear]
+curve = "linear"
+fmin = 10
+fmax = 1000
+len = 100
+
+[profiles.slow_segments]
+curve = "exponential"
+fmin = 20
+fmax = 1000
+f_inf = 1500
+len = 300
+segments = 6
+"#;
+    let profiles = Profiles::parse("slow.toml", source).unwrap_or_else(|e| panic!("{e}"));
+    assert!(
+        profiles
+            .c_header()
+            .contains("#ifndef STEPPER_PROFILES_SLOW_H\n")
+    );
+    let printed = check_header(&profiles, "u32");
+    assert_eq!(printed["slow_linear"]["word_bytes"], Figure::Int(4));
+    assert!(printed["slow_linear"]["first"] > Figure::Int(65_535));
+    assert!(printed["slow_segments"]["first"] > Figure::Int(65_535));
+}
