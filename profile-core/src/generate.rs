@@ -264,6 +264,63 @@ impl Spec {
         })
     }
 
+    /// Calls `sink(k, t)` with the exact time `t` (in s) of every pulse edge
+    /// `k = 1..=len` of the continuous curve, before discretization: where
+    /// `N(t) = k` for curves in time; for `discretization = index`, the
+    /// running sum of the unrounded entries (the index curve has no other
+    /// time). Measures how far any table strays from the curve.
+    pub fn for_each_exact_edge<F: FnMut(u32, f64)>(&self, mut sink: F) -> Result<(), Error> {
+        self.validate()?;
+        let len = self.len();
+        if self.discretization == Discretization::Index {
+            let scale = self.timer.ticks_per_second();
+            let mut k = 0;
+            let mut t = 0.0;
+            // The f32 and integer modes keep their own arithmetic.
+            return self.exact_index_entries(|entry_ticks| {
+                k += 1;
+                t += entry_ticks / scale;
+                sink(k, t);
+            });
+        }
+        let model = TimeModel::new(&self.curve);
+        for k in 1..=len {
+            sink(k, edge_time(model.curve(), k)?);
+        }
+        Ok(())
+    }
+
+    /// Unrounded entries of an index-discretized table, in ticks.
+    fn exact_index_entries<F: FnMut(f64)>(&self, mut sink: F) -> Result<(), Error> {
+        let len = self.len();
+        let scale = self.timer.ticks_per_second();
+        match self.curve {
+            Curve::Sigmoid(s) => {
+                for k in 0..len {
+                    sink(match self.arithmetic {
+                        Arithmetic::F32 => scale / s.freq_at_index_f32(k) as f64,
+                        _ => scale / s.freq_at_index(k),
+                    });
+                }
+            }
+            Curve::Linear(l) => {
+                if self.arithmetic == Arithmetic::Integer {
+                    let t = self.timer;
+                    let int = IntegerLinear::new(&l, len, t.ticks_per_step, t.timer_hz)?;
+                    for k in 0..len {
+                        sink(scale / int.freq(k) as f64);
+                    }
+                } else {
+                    for k in 0..len {
+                        sink(scale / l.freq_at_index(k));
+                    }
+                }
+            }
+            _ => {}
+        }
+        Ok(())
+    }
+
     /// Computes the table's figures without storing it.
     pub fn figures(&self) -> Result<Figures, Error> {
         self.for_each_period(|_, _| {})
@@ -277,30 +334,30 @@ impl Spec {
         let scale = self.timer.ticks_per_second();
         let mut quantizer = Quantizer::new(self);
         match (self.curve, self.discretization) {
-            (Curve::Sigmoid(s), Discretization::Index) => {
+            (Curve::Linear(l), Discretization::Index) if self.arithmetic == Arithmetic::Integer => {
+                // The article's integer division is the rounding; the exact
+                // value is the same ratio before truncation.
+                let t = self.timer;
+                let int = IntegerLinear::new(&l, len, t.ticks_per_step, t.timer_hz)?;
                 for k in 0..len {
-                    let entry = match self.arithmetic {
-                        Arithmetic::F32 => scale / s.freq_at_index_f32(k) as f64,
-                        _ => scale / s.freq_at_index(k),
-                    };
-                    sink(k, quantizer.push(k, entry, None)?);
+                    let exact = scale / int.freq(k) as f64;
+                    sink(k, quantizer.push_exact(k, int.reload(k), exact)?);
                 }
             }
-            (Curve::Linear(l), Discretization::Index) => {
-                if self.arithmetic == Arithmetic::Integer {
-                    let t = self.timer;
-                    let int = IntegerLinear::new(&l, len, t.ticks_per_step, t.timer_hz)?;
-                    for k in 0..len {
-                        // The reload is the article's integer division; its
-                        // exact value is the same ratio before truncation.
-                        let exact =
-                            t.timer_hz as f64 / (t.ticks_per_step as f64 * int.freq(k) as f64);
-                        sink(k, quantizer.push_exact(k, int.reload(k), exact)?);
+            (_, Discretization::Index) => {
+                let mut k = 0;
+                let mut failed = None;
+                self.exact_index_entries(|entry| {
+                    if failed.is_none() {
+                        match quantizer.push(k, entry, None) {
+                            Ok(ticks) => sink(k, ticks),
+                            Err(e) => failed = Some(e),
+                        }
+                        k += 1;
                     }
-                } else {
-                    for k in 0..len {
-                        sink(k, quantizer.push(k, scale / l.freq_at_index(k), None)?);
-                    }
+                })?;
+                if let Some(e) = failed {
+                    return Err(e);
                 }
             }
             (curve, discretization) => {
