@@ -124,18 +124,18 @@ const KEYWORDS: &[&str] = &[
 
 /// Why `name` cannot be a module name, if it cannot.
 fn bad_name(name: &str) -> Option<String> {
-    let valid = name
-        .chars()
-        .next()
-        .is_some_and(|c| c.is_ascii_lowercase() || c == '_')
+    if name.is_empty() {
+        return Some("a profile name must not be empty: it names a module".to_string());
+    }
+    // A leading `_` would make `_NAME_...` identifiers, reserved in C.
+    let valid = name.chars().next().is_some_and(|c| c.is_ascii_lowercase())
         && name
             .chars()
-            .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_')
-        && name != "_";
+            .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_');
     if !valid {
         Some(format!(
             "profile name `{name}` must be a snake_case Rust identifier \
-             (lowercase letters, digits and `_`, not starting with a digit): it names a module"
+             (lowercase letters, digits and `_`, starting with a letter): it names a module"
         ))
     } else if KEYWORDS.contains(&name) {
         Some(format!(
@@ -146,20 +146,53 @@ fn bad_name(name: &str) -> Option<String> {
     }
 }
 
-fn value(key: &str, v: &Spanned<toml::Value>) -> Result<Value, Diagnostic<Range<usize>>> {
-    let kind = match v.get_ref() {
-        toml::Value::Integer(i) => return Ok(Value::Int(*i as i128)),
-        toml::Value::Float(f) => return Ok(Value::Float(*f)),
-        toml::Value::String(s) => return Ok(Value::Name(s.clone())),
-        toml::Value::Boolean(_) => "a boolean",
-        toml::Value::Datetime(_) => "a date",
-        toml::Value::Array(_) => "an array",
-        toml::Value::Table(_) => "a table",
-    };
-    Err(Diagnostic {
-        loc: v.span(),
-        message: format!("`{key}` expects a number or a string, got {kind}"),
-    })
+/// A TOML value as an argument value; kinds no key takes are described, so
+/// the schema can say what the key expects instead.
+fn value(v: &Spanned<toml::Value>) -> Value {
+    match v.get_ref() {
+        toml::Value::Integer(i) => Value::Int(*i as i128),
+        toml::Value::Float(f) => Value::Float(*f),
+        toml::Value::String(s) => Value::Name(s.clone()),
+        toml::Value::Boolean(_) => Value::Other("a boolean".into()),
+        toml::Value::Datetime(_) => Value::Other("a date".into()),
+        toml::Value::Array(_) => Value::Other("an array".into()),
+        toml::Value::Table(_) => Value::Other("a table".into()),
+    }
+}
+
+fn arg(key: &Spanned<String>, v: &Spanned<toml::Value>) -> Arg<Range<usize>> {
+    Arg {
+        key: key.get_ref().clone(),
+        key_loc: key.span(),
+        value: value(v),
+        value_loc: v.span(),
+    }
+}
+
+/// The TOML parser's message in this project's words.
+fn toml_message(message: &str, source: &str, span: &Range<usize>) -> String {
+    let text = source.get(span.clone()).unwrap_or("").trim();
+    if message == "duplicate key" && !text.is_empty() {
+        return format!(
+            "duplicate key `{}`",
+            text.trim_matches(|c| c == '[' || c == ']')
+        );
+    }
+    if let Some(rest) = message.strip_prefix("unknown field `") {
+        let field = rest.split('`').next().unwrap_or("");
+        let hint = params::suggest(field, ["defaults", "profiles"])
+            .map(|s| format!("did you mean `[{s}]`? "))
+            .unwrap_or_default();
+        return format!(
+            "unknown table `{field}`; {hint}expected `[defaults]` or `[profiles.NAME]` tables"
+        );
+    }
+    if message.contains("expected a map") {
+        return format!(
+            "`{text}` must be a table: `[profiles.NAME]` or `[defaults]` followed by `key = value` lines"
+        );
+    }
+    message.to_string()
 }
 
 fn sorted(table: &Table) -> Vec<(&Spanned<String>, &Spanned<toml::Value>)> {
@@ -192,22 +225,20 @@ impl Profiles {
     pub fn parse(file: &str, source: &str) -> Result<Self, LoadError> {
         let parsed: File = toml::from_str(source).map_err(|e| {
             let loc = e.span().unwrap_or(0..0);
-            render(
-                file,
-                source,
-                &[Diagnostic {
-                    loc,
-                    message: e.message().to_string(),
-                }],
-            )
+            let message = toml_message(e.message(), source, &loc);
+            render(file, source, &[Diagnostic { loc, message }])
         })?;
         let mut diagnostics = Vec::new();
 
         let mut defaults = Vec::new();
+        // Keys a misspelt default was probably meant to be: not missing too.
+        let mut meant = Vec::new();
         for (key, v) in parsed.defaults.as_ref().map(sorted).unwrap_or_default() {
             if Key::from_name(key.get_ref()).is_none() {
                 let names = Key::ALL.iter().map(|k| k.name());
-                let hint = params::suggest(key.get_ref(), names.clone())
+                let near = params::suggest(key.get_ref(), names.clone());
+                meant.extend(near.and_then(Key::from_name));
+                let hint = near
                     .map(|s| format!("did you mean `{s}`? "))
                     .unwrap_or_default();
                 let list: Vec<String> = names.map(|n| format!("`{n}`")).collect();
@@ -221,15 +252,7 @@ impl Profiles {
                 });
                 continue;
             }
-            match value(key.get_ref(), v) {
-                Ok(value) => defaults.push(Arg {
-                    key: key.get_ref().clone(),
-                    key_loc: key.span(),
-                    value,
-                    value_loc: v.span(),
-                }),
-                Err(d) => diagnostics.push(d),
-            }
+            defaults.push(arg(key, v));
         }
 
         let Some(profiles_table) = parsed.profiles else {
@@ -257,18 +280,10 @@ impl Profiles {
                 });
                 continue;
             }
-            let mut args = Vec::new();
-            for (key, v) in sorted(table.get_ref()) {
-                match value(key.get_ref(), v) {
-                    Ok(value) => args.push(Arg {
-                        key: key.get_ref().clone(),
-                        key_loc: key.span(),
-                        value,
-                        value_loc: v.span(),
-                    }),
-                    Err(d) => diagnostics.push(d),
-                }
-            }
+            let mut args: Vec<_> = sorted(table.get_ref())
+                .into_iter()
+                .map(|(key, v)| arg(key, v))
+                .collect();
             // Defaults fill what the profile omits, where its curve takes them.
             let curve = args
                 .iter()
@@ -288,7 +303,7 @@ impl Profiles {
                 }
             }
             let whole = name.span();
-            let parsed = match params::spec_from_args(&args, &whole) {
+            let parsed = match params::spec_from_args_assuming(&args, &whole, &meant) {
                 Ok(p) => p,
                 Err(mut d) => {
                     diagnostics.append(&mut d);
@@ -309,6 +324,10 @@ impl Profiles {
             }
         }
         if !diagnostics.is_empty() {
+            // In source order, and once: a mistake in `[defaults]` reaches
+            // every profile that uses it.
+            diagnostics.sort_by_key(|d| (d.loc.start, d.loc.end));
+            diagnostics.dedup();
             return Err(render(file, source, &diagnostics));
         }
         Ok(Profiles {
@@ -402,5 +421,7 @@ mod tests {
         assert!(bad_name("4th").is_some());
         assert!(bad_name("my profile").is_some());
         assert!(bad_name("type").is_some());
+        assert!(bad_name("_hidden").is_some());
+        assert!(bad_name("").is_some());
     }
 }

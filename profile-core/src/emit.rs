@@ -237,6 +237,8 @@ pub fn rust_module(profile: &Profile) -> String {
     for line in doc_lines(&profile.table) {
         let _ = writeln!(out, "/// {line}");
     }
+    // Unused figures are no reason for warnings in the user's crate.
+    let _ = writeln!(out, "#[allow(dead_code)]");
     let _ = writeln!(out, "pub mod {} {{", profile.name);
     match &profile.table {
         Generated::Steps(t) => {

@@ -25,6 +25,22 @@ pub enum Value {
     Float(f64),
     /// A bare name or a string: `sigmoid`, `"u16"`.
     Name(String),
+    /// A value of a kind no key takes, described: `a boolean`, `an array`.
+    Other(String),
+}
+
+impl Value {
+    /// The value as quoted in messages: `` `1000.5` ``, `` `slow` ``, `a boolean`.
+    /// A name that reads as a number says it is a string.
+    pub fn quoted(&self) -> String {
+        match self {
+            Value::Name(n) if n.trim().parse::<f64>().is_ok() => {
+                format!("the string `\"{n}\"` (write numbers without quotes)")
+            }
+            Value::Other(kind) => kind.clone(),
+            other => format!("`{other}`"),
+        }
+    }
 }
 
 impl core::fmt::Display for Value {
@@ -32,7 +48,7 @@ impl core::fmt::Display for Value {
         match self {
             Value::Int(v) => write!(f, "{v}"),
             Value::Float(v) => write!(f, "{v:?}"),
-            Value::Name(v) => f.write_str(v),
+            Value::Name(v) | Value::Other(v) => f.write_str(v),
         }
     }
 }
@@ -233,8 +249,12 @@ impl<L: Clone> Collector<'_, L> {
         match &arg.value {
             Value::Int(v) => Some(*v as f64),
             Value::Float(v) => Some(*v),
-            Value::Name(n) => {
-                let message = format!("`{key}` expects a number in {}, got `{n}`", unit(key));
+            other => {
+                let message = format!(
+                    "`{key}` expects a number in {}, got {}",
+                    unit(key),
+                    other.quoted()
+                );
                 self.at_arg(i, false, message);
                 None
             }
@@ -246,7 +266,7 @@ impl<L: Clone> Collector<'_, L> {
         match &arg.value {
             Value::Int(v) => Some(*v),
             other => {
-                let message = format!("`{key}` expects {expected}, got `{other}`");
+                let message = format!("`{key}` expects {expected}, got {}", other.quoted());
                 self.at_arg(i, false, message);
                 None
             }
@@ -284,7 +304,7 @@ impl<L: Clone> Collector<'_, L> {
                     format!("`{key}` must be one of {names} (got `{n}`){hint}")
                 }
             },
-            other => format!("`{key}` expects one of {names}, got `{other}`"),
+            other => format!("`{key}` expects one of {names}, got {}", other.quoted()),
         };
         self.at_arg(i, false, message);
         None
@@ -316,6 +336,17 @@ fn len_check(len: i128) -> Result<u32, String> {
 /// found in keys, kinds and names are reported together, in source order;
 /// then the spec's own validation runs.
 pub fn spec_from_args<L: Clone>(args: &[Arg<L>], whole: &L) -> Result<Parsed, Vec<Diagnostic<L>>> {
+    spec_from_args_assuming(args, whole, &[])
+}
+
+/// [`spec_from_args`], not reporting `assumed` keys as missing: keys another
+/// diagnostic already covers, such as the target of a misspelt default. When
+/// such a key is all that is wrong, the error holds no diagnostic of its own.
+pub fn spec_from_args_assuming<L: Clone>(
+    args: &[Arg<L>],
+    whole: &L,
+    assumed: &[Key],
+) -> Result<Parsed, Vec<Diagnostic<L>>> {
     let mut c = Collector {
         args,
         whole,
@@ -342,10 +373,17 @@ pub fn spec_from_args<L: Clone>(args: &[Arg<L>], whole: &L) -> Result<Parsed, Ve
                         .unwrap_or_default(),
                     _ => String::new(),
                 };
-                let message = format!(
-                    "`curve` must be one of {} (got `{other}`){hint}",
-                    quoted_list(CURVES)
-                );
+                let message = match other {
+                    Value::Name(_) => format!(
+                        "`curve` must be one of {} (got `{other}`){hint}",
+                        quoted_list(CURVES)
+                    ),
+                    _ => format!(
+                        "`curve` expects one of {}, got {}",
+                        quoted_list(CURVES),
+                        other.quoted()
+                    ),
+                };
                 c.at_arg(i, false, message);
                 None
             }
@@ -357,7 +395,7 @@ pub fn spec_from_args<L: Clone>(args: &[Arg<L>], whole: &L) -> Result<Parsed, Ve
     };
 
     // Unknown, inapplicable and duplicate keys.
-    let mut suggested = Vec::new();
+    let mut suggested = assumed.to_vec();
     for (i, arg) in args.iter().enumerate() {
         match Key::from_name(&arg.key) {
             None => {
@@ -401,6 +439,9 @@ pub fn spec_from_args<L: Clone>(args: &[Arg<L>], whole: &L) -> Result<Parsed, Ve
         .copied()
         .filter(|k| c.find(*k).is_none() && !suggested.contains(k))
         .collect();
+    // A required key covered by another diagnostic (a near-miss spelling) is
+    // still absent: the spec cannot be built, whatever else is right.
+    let incomplete = required.iter().any(|k| c.find(*k).is_none());
     if !missing.is_empty() {
         let plural = if missing.len() == 1 { "key" } else { "keys" };
         c.at_whole(format!(
@@ -515,7 +556,7 @@ pub fn spec_from_args<L: Clone>(args: &[Arg<L>], whole: &L) -> Result<Parsed, Ve
         }),
     };
 
-    if !c.diagnostics.is_empty() {
+    if incomplete || !c.diagnostics.is_empty() {
         return Err(c.finish());
     }
     let spec = Spec {
