@@ -1,0 +1,12 @@
+use stepper_profiles::period_table;
+
+static T: [u16; 120] = period_table!(
+    curve = exponential,
+    fmin = 500,
+    fmax = 15000,
+    f_inf = 15000,
+    len = 120,
+    timer_hz = 1_000_000,
+);
+
+fn main() {}
