@@ -26,8 +26,8 @@
 //! and segment tables (counts sum to the ramp's steps, none empty, flash
 //! `2 * word_bytes * n`, each count and period as the model cuts the ramp).
 //!
-//! One test is ignored: three-stage shapes within about 1e-8 of 0, where
-//! production's closed-form step count loses its digits (see the test).
+//! Three-stage shapes within 1e-12 of 0 are checked too: a closed form that
+//! subtracts two terms of size `a t / B` would lose its digits there.
 
 use stepper_profiles::{
     Curve, Discretization, Error, Exponential, ExponentialExtent, JerkLimited, Linear,
@@ -630,14 +630,12 @@ fn three_stage_with_a_nearly_linear_start() {
     }
 }
 
-/// The same for shapes closer to 0. Production's closed-form step count of
-/// the exponential stage, `(f0 + C) t + C expm1(-B t) / B`, subtracts two
-/// terms of size `C t` (about `a t / B`) to leave one of size `f t`, so it
-/// loses about `log10(C / f)` digits. Measured with these parameters at
-/// 6 MHz: the worst edge is 0.517 tick off at `B = 1e-8`, 0.545 at `-1e-8`,
-/// 1.17 at `1e-9`, 7.4 at `1e-10`, 628 at `1e-12` and 1333 at `-1e-12`.
+/// The same for shapes closer to 0. The textbook step count of the
+/// exponential stage, `(f0 + C) t + C expm1(-B t) / B`, subtracts two terms
+/// of size `C t` (about `a t / B`) to leave one of size `f t`; written that
+/// way it was 0.517 tick off at `B = 1e-8`, 7.4 at `1e-10` and 1333 at
+/// `-1e-12` with these parameters at 6 MHz.
 #[test]
-#[ignore = "production's three-stage step count cancels catastrophically for |shape| below about 1e-8"]
 fn three_stage_with_an_almost_zero_shape() {
     for case in [
         zeng_case("three_stage shape 1e-8, 6 MHz", 1e-8, 6_000_000),
@@ -1000,14 +998,19 @@ fn segment_tables_cover_the_ramp() {
                 ),
             }
         }
-        // Twice as many segments as steps leaves some segment empty.
+        // More segments than steps: some segment would be empty, which is
+        // refused before any work (or allocation) for the segments.
         let len = case.spec.len();
+        let result = case.spec.for_each_segment(2 * len, |_, _, _| {});
         assert!(
             matches!(
-                case.spec.for_each_segment(2 * len, |_, _, _| {}),
-                Err(Error::EmptySegment { .. })
+                result,
+                Err(Error::TooLarge {
+                    key: stepper_profiles::Key::Segments,
+                    ..
+                })
             ),
-            "{}: expected {} equal-time segments to leave one empty",
+            "{}: expected {} segments for {len} steps to be refused, got {result:?}",
             case.name,
             2 * len
         );

@@ -669,7 +669,6 @@ fn overflowing_calls_are_errors() {
 /// `len = 65536` is `trans = 65535`: the article's `for (i = 0; i <= trans; i++)`
 /// with `UINT16 i` never ends, so there is no C table to be compatible with.
 #[test]
-#[ignore = "production accepts trans = 65535, whose C loop never ends; un-ignore once rejected"]
 fn trans_65535_is_rejected_like_c() {
     let call = call(100, 400, 65_536, 1_000_000, 1);
     let flagged = match run_c(&call) {

@@ -98,7 +98,13 @@ impl IntegerLinear {
         let f0 = whole(Key::Fmin, l.fmin)?;
         let fmax = whole(Key::Fmax, l.fmax)?;
         let trans = (len - 1) as u64;
-        fits(Key::Len, "REG16 tran", trans, U16_MAX)?;
+        // `for(i=0;i<=trans;i++)` with a 16-bit `i` never ends at trans = 65535.
+        fits(
+            Key::Len,
+            "REG16 i <= trans (the loop ends only below 65535)",
+            trans,
+            U16_MAX - 1,
+        )?;
         let product = (fmax - f0) * (fmax + f0);
         fits(Key::Fmax, "(fmax-f0)*(fmax+f0)", product, INT_MAX)?;
         let a = product / (2 * trans);

@@ -50,12 +50,27 @@ impl ThreeStageInTime {
             nc: 0.0,
         };
         // Each stage's count starts where the previous one ends.
-        curve.n1 = (f0 + c) * t1 + c * libm::expm1(-shape * t1) / shape;
+        curve.n1 = curve.stage1_steps(t1);
         let d = t2 - t1;
         curve.n2 = curve.n1 + f1 * d + a * d * d / 2.0;
         let d = t2 - tc;
         curve.nc = curve.n2 + fc * (tc - t2) + b / 3.0 * d * d * d;
         curve
+    }
+
+    /// `N1(t) = (f0 + C) t + C (exp(-Bt) - 1)/B`, written without the
+    /// cancellation of two huge terms when `B` is small (`C ~ a/B`):
+    /// `N1 = f0 t + (a + B (f1 - f0)) t² h(Bt)` with `h(x) = (x + expm1(-x))/x²`.
+    fn stage1_steps(&self, t: f64) -> f64 {
+        let x = self.shape * t;
+        let h = if libm::fabs(x) < 1e-3 {
+            // The series 1/2 - x/6 + x²/24 - x³/120 + x⁴/720: the next term
+            // is below 2e-19 here.
+            0.5 - x / 6.0 + x * x / 24.0 - x * x * x / 120.0 + x * x * x * x / 720.0
+        } else {
+            (x + libm::expm1(-x)) / (x * x)
+        };
+        self.f0 * t + (self.a + self.shape * (self.f1 - self.f0)) * t * t * h
     }
 
     /// Steps until `fmax`.
@@ -94,8 +109,7 @@ impl TimeCurve for ThreeStageInTime {
 
     fn steps(&self, t: f64) -> f64 {
         if t < self.t1 {
-            // (f0 + C) t + C (exp(-B t) - 1) / B
-            (self.f0 + self.c) * t + self.c * libm::expm1(-self.shape * t) / self.shape
+            self.stage1_steps(t)
         } else if t < self.t2 {
             let d = t - self.t1;
             self.n1 + self.f1 * d + self.a * d * d / 2.0
