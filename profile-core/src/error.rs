@@ -137,6 +137,17 @@ pub enum Error {
         /// The largest accepted value.
         max: f64,
     },
+    /// `key` must be at least `other`.
+    NotAtLeast {
+        /// The parameter that must not be the smaller one.
+        key: Key,
+        /// Its value.
+        value: f64,
+        /// The parameter it is compared with.
+        other: Key,
+        /// That parameter's value.
+        other_value: f64,
+    },
     /// `key` must be greater than `other`.
     NotGreater {
         /// The parameter that must be the larger one.
@@ -284,6 +295,7 @@ impl Error {
             | Error::IntegerOverflow { key, .. }
             | Error::RampTooLong { key, .. }
             | Error::NotGreater { key, .. }
+            | Error::NotAtLeast { key, .. }
             | Error::Unsupported { key, .. } => Some(key),
             Error::LenZero | Error::LenTooLarge { .. } => Some(Key::Len),
             Error::TimerZero => Some(Key::TimerHz),
@@ -294,6 +306,48 @@ impl Error {
             Error::BufferLength { .. } | Error::WordMismatch { .. } => None,
             Error::NoConvergence { .. } => Some(Key::Curve),
         }
+    }
+}
+
+/// A number with at most six significant digits, trailing zeros dropped.
+struct Significant(f64);
+
+impl fmt::Display for Significant {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let v = self.0;
+        if v == 0.0 || !v.is_finite() {
+            return write!(f, "{v}");
+        }
+        let digits = 5 - libm::floor(libm::log10(libm::fabs(v))) as i32;
+        let decimals = digits.clamp(0, 17) as usize;
+        let mut buf = [0u8; 64];
+        let mut w = Buf {
+            buf: &mut buf,
+            len: 0,
+        };
+        let _ = fmt::write(&mut w, format_args!("{v:.decimals$}"));
+        let len = w.len;
+        let mut text = core::str::from_utf8(&buf[..len]).unwrap_or("");
+        if text.contains('.') {
+            text = text.trim_end_matches('0').trim_end_matches('.');
+        }
+        f.write_str(text)
+    }
+}
+
+/// A fixed buffer for formatting without allocation.
+struct Buf<'a> {
+    buf: &'a mut [u8],
+    len: usize,
+}
+
+impl fmt::Write for Buf<'_> {
+    fn write_str(&mut self, s: &str) -> fmt::Result {
+        let end = self.len + s.len();
+        let dst = self.buf.get_mut(self.len..end).ok_or(fmt::Error)?;
+        dst.copy_from_slice(s.as_bytes());
+        self.len = end;
+        Ok(())
     }
 }
 
@@ -324,7 +378,20 @@ impl fmt::Display for Error {
                 value,
                 min,
                 why,
-            } => write!(f, "`{key}` must be greater than {min} {why} (got {value})"),
+            } => write!(
+                f,
+                "`{key}` must be greater than {}{why} (got {value})",
+                Significant(min)
+            ),
+            Error::NotAtLeast {
+                key,
+                value,
+                other,
+                other_value,
+            } => write!(
+                f,
+                "`{key}` must be at least `{other}` (got {value} < {other_value})"
+            ),
             Error::NotWhole { key, value } => write!(
                 f,
                 "`{key}` must be a whole number with `arithmetic = integer` (got {value})"
@@ -401,3 +468,235 @@ impl fmt::Display for Error {
 
 #[cfg(feature = "std")]
 impl std::error::Error for Error {}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use std::string::ToString;
+    use std::vec::Vec;
+
+    use super::*;
+    use crate::{Discretization, Word};
+
+    /// One example of every variant with its exact message. The match in
+    /// `covered` has no wildcard: a new variant does not compile until it
+    /// is added here.
+    fn examples() -> Vec<(Error, &'static str)> {
+        std::vec![
+            (
+                Error::NotFinite {
+                    key: Key::Fmax,
+                    value: f64::INFINITY
+                },
+                "`fmax` must be a finite number (got inf)"
+            ),
+            (
+                Error::NotPositive {
+                    key: Key::Fmin,
+                    value: -500.0
+                },
+                "`fmin` must be greater than 0 (got -500)"
+            ),
+            (
+                Error::TooLarge {
+                    key: Key::Flexible,
+                    value: 501.0,
+                    max: 500.0
+                },
+                "`flexible` must be at most 500 (got 501)"
+            ),
+            (
+                Error::NotGreater {
+                    key: Key::Fmax,
+                    value: 400.0,
+                    other: Key::Fmin,
+                    other_value: 500.0
+                },
+                "`fmax` must be greater than `fmin` (got 400 <= 500)",
+            ),
+            (Error::Zero { key: Key::Shape }, "`shape` must not be 0"),
+            (
+                Error::TooSmall {
+                    key: Key::Shape,
+                    value: -20.0,
+                    min: -40.0 / 3.0,
+                    why: ", that is -accel / (f1 - fmin), for a concave start"
+                },
+                "`shape` must be greater than -13.3333, that is -accel / (f1 - fmin), for a concave start (got -20)",
+            ),
+            (
+                Error::NotAtLeast {
+                    key: Key::F2,
+                    value: 300.0,
+                    other: Key::F1,
+                    other_value: 400.0
+                },
+                "`f2` must be at least `f1` (got 300 < 400)",
+            ),
+            (
+                Error::NotWhole {
+                    key: Key::Fmin,
+                    value: 500.5
+                },
+                "`fmin` must be a whole number with `arithmetic = integer` (got 500.5)",
+            ),
+            (
+                Error::IntegerOverflow {
+                    key: Key::Fmin,
+                    expression: "f0*f0",
+                    value: 4_294_836_225,
+                    max: 2_147_483_647
+                },
+                "`fmin` overflows the integer `pulse()` code: `f0*f0` is 4294836225, more than 2147483647",
+            ),
+            (
+                Error::RampTooLong {
+                    key: Key::Tau,
+                    steps: 123_456.4,
+                    max: 65_536
+                },
+                "`tau` makes the ramp 123456 steps long; at most 65536 are allowed",
+            ),
+            (
+                Error::EmptySegment {
+                    index: 0,
+                    steps: 120
+                },
+                "segment 0 holds no step of the 120-step ramp; use fewer `segments`",
+            ),
+            (
+                Error::SegmentsNeedTime {
+                    discretization: Discretization::Index
+                },
+                "`segments` cuts the curve into equal-time pieces and needs `discretization = exact` (got `index`)",
+            ),
+            (Error::LenZero, "`len` must be at least 1 (got 0)"),
+            (
+                Error::LenTooLarge {
+                    len: 65_537,
+                    max: 65_536
+                },
+                "`len` must be at most 65536 (got 65537)"
+            ),
+            (
+                Error::TimerZero,
+                "`timer_hz` must be greater than 0 (got 0)"
+            ),
+            (
+                Error::TicksPerStep { value: 3 },
+                "`ticks_per_step` must be 1 or 2 (got 3)"
+            ),
+            (
+                Error::Unsupported {
+                    key: Key::Arithmetic,
+                    value: "f32",
+                    applies: "with `discretization = index`"
+                },
+                "`arithmetic = f32` applies only with `discretization = index`",
+            ),
+            (
+                Error::PeriodOverflow {
+                    index: 0,
+                    ticks: 99_980.0,
+                    word: Word::U16,
+                    timer_hz: 10_000_000,
+                    lowest_hz: 152.590218
+                },
+                "entry 0 is 99980 ticks, more than `word = u16` holds (65535); at `timer_hz = 10000000` the lowest step frequency that fits is 152.59 Hz",
+            ),
+            (
+                Error::PeriodZero {
+                    index: 999,
+                    highest_hz: 10_000_000.0
+                },
+                "entry 999 rounds to 0 ticks; the timer resolves step frequencies up to 10000000 Hz",
+            ),
+            (
+                Error::BufferLength {
+                    expected: 1000,
+                    got: 10
+                },
+                "the buffer holds 10 entries but the table has `len = 1000`",
+            ),
+            (
+                Error::WordMismatch {
+                    expected: Word::U16,
+                    got: Word::U32
+                },
+                "the buffer holds `u32` entries but the spec has `word = u16`",
+            ),
+            (
+                Error::NoConvergence {
+                    index: 7,
+                    iterations: 100
+                },
+                "the pulse time of step 7 did not converge within 100 iterations",
+            ),
+        ]
+    }
+
+    fn covered(e: &Error) -> usize {
+        match e {
+            Error::NotFinite { .. } => 0,
+            Error::NotPositive { .. } => 1,
+            Error::TooLarge { .. } => 2,
+            Error::NotGreater { .. } => 3,
+            Error::Zero { .. } => 4,
+            Error::TooSmall { .. } => 5,
+            Error::NotWhole { .. } => 6,
+            Error::IntegerOverflow { .. } => 7,
+            Error::RampTooLong { .. } => 8,
+            Error::EmptySegment { .. } => 9,
+            Error::SegmentsNeedTime { .. } => 10,
+            Error::LenZero => 11,
+            Error::LenTooLarge { .. } => 12,
+            Error::TimerZero => 13,
+            Error::TicksPerStep { .. } => 14,
+            Error::Unsupported { .. } => 15,
+            Error::PeriodOverflow { .. } => 16,
+            Error::PeriodZero { .. } => 17,
+            Error::BufferLength { .. } => 18,
+            Error::WordMismatch { .. } => 19,
+            Error::NoConvergence { .. } => 20,
+            Error::NotAtLeast { .. } => 21,
+        }
+    }
+
+    #[test]
+    fn every_variant_has_a_pinned_message() {
+        let examples = examples();
+        let mut seen = [false; 22];
+        for (error, message) in &examples {
+            assert_eq!(error.to_string(), *message);
+            seen[covered(error)] = true;
+            // Messages are lowercase with no trailing period.
+            assert!(!message.ends_with('.'), "{message}");
+            assert!(
+                !message.starts_with(|c: char| c.is_ascii_uppercase()),
+                "{message}"
+            );
+        }
+        assert!(
+            seen.iter().all(|s| *s),
+            "a variant has no example: {seen:?}"
+        );
+    }
+
+    #[test]
+    fn errors_blame_the_key_to_point_at() {
+        assert_eq!(Error::LenZero.key(), Some(Key::Len));
+        assert_eq!(Error::TimerZero.key(), Some(Key::TimerHz));
+        assert_eq!(
+            Error::EmptySegment { index: 0, steps: 1 }.key(),
+            Some(Key::Segments)
+        );
+        assert_eq!(
+            Error::BufferLength {
+                expected: 1,
+                got: 2
+            }
+            .key(),
+            None
+        );
+    }
+}

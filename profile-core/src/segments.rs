@@ -33,7 +33,8 @@ pub struct SegmentFigures {
 
 impl Spec {
     /// Checks that the spec can be cut into `segments` equal-time segments
-    /// (a valid spec in time, `discretization = exact`, at least one segment).
+    /// (a valid spec in time, `discretization = exact`, from one segment up
+    /// to one per step).
     pub fn check_segments(&self, segments: u32) -> Result<(), Error> {
         self.validate()?;
         if self.discretization != Discretization::Exact {
@@ -44,6 +45,16 @@ impl Spec {
         if segments == 0 {
             return Err(Error::Zero {
                 key: crate::Key::Segments,
+            });
+        }
+        // Every segment must hold a step; checked here, before any buffer
+        // of `segments` pairs is allocated.
+        let steps = self.len();
+        if segments > steps {
+            return Err(Error::TooLarge {
+                key: crate::Key::Segments,
+                value: segments as f64,
+                max: steps as f64,
             });
         }
         Ok(())

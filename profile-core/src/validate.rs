@@ -107,7 +107,7 @@ fn curve(spec: &Spec) -> Result<(), Error> {
                             key: Key::Len,
                             value: n as f64,
                             min: 1.0,
-                            why: "for a linear ramp over the index (`len` = trans + 1 entries, the last at `fmax`)",
+                            why: " for a linear ramp over the index: its `len` entries span trans = len - 1 steps",
                         });
                     }
                 }
@@ -122,11 +122,11 @@ fn curve(spec: &Spec) -> Result<(), Error> {
             greater(Key::F1, z.f1, Key::Fmin, z.fmin)?;
             finite(Key::F2, z.f2)?;
             if z.f2 < z.f1 {
-                return Err(Error::TooSmall {
+                return Err(Error::NotAtLeast {
                     key: Key::F2,
                     value: z.f2,
-                    min: z.f1,
-                    why: "or equal to `f1`",
+                    other: Key::F1,
+                    other_value: z.f1,
                 });
             }
             greater(Key::Fmax, z.fmax, Key::F2, z.f2)?;
@@ -141,7 +141,7 @@ fn curve(spec: &Spec) -> Result<(), Error> {
                     key: Key::Shape,
                     value: z.shape,
                     min: min_shape,
-                    why: "(`-accel / (f1 - fmin)`: a concave start must not exceed `accel` at `f1`)",
+                    why: ", that is -accel / (f1 - fmin), for a concave start",
                 });
             }
             derived_len(spec, Key::Accel)?;
@@ -181,7 +181,7 @@ fn combination(spec: &Spec) -> Result<(), Error> {
                 return Err(Error::Unsupported {
                     key: Key::Arithmetic,
                     value: "integer",
-                    applies: "to `curve = linear`, as the constant-acceleration article's integer `pulse()` code",
+                    applies: "to `curve = linear`, as the constant-acceleration article's integer `pulse()` code computes",
                 });
             };
             if !index {
