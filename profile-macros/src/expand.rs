@@ -58,3 +58,234 @@ fn try_period_table(input: TokenStream) -> syn::Result<TokenStream> {
         )
     })
 }
+
+#[cfg(test)]
+mod tests {
+    //! Fuzzing of the macro's front door without nightly: random token
+    //! streams through `period_table!`'s expansion, called through
+    //! `proc_macro2`. It must return tokens (a table or `compile_error!`s),
+    //! never panic. `FUZZ_CASES` sets the number of cases (default 5000).
+
+    use super::*;
+
+    const PIECES: &[&str] = &[
+        "curve",
+        "len",
+        "fmin",
+        "fmax",
+        "flexible",
+        "f_inf",
+        "tau",
+        "accel",
+        "f1",
+        "f2",
+        "shape",
+        "jerk",
+        "timer_hz",
+        "word",
+        "ticks_per_step",
+        "discretization",
+        "rounding",
+        "arithmetic",
+        "segments",
+        "speed",
+        "sigmoid",
+        "exponential",
+        "linear",
+        "three_stage",
+        "jerk_limited",
+        "index",
+        "exact",
+        "left_endpoint",
+        "truncate",
+        "nearest",
+        "diffuse",
+        "f32",
+        "f64",
+        "integer",
+        "u16",
+        "u32",
+        "=",
+        "=",
+        "=",
+        ",",
+        ",",
+        ",",
+        "-",
+        "0",
+        "1",
+        "2",
+        "3",
+        "8",
+        "120",
+        "200",
+        "500",
+        "1000",
+        "64000",
+        "5000",
+        "15000",
+        "10_000_000",
+        "1_000_000",
+        "65537",
+        "4294967296",
+        "1e999",
+        "0.5",
+        "-500",
+        "1e-300",
+        "\"u32\"",
+        "\"x\"",
+        "'c'",
+        "true",
+        "(1)",
+        "[2]",
+        "{}",
+        "::",
+        ";",
+        "#",
+        "b\"x\"",
+        "340282366920938463463374607431768211456",
+    ];
+
+    const KEYS: &[&str] = &[
+        "curve",
+        "len",
+        "fmin",
+        "fmax",
+        "flexible",
+        "f_inf",
+        "tau",
+        "accel",
+        "f1",
+        "f2",
+        "shape",
+        "jerk",
+        "timer_hz",
+        "word",
+        "ticks_per_step",
+        "discretization",
+        "rounding",
+        "arithmetic",
+        "segments",
+        "fmni",
+    ];
+
+    const VALUES: &[&str] = &[
+        "sigmoid",
+        "exponential",
+        "linear",
+        "three_stage",
+        "jerk_limited",
+        "index",
+        "exact",
+        "left_endpoint",
+        "truncate",
+        "nearest",
+        "diffuse",
+        "f32",
+        "integer",
+        "u16",
+        "u32",
+        "0",
+        "1",
+        "2",
+        "3",
+        "8",
+        "100",
+        "120",
+        "200",
+        "500",
+        "1000",
+        "5000",
+        "15000",
+        "64000",
+        "1e999",
+        "-500",
+        "0.5",
+        "2.5",
+        "65537",
+        "1e-300",
+        "\"u32\"",
+    ];
+
+    struct Rng(u64);
+
+    impl Rng {
+        fn below(&mut self, n: usize) -> usize {
+            self.0 ^= self.0 >> 12;
+            self.0 ^= self.0 << 25;
+            self.0 ^= self.0 >> 27;
+            (self.0.wrapping_mul(0x2545_f491_4f6c_dd1d) % n as u64) as usize
+        }
+    }
+
+    #[test]
+    fn random_token_streams_never_panic() {
+        let n: usize = std::env::var("FUZZ_CASES")
+            .ok()
+            .and_then(|v| v.parse().ok())
+            .unwrap_or(5000);
+        let mut rng = Rng(0x5eed_0003);
+        let (mut tables, mut errors) = (0, 0);
+        for case in 0..n {
+            let text = if case % 2 == 0 {
+                let words: Vec<&str> = (0..rng.below(24))
+                    .map(|_| PIECES[rng.below(PIECES.len())])
+                    .collect();
+                words.join(" ")
+            } else {
+                // A valid call with a few random edits (a value replaced, a
+                // key dropped or added), to reach validation and generation.
+                let mut pairs: Vec<(String, String)> = [
+                    ("curve", "linear"),
+                    ("fmin", "500"),
+                    ("fmax", "5000"),
+                    ("len", "200"),
+                    ("timer_hz", "1_000_000"),
+                ]
+                .iter()
+                .map(|(k, v)| (k.to_string(), v.to_string()))
+                .collect();
+                for _ in 0..rng.below(4) {
+                    let value = VALUES[rng.below(VALUES.len())].to_string();
+                    match rng.below(3) {
+                        0 => {
+                            let i = rng.below(pairs.len().max(1));
+                            if let Some(p) = pairs.get_mut(i) {
+                                p.1 = value;
+                            }
+                        }
+                        1 if !pairs.is_empty() => {
+                            pairs.remove(rng.below(pairs.len()));
+                        }
+                        _ => pairs.push((KEYS[rng.below(KEYS.len())].to_string(), value)),
+                    }
+                }
+                let pairs: Vec<String> = pairs.iter().map(|(k, v)| format!("{k} = {v}")).collect();
+                pairs.join(", ")
+            };
+            let Ok(tokens) = text.parse::<TokenStream>() else {
+                continue;
+            };
+            let out = std::panic::catch_unwind(|| period_table(tokens))
+                .unwrap_or_else(|_| panic!("case {case}: expansion panicked on `{text}`"));
+            if out.to_string().contains("compile_error") {
+                errors += 1;
+            } else {
+                tables += 1;
+            }
+        }
+        println!("fuzz: {n} token streams, {tables} tables, {errors} compile errors");
+    }
+
+    #[test]
+    fn a_valid_call_expands_to_an_array() {
+        let tokens: TokenStream =
+            "curve = linear, fmin = 500, fmax = 5000, len = 3, timer_hz = 1_000_000"
+                .parse()
+                .unwrap();
+        // a = (5000² - 500²) / (2 * 3) = 4.125e6 Hz/s; edges at
+        // t(k) = 2k / (500 + sqrt(500² + 2 a k)) = 585.6, 870.9, 1090.9 µs,
+        // rounded to 586, 871, 1091 ticks.
+        assert_eq!(period_table(tokens).to_string(), "[586u16 , 285 , 220]");
+    }
+}
