@@ -11,6 +11,10 @@
 # its source (the build a user waits for while editing). A third crate
 # expands the largest table allowed (65 536 entries) with period_table!.
 set -euo pipefail
+command -v bc >/dev/null && [ -x /usr/bin/time ] || {
+    echo "needs bc and GNU time: apt-get install -y bc time" >&2
+    exit 1
+}
 root="$(cd "$(dirname "$0")/.." && pwd)"
 work="$root/target/build-cost"
 rm -rf "$work"
@@ -64,11 +68,13 @@ fn main() { println!("{}", T[0]); }' "$dep"
 make_crate largest-literal "static T: [u32; 65536] = $(cd "$root" && printf '[defaults]\n[profiles.t]\ncurve = "sigmoid"\nlen = 65536\nfmin = 500\nfmax = 64000\nflexible = 8\ntimer_hz = 100_000_000\nword = "u32"\n' > "$work/largest.toml" && cargo run -q --example emit -- "$work/largest.toml" | sed -n 's/^    pub static PERIODS: \[u32; 65536\] = \(.*\);$/\1/p');
 fn main() { println!(\"{}\", T[0]); }" ""
 
+# Wall time of a command in a directory; its peak resident memory (of the
+# largest process, rustc) goes to $work/peak-kb.
 seconds() { # dir, command...
     local dir=$1; shift
     local start end
     start=$(date +%s.%N)
-    (cd "$dir" && "$@" >/dev/null 2>&1)
+    (cd "$dir" && /usr/bin/time -f '%M' -o "$work/peak-kb" "$@" >/dev/null 2>&1)
     end=$(date +%s.%N)
     echo "$end - $start" | bc
 }
@@ -79,6 +85,7 @@ for c in with-macro literal largest largest-literal; do
     clean=$(seconds "$work/$c" cargo build)
     touch "$work/$c/src/main.rs" "$toml"
     rebuild=$(seconds "$work/$c" cargo build)
+    printf -v "peak_${c//-/_}" '%s' "$(cat "$work/peak-kb")"
     printf -v "clean_${c//-/_}" '%s' "$clean"
     printf -v "rebuild_${c//-/_}" '%s' "$rebuild"
 done
@@ -92,3 +99,4 @@ echo "Largest table, 65536 entries (period_table!, unoptimised proc macro):"
 printf '  %-34s %8.2f s clean, %6.2f s rebuild\n' "period_table!" "$clean_largest" "$rebuild_largest"
 printf '  %-34s %8.2f s clean, %6.2f s rebuild\n' "literal array" "$clean_largest_literal" "$rebuild_largest_literal"
 printf '  expansion adds %.2f s to a rebuild\n' "$(echo "$rebuild_largest - $rebuild_largest_literal" | bc)"
+printf '  peak memory of the rebuild: %d MiB with the macro, %d MiB for the literal\n' $((peak_largest / 1024)) $((peak_largest_literal / 1024))
