@@ -103,6 +103,12 @@ struct Cursor {
 }
 
 impl Cursor {
+    const ZERO: Cursor = Cursor {
+        pos: 0,
+        entry: 0,
+        within: 0,
+    };
+
     /// The cursor at step `pos`, or `None` past the end or on an empty ramp.
     fn at<W: TableWord>(ramp: &Ramp<'_, W>, pos: u32) -> Option<Cursor> {
         match *ramp {
@@ -136,6 +142,7 @@ impl Cursor {
         }
     }
 
+    #[inline(always)]
     fn entry_len<W: TableWord>(ramp: &Ramp<'_, W>, entry: u32) -> u32 {
         match *ramp {
             Ramp::Steps { .. } => ramp.hold(),
@@ -143,6 +150,7 @@ impl Cursor {
         }
     }
 
+    #[inline(always)]
     fn period<W: TableWord>(&self, ramp: &Ramp<'_, W>) -> W {
         let found = match *ramp {
             Ramp::Steps { periods, .. } => periods.get(self.entry as usize).copied(),
@@ -152,6 +160,7 @@ impl Cursor {
     }
 
     /// One step towards the fast end; stays put at the last step.
+    #[inline(always)]
     fn forward<W: TableWord>(&mut self, ramp: &Ramp<'_, W>, last: u32) {
         if self.pos >= last {
             return;
@@ -168,6 +177,7 @@ impl Cursor {
     }
 
     /// One step towards the slow end; stays put at step 0.
+    #[inline(always)]
     fn backward<W: TableWord>(&mut self, ramp: &Ramp<'_, W>) {
         if self.pos == 0 {
             return;
@@ -196,9 +206,17 @@ fn ramp_entries<W: TableWord>(ramp: &Ramp<'_, W>) -> usize {
     }
 }
 
-/// The first cursor of a ramp whose first entries may be empty segments.
-fn first<W: TableWord>(ramp: &Ramp<'_, W>) -> Option<Cursor> {
-    Cursor::at(ramp, 0)
+/// The shortest period of a ramp (O(n), once per player).
+fn fastest<W: TableWord>(ramp: &Ramp<'_, W>) -> u32 {
+    match *ramp {
+        Ramp::Steps { periods, .. } => periods.iter().map(|p| p.into_ticks()).min(),
+        Ramp::Segments(pairs) => pairs
+            .iter()
+            .filter(|p| p.1.into_ticks() > 0)
+            .map(|p| p.0.into_ticks())
+            .min(),
+    }
+    .unwrap_or(0)
 }
 
 /// Plays moves from an acceleration ramp and a deceleration ramp.
@@ -209,12 +227,16 @@ pub struct Player<'a, W> {
     accel_last: u32,
     decel_last: u32,
     /// Where the acceleration side is, and where it is heading.
-    acc: Option<Cursor>,
+    acc: Cursor,
     cruise: u32,
     /// The deceleration side, at `min(remaining - 1, decel_last)`.
-    dec: Option<Cursor>,
+    dec: Cursor,
     remaining: u32,
     last_period: u32,
+    /// The deceleration side has taken over: it plays to the end.
+    decelerating: bool,
+    /// The deceleration ramp's shortest period: no move runs faster.
+    decel_fastest: u32,
 }
 
 impl<'a, W: TableWord> Player<'a, W> {
@@ -233,26 +255,33 @@ impl<'a, W: TableWord> Player<'a, W> {
             decel,
             accel_last,
             decel_last,
-            acc: None,
+            acc: Cursor::ZERO,
             cruise: accel_last,
-            dec: None,
+            dec: Cursor::ZERO,
             remaining: 0,
             last_period: 0,
+            decelerating: false,
+            decel_fastest: fastest(&decel),
         }
     }
 
     /// Starts a move of `steps` steps from rest, cruising at the top of the
     /// acceleration ramp. A move on an empty ramp has no steps.
     pub fn start(&mut self, steps: u32) {
-        self.acc = first(&self.accel);
         self.cruise = self.accel_last;
-        let ok = self.acc.is_some() && self.decel.len_steps() > 0;
-        self.remaining = if ok { steps } else { 0 };
-        self.dec = match self.remaining {
-            0 => None,
-            r => Cursor::at(&self.decel, (r - 1).min(self.decel_last)),
+        self.remaining = 0;
+        // A move on an empty ramp has no steps.
+        let (Some(acc), Some(dec)) = (
+            Cursor::at(&self.accel, 0),
+            Cursor::at(&self.decel, steps.saturating_sub(1).min(self.decel_last)),
+        ) else {
+            return;
         };
+        self.acc = acc;
+        self.dec = dec;
+        self.remaining = steps;
         self.last_period = 0;
+        self.decelerating = false;
     }
 
     /// Cruises at step `pos` of the acceleration ramp (the entry index for a
@@ -264,8 +293,9 @@ impl<'a, W: TableWord> Player<'a, W> {
 
     /// Decelerates from the current speed to rest: the deceleration ramp is
     /// entered at its entry nearest the current period that is not faster,
-    /// and the move ends when the ramp's slowest entry has played. A stop
-    /// never lengthens a move.
+    /// and the move ends when the ramp's slowest entry has played (at once,
+    /// when the motor already runs slower than that entry). A stop never
+    /// lengthens a move.
     pub fn stop(&mut self) {
         if self.remaining == 0 {
             return;
@@ -278,6 +308,11 @@ impl<'a, W: TableWord> Player<'a, W> {
         // Largest position whose period is not faster than the current one:
         // periods fall along the ramp, so search for the boundary.
         let current = self.last_period;
+        if self.period_dec(0) < current {
+            // Already slower than the ramp's slowest entry: at rest now.
+            self.remaining = 0;
+            return;
+        }
         let (mut lo, mut hi) = (0u32, self.decel_last);
         if self.period_dec(hi) >= current {
             lo = hi;
@@ -291,10 +326,25 @@ impl<'a, W: TableWord> Player<'a, W> {
                 }
             }
         }
+        // Tables rounded by diffusion may tie by a tick: take the last entry
+        // of the run that still qualifies (a bounded look past the boundary).
+        let mut probe = lo;
+        for _ in 0..16 {
+            if probe >= self.decel_last || self.period_dec(probe + 1) < current {
+                break;
+            }
+            probe += 1;
+        }
+        let lo = probe;
         let needed = lo + 1;
         if needed < self.remaining {
             self.remaining = needed;
-            self.dec = Cursor::at(&self.decel, lo);
+            if let Some(dec) = Cursor::at(&self.decel, lo) {
+                self.dec = dec;
+                self.decelerating = true;
+            } else {
+                self.remaining = 0;
+            }
         }
     }
 
@@ -313,34 +363,50 @@ impl<'a, W: TableWord> Player<'a, W> {
     }
 
     /// The period of the next step, in ticks, or `None` when the move is done.
+    ///
+    /// Until the deceleration side is within reach (the steps left fit its
+    /// ramp), the acceleration side plays alone, exactly as its table reads.
+    /// From then on each step compares the two; as soon as the deceleration
+    /// side is the slower, it takes over and plays its ramp to the end,
+    /// again exactly as its table reads.
     pub fn next_period(&mut self) -> Option<W> {
         if self.remaining == 0 {
             return None;
         }
-        let (acc, dec) = match (self.acc.as_mut(), self.dec.as_mut()) {
-            (Some(a), Some(d)) => (a, d),
-            _ => {
-                self.remaining = 0;
-                return None;
+        // Steps after this one; the deceleration side stands at
+        // `min(after, decel_last)`.
+        let after = self.remaining - 1;
+        self.remaining = after;
+        let period = if self.decelerating {
+            self.dec.period(&self.decel)
+        } else {
+            let pa = self.acc.period(&self.accel);
+            let take_decel = if after <= self.decel_last {
+                let pd = self.dec.period(&self.decel);
+                self.decelerating = pd.into_ticks() >= pa.into_ticks();
+                self.decelerating.then_some(pd)
+            } else if self.decel_fastest > pa.into_ticks() {
+                // The deceleration ramp cannot start from this speed: go no
+                // faster than its top (its entries may tie by a tick near the
+                // top, so compare with its fastest entry).
+                Some(self.dec.period(&self.decel))
+            } else {
+                None
+            };
+            match take_decel {
+                Some(pd) => pd,
+                None => {
+                    if self.acc.pos < self.cruise {
+                        self.acc.forward(&self.accel, self.accel_last);
+                    } else if self.acc.pos > self.cruise {
+                        self.acc.backward(&self.accel);
+                    }
+                    pa
+                }
             }
         };
-        let pa = acc.period(&self.accel);
-        let pd = dec.period(&self.decel);
-        let period = if pa.into_ticks() >= pd.into_ticks() {
-            pa
-        } else {
-            pd
-        };
-        self.remaining -= 1;
-        // Acceleration side: one step towards the cruise position.
-        if acc.pos < self.cruise {
-            acc.forward(&self.accel, self.accel_last);
-        } else if acc.pos > self.cruise {
-            acc.backward(&self.accel);
-        }
-        // Deceleration side: follows the steps that remain.
-        if self.remaining > 0 && self.remaining - 1 < dec.pos {
-            dec.backward(&self.decel);
+        if after > 0 && after - 1 < self.dec.pos {
+            self.dec.backward(&self.decel);
         }
         self.last_period = period.into_ticks();
         Some(period)

@@ -94,7 +94,8 @@ proptest! {
         // other's top speed (the cruise speed is the slower of the two tops).
         let (a, d) = (expand(&accel, hold), expand(&decel, hold));
         if steps as usize >= a.len() + d.len() {
-            let (a_top, d_top) = (*a.last().unwrap(), *d.last().unwrap());
+            let a_top = *a.last().unwrap();
+            let d_top = *d.iter().min().unwrap();
             let head: Vec<u32> = a.iter().map(|&v| v.max(d_top)).collect();
             prop_assert_eq!(&periods[..a.len()], &head[..]);
             let tail: Vec<u32> = d.iter().rev().map(|&v| v.max(a_top)).collect();
@@ -218,4 +219,44 @@ fn stop_enters_the_deceleration_table_at_the_current_speed() {
     player.stop();
     periods.extend(std::iter::from_fn(|| player.next_period()));
     assert_eq!(periods, [1000, 800, 600, 500, 700, 1000, 1500, 2000]);
+}
+
+/// Tables rounded by diffusion tie by a tick near the top (`..., 156, 157,
+/// 156`): a long move must still play them exactly as written, up and down,
+/// so their pulse edges keep their half-tick accuracy.
+#[test]
+fn diffused_tables_play_exactly() {
+    use profile_core::{Curve, Sigmoid, Spec, Timer};
+    let spec = Spec::new(
+        Curve::Sigmoid(Sigmoid {
+            fmin: 500.0,
+            fmax: 64_000.0,
+            flexible: 8.0,
+            len: 1000,
+        }),
+        Timer::new(10_000_000),
+    );
+    let mut table = [0u16; 1000];
+    let figures = spec.generate(&mut table).unwrap();
+    assert!(
+        table.windows(2).any(|w| w[1] > w[0]),
+        "the table should have diffusion ties for this test to mean something"
+    );
+    let cruise = 500;
+    let mut player = Player::new(Ramp::steps(&table));
+    player.start(2000 + cruise);
+    let played: Vec<u16> = std::iter::from_fn(|| player.next_period()).collect();
+    assert_eq!(&played[..1000], &table[..]);
+    let down: Vec<u16> = table.iter().rev().copied().collect();
+    assert_eq!(&played[1000 + cruise as usize..], &down[..]);
+    assert!(
+        played[1000..1000 + cruise as usize]
+            .iter()
+            .all(|&p| p == table[999])
+    );
+    let total: u64 = played.iter().map(|&p| p as u64).sum();
+    assert_eq!(
+        total,
+        2 * figures.total_ticks + cruise as u64 * table[999] as u64
+    );
 }

@@ -64,9 +64,11 @@ pub enum Event {
 }
 
 /// The move as the player's contract describes it, read off the tables with
-/// no cursor: each step plays the slower of the acceleration ramp at the
-/// acceleration position (which walks one step per step towards the cruise
-/// position) and the deceleration ramp at the steps that remain.
+/// no cursor. The acceleration ramp plays at its position (which walks one
+/// step per step towards the cruise position), no faster than the
+/// deceleration ramp's fastest entry, until the deceleration ramp at the
+/// steps that remain is within reach and not faster; from then on the
+/// deceleration ramp plays to the end. Both play exactly as their tables read.
 struct Model<'a> {
     accel: Table<'a>,
     decel: Table<'a>,
@@ -74,11 +76,17 @@ struct Model<'a> {
     cruise: u32,
     remaining: u32,
     last: u16,
+    decelerating: bool,
+    decel_fastest: u16,
 }
 
 impl<'a> Model<'a> {
     fn new(accel: Table<'a>, decel: Table<'a>, steps: u32) -> Self {
         let top = accel.len_steps() - 1;
+        let decel_fastest = (0..decel.len_steps())
+            .map(|p| decel.at(p))
+            .min()
+            .unwrap_or(0);
         Model {
             accel,
             decel,
@@ -86,6 +94,8 @@ impl<'a> Model<'a> {
             cruise: top,
             remaining: steps,
             last: 0,
+            decelerating: false,
+            decel_fastest,
         }
     }
 
@@ -98,6 +108,11 @@ impl<'a> Model<'a> {
                 true
             }
             Event::Stop if self.last == 0 => {
+                self.remaining = 0;
+                chosen == 0
+            }
+            Event::Stop if self.decel.at(0) < self.last => {
+                // Already slower than the ramp's slowest entry: at rest now.
                 self.remaining = 0;
                 chosen == 0
             }
@@ -117,6 +132,9 @@ impl<'a> Model<'a> {
                 } else {
                     chosen == self.remaining && (self.remaining - 1..=top).any(boundary)
                 };
+                if chosen < self.remaining {
+                    self.decelerating = true;
+                }
                 self.remaining = chosen;
                 ok
             }
@@ -127,14 +145,28 @@ impl<'a> Model<'a> {
         if self.remaining == 0 {
             return None;
         }
-        let decel_pos = (self.remaining - 1).min(self.decel.len_steps() - 1);
-        let period = self.accel.at(self.pos).max(self.decel.at(decel_pos));
-        self.remaining -= 1;
-        if self.pos < self.cruise {
-            self.pos += 1;
-        } else if self.pos > self.cruise {
-            self.pos -= 1;
-        }
+        let last = self.decel.len_steps() - 1;
+        let after = self.remaining - 1;
+        self.remaining = after;
+        let pd = self.decel.at(after.min(last));
+        let period = if self.decelerating {
+            pd
+        } else {
+            let pa = self.accel.at(self.pos);
+            if after <= last && pd >= pa {
+                self.decelerating = true;
+                pd
+            } else if after > last && self.decel_fastest > pa {
+                pd
+            } else {
+                if self.pos < self.cruise {
+                    self.pos += 1;
+                } else if self.pos > self.cruise {
+                    self.pos -= 1;
+                }
+                pa
+            }
+        };
         self.last = period;
         Some(period)
     }
@@ -350,23 +382,15 @@ pub fn run(timer: &mut SYST, report: &mut Report) {
     report.equal("held ends at rest", p.last.into(), rest.into());
 
     // The default mode: diffused rounding keeps every pulse edge within half
-    // a tick, so the table is not monotone near the top (156, 157, 156, ...).
-    // Where the other side of the player holds the top period, entries faster
-    // than it are played at it.
+    // a tick, so the table is not monotone near the top (156, 157, 156, ...);
+    // the player still plays it exactly as written.
     let a = &sigmoid_exact::PERIODS;
     let len = sigmoid_exact::LEN as u32;
     let top = sigmoid_exact::LAST_TICKS as u16;
     let rest = sigmoid_exact::FIRST_TICKS as u16;
     let exact = Table::Steps(a, 1);
-    let ramp_ticks = floored(a, top);
-    hprintln!(
-        "  note: {} entries of sigmoid_exact are faster than LAST_TICKS = {}; \
-         a full ramp plays {} ticks, TOTAL_TICKS = {}",
-        a.iter().filter(|&&x| x < top).count(),
-        top,
-        ramp_ticks,
-        sigmoid_exact::TOTAL_TICKS
-    );
+    let ramp_ticks = sigmoid_exact::TOTAL_TICKS;
+    report.equal("sigmoid_exact ramp = TOTAL_TICKS", sum(a), ramp_ticks);
     let cruise = 3000;
     let p = play(
         &Move {
@@ -381,7 +405,7 @@ pub fn run(timer: &mut SYST, report: &mut Report) {
     );
     report.equal("trapezoid steps", p.steps.into(), (2 * len + cruise).into());
     report.equal(
-        "trapezoid ticks = 2 ramp + cruise LAST_TICKS",
+        "trapezoid ticks = 2 TOTAL_TICKS + cruise LAST_TICKS",
         p.ticks,
         2 * ramp_ticks + u64::from(cruise) * u64::from(top),
     );
@@ -401,13 +425,18 @@ pub fn run(timer: &mut SYST, report: &mut Report) {
         timer,
         report,
     );
-    let plateau = u64::from(steps - len - DECEL.len() as u32);
+    // Up the S-curve no faster than DECEL's fastest entry, cruise, then
+    // DECEL backwards.
+    let d_min = DECEL.iter().copied().min().unwrap_or(0);
+    let d_len = DECEL.len() as u32;
+    let expected = match a.iter().position(|&x| x < d_min) {
+        Some(cap) => {
+            sum(&a[..cap]) + u64::from(steps - cap as u32 - d_len) * u64::from(d_top) + sum(&DECEL)
+        }
+        None => sum(a) + u64::from(steps - len - d_len) * u64::from(top) + floored(&DECEL, top),
+    };
     report.equal("asymmetric steps", p.steps.into(), steps.into());
-    report.equal(
-        "asymmetric ticks",
-        p.ticks,
-        floored(a, d_top) + floored(&DECEL, top) + plateau * u64::from(top.max(d_top)),
-    );
+    report.equal("asymmetric ticks", p.ticks, expected);
     report.equal("asymmetric ends at rest", p.last.into(), DECEL[0].into());
 
     // Stop while cruising: down the whole ramp from the top.
@@ -496,8 +525,8 @@ pub fn run(timer: &mut SYST, report: &mut Report) {
         "cruise changes: ticks",
         p.ticks,
         2 * ramp_ticks
-            + 2 * floored(&a[slow as usize..], top)
-            + u64::from(at_500) * u64::from(a[slow as usize].max(top))
+            + 2 * sum(&a[slow as usize..])
+            + u64::from(at_500) * u64::from(a[slow as usize])
             + u64::from(at_top) * u64::from(top),
     );
     report.equal("cruise changes end at rest", p.last.into(), rest.into());
