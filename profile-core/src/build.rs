@@ -51,6 +51,7 @@ type Table = BTreeMap<Spanned<String>, Spanned<toml::Value>>;
 #[serde(deny_unknown_fields)]
 struct File {
     defaults: Option<Table>,
+    motors: Option<BTreeMap<Spanned<String>, Spanned<Table>>>,
     profiles: Option<Spanned<BTreeMap<Spanned<String>, Spanned<Table>>>>,
 }
 
@@ -155,9 +156,27 @@ fn value(v: &Spanned<toml::Value>) -> Value {
         toml::Value::String(s) => Value::Name(s.clone()),
         toml::Value::Boolean(_) => Value::Other("a boolean".into()),
         toml::Value::Datetime(_) => Value::Other("a date".into()),
-        toml::Value::Array(_) => Value::Other("an array".into()),
+        toml::Value::Array(items) => {
+            points(items).map_or_else(|| Value::Other("an array".into()), Value::Points)
+        }
         toml::Value::Table(_) => Value::Other("a table".into()),
     }
+}
+
+/// `[[x, y], ...]` as number pairs, if that is what the array holds.
+fn points(items: &[toml::Value]) -> Option<Vec<(f64, f64)>> {
+    let number = |v: &toml::Value| match v {
+        toml::Value::Integer(i) => Some(*i as f64),
+        toml::Value::Float(f) => Some(*f),
+        _ => None,
+    };
+    items
+        .iter()
+        .map(|item| match item.as_array().map(|a| a.as_slice()) {
+            Some([x, y]) => Some((number(x)?, number(y)?)),
+            _ => None,
+        })
+        .collect()
 }
 
 fn arg(key: &Spanned<String>, v: &Spanned<toml::Value>) -> Arg<Range<usize>> {
@@ -241,11 +260,12 @@ impl Profiles {
                 let hint = near
                     .map(|s| format!("did you mean `{s}`? "))
                     .unwrap_or_default();
-                let list: Vec<String> = names.map(|n| format!("`{n}`")).collect();
+                let list: Vec<String> =
+                    params::listed(Key::ALL).map(|n| format!("`{n}`")).collect();
                 diagnostics.push(Diagnostic {
                     loc: key.span(),
                     message: format!(
-                        "unknown key `{}` in `[defaults]`; {hint}expected one of {}",
+                        "unknown key `{}` in `[defaults]`; {hint}expected one of {}, or a motor's keys",
                         key.get_ref(),
                         list.join(", ")
                     ),
@@ -284,6 +304,60 @@ impl Profiles {
                 .into_iter()
                 .map(|(key, v)| arg(key, v))
                 .collect();
+            // A named motor's keys fill what the profile omits.
+            if let Some(m) = args.iter().find(|a| a.key == "motor").cloned() {
+                let found = match &m.value {
+                    Value::Name(n) => parsed
+                        .motors
+                        .as_ref()
+                        .and_then(|motors| motors.iter().find(|(k, _)| k.get_ref() == n)),
+                    _ => None,
+                };
+                match found {
+                    Some((_, table)) => {
+                        for (key, v) in sorted(table.get_ref()) {
+                            if !args.iter().any(|a| &a.key == key.get_ref()) {
+                                args.push(arg(key, v));
+                            }
+                        }
+                    }
+                    None => {
+                        let mut names: Vec<String> = parsed
+                            .motors
+                            .iter()
+                            .flatten()
+                            .map(|(k, _)| format!("`{}`", k.get_ref()))
+                            .collect();
+                        names.sort();
+                        let declared = if names.is_empty() {
+                            "the file declares no `[motors.NAME]` table".to_string()
+                        } else {
+                            format!("the file declares {}", names.join(", "))
+                        };
+                        let hint = match &m.value {
+                            Value::Name(n) => params::suggest(
+                                n,
+                                parsed
+                                    .motors
+                                    .iter()
+                                    .flatten()
+                                    .map(|(k, _)| k.get_ref().as_str()),
+                            )
+                            .map(|s| format!("did you mean `{s}`? "))
+                            .unwrap_or_default(),
+                            _ => String::new(),
+                        };
+                        diagnostics.push(Diagnostic {
+                            loc: m.value_loc.clone(),
+                            message: format!(
+                                "unknown motor {}; {hint}{declared}",
+                                m.value.quoted()
+                            ),
+                        });
+                        continue;
+                    }
+                }
+            }
             // Defaults fill what the profile omits, where its curve takes them.
             let curve = args
                 .iter()
@@ -315,13 +389,30 @@ impl Profiles {
                 Layout::Steps => spec.table().map(Generated::Steps),
                 Layout::Segments(n) => spec.segment_table(n).map(Generated::Segments),
             };
-            match table {
-                Ok(table) => profiles.push(Profile {
-                    name: name.get_ref().clone(),
-                    table,
-                }),
-                Err(e) => diagnostics.push(params::locate(&e, &args, &whole)),
-            }
+            let table = match table {
+                Ok(table) => table,
+                Err(e) => {
+                    diagnostics.push(params::locate(&e, &args, &whole));
+                    continue;
+                }
+            };
+            let torque = match &parsed.motor {
+                None => None,
+                Some(motor) => match motor.check(&spec, &table.step_periods()) {
+                    Ok(figures) => Some(figures),
+                    Err(e) => {
+                        let mut d = params::locate_motor(&e, &args, &whole);
+                        d.message = format!("profile `{}`: {}", name.get_ref(), d.message);
+                        diagnostics.push(d);
+                        continue;
+                    }
+                },
+            };
+            profiles.push(Profile {
+                name: name.get_ref().clone(),
+                table,
+                torque,
+            });
         }
         if !diagnostics.is_empty() {
             // In source order, and once: a mistake in `[defaults]` reaches

@@ -22,7 +22,20 @@ pub enum Generated {
 }
 
 impl Generated {
-    fn spec(&self) -> &crate::Spec {
+    /// One period per step: the table itself, or the segments expanded.
+    pub fn step_periods(&self) -> std::vec::Vec<u32> {
+        match self {
+            Generated::Steps(t) => t.periods.clone(),
+            Generated::Segments(t) => t
+                .pairs
+                .iter()
+                .flat_map(|&(p, c)| core::iter::repeat_n(p, c as usize))
+                .collect(),
+        }
+    }
+
+    /// The spec the table was computed from.
+    pub fn spec(&self) -> &crate::Spec {
         match self {
             Generated::Steps(t) => &t.spec,
             Generated::Segments(t) => &t.spec,
@@ -37,6 +50,8 @@ pub struct Profile {
     pub name: String,
     /// Its table.
     pub table: Generated,
+    /// Where its motor has the least torque to spare, when it names one.
+    pub torque: Option<crate::motor::TorqueFigures>,
 }
 
 /// Rust source of an array expression holding `periods` as `word`s:
@@ -76,8 +91,9 @@ pub fn rust_pairs(word: Word, pairs: &[(u32, u32)]) -> String {
 /// The figures of a table as `(NAME, Rust type, value, doc)`: the constants
 /// of a profile module and the `#define`s of a C header.
 fn constants(
-    table: &Generated,
+    profile: &Profile,
 ) -> std::vec::Vec<(&'static str, &'static str, String, &'static str)> {
+    let table = &profile.table;
     let spec = table.spec();
     let mut c = std::vec![
         (
@@ -171,6 +187,22 @@ fn constants(
             ]);
         }
     }
+    if let Some(t) = &profile.torque {
+        c.extend([
+            (
+                "TORQUE_MARGIN_NM",
+                "f64",
+                format!("{:?}", t.min_margin_nm),
+                "Smallest torque the motor has to spare over the ramp, in N·m.",
+            ),
+            (
+                "TORQUE_MARGIN_STEP",
+                "usize",
+                t.step.to_string(),
+                "The step where the torque margin is smallest.",
+            ),
+        ]);
+    }
     c
 }
 
@@ -238,6 +270,13 @@ pub fn rust_module(profile: &Profile) -> String {
         let _ = writeln!(out, "/// {line}");
     }
     // Unused figures are no reason for warnings in the user's crate.
+    if let Some(t) = &profile.torque {
+        let _ = writeln!(
+            out,
+            "///\n/// Motor: the smallest torque margin is {:.4} N·m at step {} ({:.1} Hz): {:.4} N·m needed of {:.4} N·m available.",
+            t.min_margin_nm, t.step, t.hz, t.needed_nm, t.available_nm
+        );
+    }
     let _ = writeln!(out, "#[allow(dead_code)]");
     let _ = writeln!(out, "pub mod {} {{", profile.name);
     match &profile.table {
@@ -268,7 +307,7 @@ pub fn rust_module(profile: &Profile) -> String {
             );
         }
     }
-    for (name, ty, value, doc) in constants(&profile.table) {
+    for (name, ty, value, doc) in constants(profile) {
         let _ = writeln!(out, "    /// {doc}");
         let _ = writeln!(out, "    pub const {name}: {ty} = {value};");
     }
@@ -313,7 +352,7 @@ pub fn c_header(guard: &str, source: &str, profiles: &[Profile]) -> String {
             let _ = writeln!(out, " *   {key} = {value}");
         }
         let _ = writeln!(out, " */");
-        for (name, ty, value, _) in constants(&p.table) {
+        for (name, ty, value, _) in constants(p) {
             let suffix = match ty {
                 "u64" => "ull",
                 "u32" | "usize" => "ul",

@@ -44,6 +44,26 @@ pub enum Key {
     Jerk,
     /// `segments`
     Segments,
+    /// `motor`
+    Motor,
+    /// `step_angle`
+    StepAngle,
+    /// `microsteps`
+    Microsteps,
+    /// `rotor_inertia`
+    RotorInertia,
+    /// `load_inertia`
+    LoadInertia,
+    /// `torque_curve`
+    TorqueCurve,
+    /// `friction`
+    Friction,
+    /// `damping`
+    Damping,
+    /// `safety`
+    Safety,
+    /// `max_start_hz`
+    MaxStartHz,
 }
 
 impl Key {
@@ -68,6 +88,29 @@ impl Key {
         Key::Rounding,
         Key::Arithmetic,
         Key::Segments,
+        Key::Motor,
+        Key::StepAngle,
+        Key::Microsteps,
+        Key::RotorInertia,
+        Key::LoadInertia,
+        Key::TorqueCurve,
+        Key::Friction,
+        Key::Damping,
+        Key::Safety,
+        Key::MaxStartHz,
+    ];
+
+    /// The keys that describe a motor (all but `motor` itself).
+    pub const MOTOR: &'static [Key] = &[
+        Key::StepAngle,
+        Key::Microsteps,
+        Key::RotorInertia,
+        Key::LoadInertia,
+        Key::TorqueCurve,
+        Key::Friction,
+        Key::Damping,
+        Key::Safety,
+        Key::MaxStartHz,
     ];
 
     /// The key as written by users.
@@ -92,6 +135,16 @@ impl Key {
             Key::Shape => "shape",
             Key::Jerk => "jerk",
             Key::Segments => "segments",
+            Key::Motor => "motor",
+            Key::StepAngle => "step_angle",
+            Key::Microsteps => "microsteps",
+            Key::RotorInertia => "rotor_inertia",
+            Key::LoadInertia => "load_inertia",
+            Key::TorqueCurve => "torque_curve",
+            Key::Friction => "friction",
+            Key::Damping => "damping",
+            Key::Safety => "safety",
+            Key::MaxStartHz => "max_start_hz",
         }
     }
 

@@ -11,6 +11,7 @@ use std::string::{String, ToString};
 use std::vec::Vec;
 
 use crate::error::{Error, Key};
+use crate::motor::{MAX_CURVE_POINTS, Motor, MotorError, TorqueCurve};
 use crate::spec::{
     Arithmetic, Curve, Discretization, Exponential, ExponentialExtent, JerkLimited, Linear,
     LinearExtent, MAX_LEN, Rounding, Sigmoid, Spec, ThreeStage, Timer, Word,
@@ -25,6 +26,8 @@ pub enum Value {
     Float(f64),
     /// A bare name or a string: `sigmoid`, `"u16"`.
     Name(String),
+    /// A list of `(x, y)` number pairs: `[(0, 0.4), (1000, 0.3)]`.
+    Points(Vec<(f64, f64)>),
     /// A value of a kind no key takes, described: `a boolean`, `an array`.
     Other(String),
 }
@@ -38,6 +41,7 @@ impl Value {
                 format!("the string `\"{n}\"` (write numbers without quotes)")
             }
             Value::Other(kind) => kind.clone(),
+            Value::Points(_) => "a list of points".to_string(),
             other => format!("`{other}`"),
         }
     }
@@ -49,6 +53,14 @@ impl core::fmt::Display for Value {
             Value::Int(v) => write!(f, "{v}"),
             Value::Float(v) => write!(f, "{v:?}"),
             Value::Name(v) | Value::Other(v) => f.write_str(v),
+            Value::Points(points) => {
+                f.write_str("[")?;
+                for (i, (x, y)) in points.iter().enumerate() {
+                    let sep = if i == 0 { "" } else { ", " };
+                    write!(f, "{sep}({x}, {y})")?;
+                }
+                f.write_str("]")
+            }
         }
     }
 }
@@ -94,6 +106,16 @@ const COMMON: &[Key] = &[
     Key::Rounding,
     Key::Arithmetic,
     Key::Segments,
+    Key::Motor,
+    Key::StepAngle,
+    Key::Microsteps,
+    Key::RotorInertia,
+    Key::LoadInertia,
+    Key::TorqueCurve,
+    Key::Friction,
+    Key::Damping,
+    Key::Safety,
+    Key::MaxStartHz,
 ];
 
 /// A curve's own keys: those it requires, and pairs of which exactly one is given.
@@ -139,6 +161,13 @@ pub fn keys_for(curve: &str) -> Vec<Key> {
                 || own.one_of.is_some_and(|pair| pair.contains(k))
         })
         .collect()
+}
+
+/// Keys to list in messages: a curve's and the common ones, not the motor's.
+pub(crate) fn listed(keys: &[Key]) -> impl Iterator<Item = &'static str> + '_ {
+    keys.iter()
+        .filter(|k| !Key::MOTOR.contains(k) && **k != Key::Motor)
+        .map(|k| k.name())
 }
 
 fn quoted_list<I: IntoIterator<Item = S>, S: AsRef<str>>(items: I) -> String {
@@ -205,6 +234,9 @@ pub struct Parsed {
     pub spec: Spec,
     /// Its layout.
     pub layout: Layout,
+    /// The motor it drives, when described: the table must be checked
+    /// against it with [`Motor::check`].
+    pub motor: Option<Motor>,
 }
 
 struct Collector<'a, L> {
@@ -405,9 +437,9 @@ pub fn spec_from_args_assuming<L: Clone>(
                     .map(|s| format!("did you mean `{s}`? "))
                     .unwrap_or_default();
                 let message = format!(
-                    "unknown key `{}`; {hint}expected one of {}",
+                    "unknown key `{}`; {hint}expected one of {}, or a motor's keys",
                     arg.key,
-                    quoted_list(valid.iter().map(|k| k.name()))
+                    quoted_list(listed(&valid))
                 );
                 c.at_arg(i, true, message);
             }
@@ -416,7 +448,7 @@ pub fn spec_from_args_assuming<L: Clone>(
                     if !valid.contains(&key) {
                         let message = format!(
                             "`{key}` does not apply to `curve = {n}`, which takes {}",
-                            quoted_list(valid.iter().map(|k| k.name()))
+                            quoted_list(listed(&valid))
                         );
                         c.at_arg(i, true, message);
                     }
@@ -556,6 +588,8 @@ pub fn spec_from_args_assuming<L: Clone>(
         }),
     };
 
+    let motor = motor_from_args(&mut c);
+
     if incomplete || !c.diagnostics.is_empty() {
         return Err(c.finish());
     }
@@ -580,7 +614,15 @@ pub fn spec_from_args_assuming<L: Clone>(
         }
         None => Layout::Steps,
     };
-    Ok(Parsed { spec, layout })
+    if let Some(m) = &motor {
+        m.validate()
+            .map_err(|e| std::vec![locate_motor(&e, args, whole)])?;
+    }
+    Ok(Parsed {
+        spec,
+        layout,
+        motor,
+    })
 }
 
 /// The spec's parameters as `(key, value)` pairs, in documentation order, as
@@ -637,6 +679,108 @@ pub fn describe(spec: &Spec) -> Vec<(Key, String)> {
         (Key::Arithmetic, spec.arithmetic.name().to_string()),
     ]);
     out
+}
+
+/// The motor the arguments describe, if any; problems go to the collector.
+fn motor_from_args<L: Clone>(c: &mut Collector<'_, L>) -> Option<Motor> {
+    let described = Key::MOTOR.iter().any(|k| c.find(*k).is_some());
+    if !described {
+        if let Some((i, arg)) = c.find(Key::Motor) {
+            let message = format!(
+                "`motor = {}` names no motor description: declare `[motors.{}]` in the \
+                 profiles file, or give the motor's keys (`step_angle`, `rotor_inertia`, \
+                 `torque_curve`, ...)",
+                arg.value, arg.value
+            );
+            c.at_arg(i, false, message);
+        }
+        return None;
+    }
+    let required = [Key::StepAngle, Key::RotorInertia, Key::TorqueCurve];
+    let missing: Vec<Key> = required
+        .iter()
+        .copied()
+        .filter(|k| c.find(*k).is_none())
+        .collect();
+    if !missing.is_empty() {
+        c.at_whole(format!(
+            "missing motor {} {}: a motor needs {}",
+            if missing.len() == 1 { "key" } else { "keys" },
+            quoted_list(missing.iter().map(|k| k.name())),
+            quoted_list(required.iter().map(|k| k.name()))
+        ));
+    }
+    let step_angle = c.float(Key::StepAngle);
+    let microsteps = c.ranged(
+        Key::Microsteps,
+        "an integer number of microsteps per full step",
+        |v| {
+            u32::try_from(v)
+                .ok()
+                .filter(|m| (1..=1024).contains(m))
+                .ok_or_else(|| format!("`microsteps` must be from 1 to 1024 (got {v})"))
+        },
+    );
+    let rotor_inertia = c.float(Key::RotorInertia);
+    let load_inertia = c.float(Key::LoadInertia);
+    let friction = c.float(Key::Friction);
+    let damping = c.float(Key::Damping);
+    let safety = c.float(Key::Safety);
+    let max_start_hz = c.float(Key::MaxStartHz);
+    let curve = match c.find(Key::TorqueCurve) {
+        None => None,
+        Some((i, arg)) => match &arg.value {
+            Value::Points(points) => match TorqueCurve::new(points) {
+                Some(curve) => Some(curve),
+                None => {
+                    let message = format!(
+                        "`torque_curve` must have from 1 to {MAX_CURVE_POINTS} points (got {})",
+                        points.len()
+                    );
+                    c.at_arg(i, false, message);
+                    None
+                }
+            },
+            other => {
+                let message = format!(
+                    "`torque_curve` expects a list of (step frequency in Hz, torque in N·m) \
+                     points such as `[(0, 0.4), (1000, 0.3)]`, got {}",
+                    other.quoted()
+                );
+                c.at_arg(i, false, message);
+                None
+            }
+        },
+    };
+    Some(Motor {
+        step_angle: step_angle?,
+        microsteps: microsteps.unwrap_or(1),
+        rotor_inertia: rotor_inertia?,
+        load_inertia: load_inertia.unwrap_or(0.0),
+        torque_curve: curve?,
+        friction: friction.unwrap_or(0.0),
+        damping: damping.unwrap_or(0.0),
+        safety: safety.unwrap_or(1.0),
+        max_start_hz,
+    })
+}
+
+/// Places a motor error: at the value of its key, at `motor` for a table the
+/// motor cannot follow (at `torque_curve` when no `motor` names it), or on
+/// `whole`.
+pub fn locate_motor<L: Clone>(error: &MotorError, args: &[Arg<L>], whole: &L) -> Diagnostic<L> {
+    let find = |k: Key| {
+        args.iter()
+            .find(|a| a.key == k.name())
+            .map(|a| a.value_loc.clone())
+    };
+    let loc = find(error.key())
+        .or_else(|| find(Key::TorqueCurve))
+        .unwrap_or_else(|| whole.clone());
+    Diagnostic {
+        loc,
+        message: error.to_string(),
+    }
 }
 
 /// Places a core error at the value of the key it blames (or on `whole`).
@@ -710,7 +854,7 @@ mod tests {
                 8,
                 "unknown key `flexibel`; did you mean `flexible`? expected one of `curve`, \
                      `len`, `fmin`, `fmax`, `flexible`, `timer_hz`, `word`, `ticks_per_step`, \
-                     `discretization`, `rounding`, `arithmetic`, `segments`"
+                     `discretization`, `rounding`, `arithmetic`, `segments`, or a motor's keys"
                     .to_string()
             )]
         );

@@ -39,6 +39,9 @@ fn parse_value(input: ParseStream, key: &Ident) -> syn::Result<(Value, Loc)> {
         let ident: Ident = input.parse()?;
         return Ok((Value::Name(ident.to_string()), ident.into_token_stream()));
     }
+    if input.peek(syn::token::Bracket) {
+        return parse_points(input, key);
+    }
     let minus: Option<Token![-]> = input.parse()?;
     let lit: Lit = input
         .parse()
@@ -53,6 +56,50 @@ fn parse_value(input: ParseStream, key: &Ident) -> syn::Result<(Value, Loc)> {
         _ => return Err(syn::Error::new_spanned(loc, expected())),
     };
     Ok((value, loc))
+}
+
+/// `[(x, y), ...]`: a list of number pairs, such as a torque curve.
+fn parse_points(input: ParseStream, key: &Ident) -> syn::Result<(Value, Loc)> {
+    let group: proc_macro2::Group = input.parse()?;
+    let loc = group.to_token_stream();
+    let expected =
+        || format!("`{key}` expects a list of number pairs, such as `[(0, 0.4), (1000, 0.3)]`");
+    let pairs = |content: ParseStream| -> syn::Result<Vec<(f64, f64)>> {
+        let mut points = Vec::new();
+        while !content.is_empty() {
+            let inner;
+            syn::parenthesized!(inner in content);
+            let x = number(&inner)?;
+            inner.parse::<Token![,]>()?;
+            let y = number(&inner)?;
+            let _: Option<Token![,]> = inner.parse()?;
+            if !inner.is_empty() {
+                return Err(inner.error("expected a pair"));
+            }
+            points.push((x, y));
+            if content.is_empty() {
+                break;
+            }
+            content.parse::<Token![,]>()?;
+        }
+        Ok(points)
+    };
+    let points = pairs
+        .parse2(group.stream())
+        .map_err(|_| syn::Error::new_spanned(&loc, expected()))?;
+    Ok((Value::Points(points), loc))
+}
+
+/// A number literal, possibly negative, as `f64`.
+fn number(input: ParseStream) -> syn::Result<f64> {
+    let minus: Option<Token![-]> = input.parse()?;
+    let sign = if minus.is_some() { -1.0 } else { 1.0 };
+    let value = match input.parse::<Lit>()? {
+        Lit::Int(i) => i.base10_parse::<f64>()?,
+        Lit::Float(f) => f.base10_parse::<f64>()?,
+        other => return Err(syn::Error::new(other.span(), "expected a number")),
+    };
+    Ok(sign * value)
 }
 
 /// Parses the macro's input into arguments, or a syntax error.
@@ -88,6 +135,13 @@ mod tests {
             ]
         );
         assert_eq!(args[1].value_loc.to_string(), "- 5");
+        let curve = parse(quote::quote!(torque_curve = [(0, 0.4), (1000, -1e1),])).unwrap();
+        assert_eq!(
+            curve[0].value,
+            Value::Points(vec![(0.0, 0.4), (1000.0, -10.0)])
+        );
+        assert!(parse(quote::quote!(torque_curve = [(0, 0.4, 1)])).is_err());
+        assert!(parse(quote::quote!(torque_curve = [0, 0.4])).is_err());
     }
 
     #[test]

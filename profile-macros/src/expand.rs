@@ -39,18 +39,31 @@ fn try_period_table(input: TokenStream) -> syn::Result<TokenStream> {
     let parsed = params::spec_from_args(&args, &whole).map_err(to_error)?;
     let spec = parsed.spec;
     let locate = |e| to_error(vec![params::locate(&e, &args, &whole)]);
-    let source = match parsed.layout {
+    let (source, periods) = match parsed.layout {
         Layout::Steps => {
             let table = spec.table().map_err(locate)?;
-            emit::rust_array(spec.timer.word, &table.periods)
+            (
+                emit::rust_array(spec.timer.word, &table.periods),
+                table.periods,
+            )
         }
         Layout::Segments(n) => {
             let mut pairs = Vec::with_capacity(n as usize);
             spec.for_each_segment(n, |_, period, count| pairs.push((period, count)))
                 .map_err(locate)?;
-            emit::rust_pairs(spec.timer.word, &pairs)
+            let periods = pairs
+                .iter()
+                .flat_map(|&(p, c)| std::iter::repeat_n(p, c as usize))
+                .collect();
+            (emit::rust_pairs(spec.timer.word, &pairs), periods)
         }
     };
+    // A table its motor cannot follow does not compile.
+    if let Some(motor) = &parsed.motor {
+        motor
+            .check(&spec, &periods)
+            .map_err(|e| to_error(vec![params::locate_motor(&e, &args, &whole)]))?;
+    }
     source.parse().map_err(|e| {
         syn::Error::new(
             proc_macro2::Span::call_site(),

@@ -1,0 +1,363 @@
+//! The motor a table drives, and the check that it can follow the table.
+//!
+//! A ramp the motor cannot follow loses steps (seeds 001, 002, 004). From the
+//! integer table itself, [`Motor::check`] computes the angular acceleration
+//! each step demands, the torque that needs (`J α` for the rotor and load,
+//! plus friction and viscous damping `β ω`), and the torque the motor gives
+//! at that step frequency (its pull-out curve over the safety factor). A step
+//! that needs more is an error naming the step, the frequency, both torques
+//! and the shortfall; otherwise the smallest margin and where it is are the
+//! table's figures.
+//!
+//! Units: angles in degrees as written (`step_angle`), inertia in kg·m²,
+//! torque in N·m, damping in N·m·s/rad, frequencies in Hz of the table's
+//! steps (microsteps when `microsteps > 1`).
+
+use core::fmt;
+
+use crate::error::Key;
+use crate::spec::Spec;
+
+/// The most points a pull-out torque curve may have.
+pub const MAX_CURVE_POINTS: usize = 32;
+
+/// A pull-out torque curve: `(step frequency in Hz, torque in N·m)` points
+/// with rising frequencies, interpolated linearly. Below the first point the
+/// first torque holds; beyond the last point the motor is not characterised
+/// and gives no torque, so a ramp must stay within the curve.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TorqueCurve {
+    points: [(f64, f64); MAX_CURVE_POINTS],
+    len: usize,
+}
+
+impl TorqueCurve {
+    /// A curve from up to [`MAX_CURVE_POINTS`] points; `None` when there are
+    /// more or none.
+    pub fn new(points: &[(f64, f64)]) -> Option<Self> {
+        if points.is_empty() || points.len() > MAX_CURVE_POINTS {
+            return None;
+        }
+        let mut curve = TorqueCurve {
+            points: [(0.0, 0.0); MAX_CURVE_POINTS],
+            len: points.len(),
+        };
+        curve.points[..points.len()].copy_from_slice(points);
+        Some(curve)
+    }
+
+    /// The points.
+    pub fn points(&self) -> &[(f64, f64)] {
+        &self.points[..self.len]
+    }
+
+    /// The torque at step frequency `hz`, in N·m.
+    pub fn torque(&self, hz: f64) -> f64 {
+        let p = self.points();
+        let Some(&(f0, t0)) = p.first() else {
+            return 0.0;
+        };
+        if hz <= f0 {
+            return t0;
+        }
+        for w in p.windows(2) {
+            let ((fa, ta), (fb, tb)) = (w[0], w[1]);
+            if hz <= fb {
+                return ta + (tb - ta) * (hz - fa) / (fb - fa);
+            }
+        }
+        0.0
+    }
+
+    /// The frequency of the last point, in Hz.
+    pub fn top(&self) -> f64 {
+        self.points().last().map_or(0.0, |p| p.0)
+    }
+}
+
+/// A stepper motor and its load.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Motor {
+    /// Full-step angle, in degrees (1.8 for 200 steps per turn).
+    pub step_angle: f64,
+    /// Microsteps per full step: the table's steps are microsteps.
+    pub microsteps: u32,
+    /// Rotor inertia, in kg·m².
+    pub rotor_inertia: f64,
+    /// Load inertia seen at the shaft, in kg·m².
+    pub load_inertia: f64,
+    /// Pull-out torque against the table's step frequency.
+    pub torque_curve: TorqueCurve,
+    /// Constant load and friction torque, in N·m.
+    pub friction: f64,
+    /// Viscous damping, in N·m·s/rad.
+    pub damping: f64,
+    /// The available torque is divided by this (at least 1).
+    pub safety: f64,
+    /// Maximum no-load start frequency, in Hz of the table's steps, if known:
+    /// a ramp must start below it (seed 001's advice).
+    pub max_start_hz: Option<f64>,
+}
+
+/// Where the motor has the least torque to spare over a ramp.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TorqueFigures {
+    /// Smallest available minus needed torque, in N·m.
+    pub min_margin_nm: f64,
+    /// The step (index of the table entry after the edge) where it is.
+    pub step: u32,
+    /// The step frequency there, in Hz.
+    pub hz: f64,
+    /// Torque needed there, in N·m.
+    pub needed_nm: f64,
+    /// Torque available there (over the safety factor), in N·m.
+    pub available_nm: f64,
+}
+
+/// Why a motor cannot follow a table, or cannot be described as given.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum MotorError {
+    /// A parameter out of range: `key` must satisfy `expected`.
+    Invalid {
+        /// The motor key.
+        key: Key,
+        /// Its value.
+        value: f64,
+        /// What is expected, in words.
+        expected: &'static str,
+    },
+    /// The torque curve's frequencies must rise and its torques be positive.
+    Curve {
+        /// The offending point's index.
+        index: usize,
+    },
+    /// A step needs more torque than the motor gives.
+    Torque {
+        /// The step.
+        step: u32,
+        /// Its frequency, in Hz.
+        hz: f64,
+        /// Torque needed, in N·m.
+        needed_nm: f64,
+        /// Torque available over the safety factor, in N·m.
+        available_nm: f64,
+        /// Whether the frequency is beyond the torque curve's last point.
+        beyond_curve: bool,
+    },
+    /// The ramp starts above the motor's maximum start frequency.
+    Start {
+        /// The ramp's start frequency, in Hz.
+        hz: f64,
+        /// The motor's maximum no-load start frequency, in Hz.
+        max_hz: f64,
+    },
+}
+
+impl MotorError {
+    /// The key a front end should point at.
+    pub fn key(&self) -> Key {
+        match *self {
+            MotorError::Invalid { key, .. } => key,
+            MotorError::Curve { .. } => Key::TorqueCurve,
+            MotorError::Torque { .. } | MotorError::Start { .. } => Key::Motor,
+        }
+    }
+}
+
+impl fmt::Display for MotorError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            MotorError::Invalid {
+                key,
+                value,
+                expected,
+            } => {
+                write!(f, "`{key}` must be {expected} (got {value})")
+            }
+            MotorError::Curve { index } => write!(
+                f,
+                "`torque_curve` point {index} must have a higher frequency than the one before and a torque above 0"
+            ),
+            MotorError::Torque {
+                step,
+                hz,
+                needed_nm,
+                available_nm,
+                beyond_curve,
+            } => {
+                write!(
+                    f,
+                    "the motor cannot follow step {step} at {hz:.1} Hz: it needs {needed_nm:.4} N·m but gives {available_nm:.4} N·m after the safety factor, short by {:.4} N·m",
+                    needed_nm - available_nm
+                )?;
+                if beyond_curve {
+                    f.write_str(" (the frequency is beyond the last point of `torque_curve`)")?;
+                }
+                Ok(())
+            }
+            MotorError::Start { hz, max_hz } => write!(
+                f,
+                "the ramp starts at {hz:.1} Hz, above the motor's maximum start frequency `max_start_hz = {max_hz}`"
+            ),
+        }
+    }
+}
+
+fn positive(key: Key, value: f64) -> Result<(), MotorError> {
+    if value.is_finite() && value > 0.0 {
+        Ok(())
+    } else {
+        Err(MotorError::Invalid {
+            key,
+            value,
+            expected: "a finite number above 0",
+        })
+    }
+}
+
+fn non_negative(key: Key, value: f64) -> Result<(), MotorError> {
+    if value.is_finite() && value >= 0.0 {
+        Ok(())
+    } else {
+        Err(MotorError::Invalid {
+            key,
+            value,
+            expected: "a finite number, 0 or more",
+        })
+    }
+}
+
+impl Motor {
+    /// Checks every parameter.
+    pub fn validate(&self) -> Result<(), MotorError> {
+        positive(Key::StepAngle, self.step_angle)?;
+        if self.microsteps == 0 {
+            return Err(MotorError::Invalid {
+                key: Key::Microsteps,
+                value: 0.0,
+                expected: "at least 1",
+            });
+        }
+        positive(Key::RotorInertia, self.rotor_inertia)?;
+        non_negative(Key::LoadInertia, self.load_inertia)?;
+        non_negative(Key::Friction, self.friction)?;
+        non_negative(Key::Damping, self.damping)?;
+        if !(self.safety.is_finite() && self.safety >= 1.0) {
+            return Err(MotorError::Invalid {
+                key: Key::Safety,
+                value: self.safety,
+                expected: "a finite number, 1 or more",
+            });
+        }
+        if let Some(hz) = self.max_start_hz {
+            positive(Key::MaxStartHz, hz)?;
+        }
+        let mut prev = f64::NEG_INFINITY;
+        for (index, &(hz, nm)) in self.torque_curve.points().iter().enumerate() {
+            if !(hz.is_finite() && nm.is_finite() && hz >= 0.0 && hz > prev && nm > 0.0) {
+                return Err(MotorError::Curve { index });
+            }
+            prev = hz;
+        }
+        Ok(())
+    }
+
+    /// Radians per table step.
+    pub fn step_radians(&self) -> f64 {
+        self.step_angle.to_radians() / self.microsteps as f64
+    }
+
+    /// Torque available at step frequency `hz` over the safety factor, in N·m.
+    pub fn available(&self, hz: f64) -> f64 {
+        self.torque_curve.torque(hz) / self.safety
+    }
+
+    /// Checks that the motor can follow `periods` (a table of `spec`): every
+    /// edge's torque need against the pull-out curve, and the start frequency.
+    pub fn check(&self, spec: &Spec, periods: &[u32]) -> Result<TorqueFigures, MotorError> {
+        self.check_with(spec, periods, |_, _, _, _| {})
+    }
+
+    /// [`Motor::check`], also calling `each(step, hz, needed, available)` for
+    /// every edge, for plots.
+    pub fn check_with<F: FnMut(u32, f64, f64, f64)>(
+        &self,
+        spec: &Spec,
+        periods: &[u32],
+        mut each: F,
+    ) -> Result<TorqueFigures, MotorError> {
+        self.validate()?;
+        let per_second = spec.timer.timer_hz as f64 / spec.timer.ticks_per_step as f64;
+        if let (Some(max_hz), Some(&first)) = (self.max_start_hz, periods.first()) {
+            let hz = per_second / first as f64;
+            if hz > max_hz {
+                return Err(MotorError::Start { hz, max_hz });
+            }
+        }
+        let inertia = self.rotor_inertia + self.load_inertia;
+        let theta = self.step_radians();
+        let mut worst: Option<TorqueFigures> = None;
+        for (k, w) in periods.windows(2).enumerate() {
+            let (pa, pb) = (w[0] as f64 / per_second, w[1] as f64 / per_second);
+            let (fa, fb) = (1.0 / pa, 1.0 / pb);
+            // Angular acceleration between the two steps' mean speeds.
+            let alpha = theta * (fb - fa) / ((pa + pb) / 2.0);
+            let omega = theta * fa.max(fb);
+            let needed = inertia * alpha + self.friction + self.damping * omega;
+            // Less torque at higher frequency: judge at the faster step.
+            let hz = fa.max(fb);
+            let available = self.available(hz);
+            let step = k as u32 + 1;
+            each(step, hz, needed, available);
+            if needed > available {
+                return Err(MotorError::Torque {
+                    step,
+                    hz,
+                    needed_nm: needed,
+                    available_nm: available,
+                    beyond_curve: hz > self.torque_curve.top(),
+                });
+            }
+            let margin = available - needed;
+            if worst.is_none_or(|w| margin < w.min_margin_nm) {
+                worst = Some(TorqueFigures {
+                    min_margin_nm: margin,
+                    step,
+                    hz,
+                    needed_nm: needed,
+                    available_nm: available,
+                });
+            }
+        }
+        // A one-entry table has no acceleration: only friction at its speed.
+        Ok(worst.unwrap_or_else(|| {
+            let hz = periods.first().map_or(0.0, |&p| per_second / p as f64);
+            let needed = self.friction + self.damping * theta * hz;
+            let available = self.available(hz);
+            TorqueFigures {
+                min_margin_nm: available - needed,
+                step: 0,
+                hz,
+                needed_nm: needed,
+                available_nm: available,
+            }
+        }))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn curve_interpolates_and_stops_at_its_end() {
+        let c = TorqueCurve::new(&[(0.0, 0.4), (1000.0, 0.3), (3000.0, 0.1)]).unwrap();
+        assert_eq!(c.torque(0.0), 0.4);
+        assert!((c.torque(500.0) - 0.35).abs() < 1e-12);
+        assert!((c.torque(2000.0) - 0.2).abs() < 1e-12);
+        assert_eq!(c.torque(3000.1), 0.0);
+        assert!(TorqueCurve::new(&[]).is_none());
+        assert!(TorqueCurve::new(&[(0.0, 1.0); MAX_CURVE_POINTS + 1]).is_none());
+    }
+}
