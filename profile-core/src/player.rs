@@ -67,13 +67,6 @@ impl<'a, W: TableWord> Ramp<'a, W> {
         Ramp::Segments(pairs)
     }
 
-    fn hold(&self) -> u32 {
-        match *self {
-            Ramp::Steps { hold, .. } => hold.max(1),
-            Ramp::Segments(_) => 1,
-        }
-    }
-
     /// Steps the ramp takes from rest to its top speed.
     pub fn len_steps(&self) -> u32 {
         match *self {
@@ -143,14 +136,6 @@ impl Cursor {
     }
 
     #[inline(always)]
-    fn entry_len<W: TableWord>(ramp: &Ramp<'_, W>, entry: u32) -> u32 {
-        match *ramp {
-            Ramp::Steps { .. } => ramp.hold(),
-            Ramp::Segments(pairs) => pairs.get(entry as usize).map_or(0, |p| p.1.into_ticks()),
-        }
-    }
-
-    #[inline(always)]
     fn period<W: TableWord>(&self, ramp: &Ramp<'_, W>) -> W {
         let found = match *ramp {
             Ramp::Steps { periods, .. } => periods.get(self.entry as usize).copied(),
@@ -159,50 +144,78 @@ impl Cursor {
         found.unwrap_or(W::from_ticks(0))
     }
 
-    /// One step towards the fast end; stays put at the last step.
+    /// One step towards the fast end; stays put at the last step. Returns
+    /// the new entry's period when the step enters another entry.
     #[inline(always)]
-    fn forward<W: TableWord>(&mut self, ramp: &Ramp<'_, W>, last: u32) {
+    fn forward<W: TableWord>(&mut self, ramp: &Ramp<'_, W>, last: u32) -> Option<W> {
         if self.pos >= last {
-            return;
+            return None;
         }
         self.pos += 1;
         self.within += 1;
-        while self.within >= Self::entry_len(ramp, self.entry) {
-            self.within = 0;
-            self.entry += 1;
-            if self.entry as usize >= ramp_entries(ramp) {
-                break;
+        match *ramp {
+            Ramp::Steps { periods, hold } => {
+                // `hold` 0 counts as 1: `within` is at least 1 here.
+                if self.within < hold {
+                    return None;
+                }
+                self.within = 0;
+                self.entry += 1;
+                periods.get(self.entry as usize).copied()
+            }
+            Ramp::Segments(pairs) => {
+                // Past empty segments to the next that holds a step.
+                while self.within
+                    >= pairs
+                        .get(self.entry as usize)
+                        .map_or(0, |p| p.1.into_ticks())
+                {
+                    self.within = 0;
+                    self.entry += 1;
+                    if self.entry as usize >= pairs.len() {
+                        return None;
+                    }
+                }
+                (self.within == 0)
+                    .then(|| pairs.get(self.entry as usize).map(|p| p.0))
+                    .flatten()
             }
         }
     }
 
-    /// One step towards the slow end; stays put at step 0.
+    /// One step towards the slow end; stays put at step 0. Returns the new
+    /// entry's period when the step enters another entry.
     #[inline(always)]
-    fn backward<W: TableWord>(&mut self, ramp: &Ramp<'_, W>) {
+    fn backward<W: TableWord>(&mut self, ramp: &Ramp<'_, W>) -> Option<W> {
         if self.pos == 0 {
-            return;
+            return None;
         }
         self.pos -= 1;
         if self.within > 0 {
             self.within -= 1;
-            return;
+            return None;
         }
-        // Previous non-empty entry.
-        while self.entry > 0 {
-            self.entry -= 1;
-            let len = Self::entry_len(ramp, self.entry);
-            if len > 0 {
-                self.within = len - 1;
-                return;
+        match *ramp {
+            Ramp::Steps { periods, hold } => {
+                // `pos > 0` with `within == 0`: there is an entry before.
+                self.entry = self.entry.saturating_sub(1);
+                self.within = hold.max(1) - 1;
+                periods.get(self.entry as usize).copied()
+            }
+            Ramp::Segments(pairs) => {
+                // The previous segment that holds a step.
+                while self.entry > 0 {
+                    self.entry -= 1;
+                    if let Some(&(period, count)) = pairs.get(self.entry as usize) {
+                        if count.into_ticks() > 0 {
+                            self.within = count.into_ticks() - 1;
+                            return Some(period);
+                        }
+                    }
+                }
+                None
             }
         }
-    }
-}
-
-fn ramp_entries<W: TableWord>(ramp: &Ramp<'_, W>) -> usize {
-    match *ramp {
-        Ramp::Steps { periods, .. } => periods.len(),
-        Ramp::Segments(pairs) => pairs.len(),
     }
 }
 
@@ -237,6 +250,9 @@ pub struct Player<'a, W> {
     decelerating: bool,
     /// The deceleration ramp's shortest period: no move runs faster.
     decel_fastest: u32,
+    /// The periods under the two cursors, read when a cursor moves.
+    acc_period: W,
+    dec_period: W,
 }
 
 impl<'a, W: TableWord> Player<'a, W> {
@@ -262,6 +278,8 @@ impl<'a, W: TableWord> Player<'a, W> {
             last_period: 0,
             decelerating: false,
             decel_fastest: fastest(&decel),
+            acc_period: W::from_ticks(0),
+            dec_period: W::from_ticks(0),
         }
     }
 
@@ -279,6 +297,8 @@ impl<'a, W: TableWord> Player<'a, W> {
         };
         self.acc = acc;
         self.dec = dec;
+        self.acc_period = acc.period(&self.accel);
+        self.dec_period = dec.period(&self.decel);
         self.remaining = steps;
         self.last_period = 0;
         self.decelerating = false;
@@ -341,6 +361,7 @@ impl<'a, W: TableWord> Player<'a, W> {
             self.remaining = needed;
             if let Some(dec) = Cursor::at(&self.decel, lo) {
                 self.dec = dec;
+                self.dec_period = dec.period(&self.decel);
                 self.decelerating = true;
             } else {
                 self.remaining = 0;
@@ -378,35 +399,38 @@ impl<'a, W: TableWord> Player<'a, W> {
         let after = self.remaining - 1;
         self.remaining = after;
         let period = if self.decelerating {
-            self.dec.period(&self.decel)
+            self.dec_period
         } else {
-            let pa = self.acc.period(&self.accel);
+            let pa = self.acc_period;
             let take_decel = if after <= self.decel_last {
-                let pd = self.dec.period(&self.decel);
-                self.decelerating = pd.into_ticks() >= pa.into_ticks();
-                self.decelerating.then_some(pd)
-            } else if self.decel_fastest > pa.into_ticks() {
-                // The deceleration ramp cannot start from this speed: go no
-                // faster than its top (its entries may tie by a tick near the
-                // top, so compare with its fastest entry).
-                Some(self.dec.period(&self.decel))
+                self.decelerating = self.dec_period.into_ticks() >= pa.into_ticks();
+                self.decelerating
             } else {
-                None
+                // The deceleration ramp cannot start from a faster speed than
+                // its top: go no faster (its entries may tie by a tick near
+                // the top, so compare with its fastest entry).
+                self.decel_fastest > pa.into_ticks()
             };
-            match take_decel {
-                Some(pd) => pd,
-                None => {
-                    if self.acc.pos < self.cruise {
-                        self.acc.forward(&self.accel, self.accel_last);
-                    } else if self.acc.pos > self.cruise {
-                        self.acc.backward(&self.accel);
+            if take_decel {
+                self.dec_period
+            } else {
+                if self.acc.pos != self.cruise {
+                    let moved = if self.acc.pos < self.cruise {
+                        self.acc.forward(&self.accel, self.accel_last)
+                    } else {
+                        self.acc.backward(&self.accel)
+                    };
+                    if let Some(p) = moved {
+                        self.acc_period = p;
                     }
-                    pa
                 }
+                pa
             }
         };
         if after > 0 && after - 1 < self.dec.pos {
-            self.dec.backward(&self.decel);
+            if let Some(p) = self.dec.backward(&self.decel) {
+                self.dec_period = p;
+            }
         }
         self.last_period = period.into_ticks();
         Some(period)
