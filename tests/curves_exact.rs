@@ -29,9 +29,12 @@
 //! Three-stage shapes within 1e-12 of 0 are checked too: a closed form that
 //! subtracts two terms of size `a t / B` would lose its digits there.
 
+mod common;
+
+use common::seeds::{SEED001_SEGMENTS, jerk_limited, seed001, seed004, zeng};
 use stepper_profiles::{
     Curve, Discretization, Error, Exponential, ExponentialExtent, JerkLimited, Linear,
-    LinearExtent, Rounding, SegmentFigures, Spec, ThreeStage, Timer, Word, period_table,
+    LinearExtent, Rounding, SegmentFigures, Spec, ThreeStage, Timer, Word,
 };
 
 /// What a correct edge (or rounded entry) may miss its exact value by: half a
@@ -367,26 +370,6 @@ struct Case {
     derived_len: bool,
 }
 
-fn seed001() -> Exponential {
-    Exponential {
-        fmin: 500.0,
-        fmax: 10_000.0,
-        f_inf: 15_000.0,
-        extent: ExponentialExtent::Len(120),
-    }
-}
-
-fn zeng(shape: f64) -> ThreeStage {
-    ThreeStage {
-        fmin: 100.0,
-        fmax: 1200.0,
-        accel: 4000.0,
-        f1: 400.0,
-        f2: 900.0,
-        shape,
-    }
-}
-
 fn cases() -> Vec<Case> {
     let case = |name, curve, timer: Timer, derived_len| Case {
         name,
@@ -435,16 +418,11 @@ fn cases() -> Vec<Case> {
             },
             true,
         ),
-        case(
-            "linear, seed 004 by len (200 steps), 50 MHz, 2 ticks per step",
-            Curve::Linear(Linear {
-                fmin: 500.0,
-                fmax: 5000.0,
-                extent: LinearExtent::Len(200),
-            }),
-            timer_2(50_000_000),
-            false,
-        ),
+        Case {
+            name: "linear, seed 004 by len (200 steps), 50 MHz, 2 ticks per step",
+            spec: seed004(200),
+            derived_len: false,
+        },
         case(
             "linear by accel (50 000 Hz/s), 2 MHz",
             Curve::Linear(Linear {
@@ -482,12 +460,7 @@ fn cases() -> Vec<Case> {
         ),
         case(
             "jerk_limited, trapezoidal acceleration, 10 MHz",
-            Curve::JerkLimited(JerkLimited {
-                fmin: 200.0,
-                fmax: 5000.0,
-                accel: 20_000.0,
-                jerk: 400_000.0,
-            }),
+            Curve::JerkLimited(jerk_limited()),
             Timer::new(10_000_000),
             true,
         ),
@@ -946,16 +919,6 @@ fn check_segments(name: &str, spec: &Spec, pairs: &[(u32, u32)], figures: &Segme
     }
 }
 
-static SEED_001_SEGMENTS: [(u16, u16); 8] = period_table!(
-    curve = exponential,
-    fmin = 500,
-    fmax = 10000,
-    f_inf = 15000,
-    len = 120,
-    timer_hz = 1_000_000,
-    segments = 8,
-);
-
 #[test]
 fn segment_tables_cover_the_ramp() {
     // The macro's table is the library's.
@@ -964,7 +927,7 @@ fn segment_tables_cover_the_ramp() {
     let figures = spec
         .for_each_segment(8, |_, p, c| pairs.push((p, c)))
         .expect("seed 001 in 8 segments");
-    let from_macro: Vec<(u32, u32)> = SEED_001_SEGMENTS
+    let from_macro: Vec<(u32, u32)> = SEED001_SEGMENTS
         .iter()
         .map(|&(p, c)| (u32::from(p), u32::from(c)))
         .collect();
@@ -975,7 +938,7 @@ fn segment_tables_cover_the_ramp() {
     check_segments("seed 001", &spec, &pairs, &figures);
     let mut buffer = [(0u16, 0u16); 8];
     assert_eq!(spec.generate_segments(&mut buffer), Ok(figures));
-    assert_eq!(buffer, SEED_001_SEGMENTS);
+    assert_eq!(buffer, SEED001_SEGMENTS);
 
     let mut tables = 0;
     for case in &cases() {

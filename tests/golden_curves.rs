@@ -11,9 +11,10 @@
 //! - Zeng's three-stage curve (seed 002), 100 Hz to 1200 Hz at 1 MHz;
 //! - a jerk-limited ramp, 200 Hz to 5000 Hz at 10 MHz.
 //!
-//! The format is that of `tests/golden.rs`: `# key = value` lines (the
-//! parameters, then the table's figures) followed by the periods in ticks,
-//! ten per line; a segment table lists one `period count` pair per line.
+//! The format is that of `tests/golden.rs` (`common::golden`): `# key =
+//! value` lines (the parameters, then the table's figures) followed by the
+//! periods in ticks, ten per line; a segment table lists one `period count`
+//! pair per line.
 //!
 //! The tables come from `period_table!`, which is what users call, and must
 //! equal [`Spec::table`] (or [`Spec::for_each_segment`]) for the same
@@ -27,20 +28,20 @@
 //!
 //! and review them with `git diff tests/golden/curves`.
 
-use std::fmt::Write as _;
-use std::fs;
-use std::path::PathBuf;
+mod common;
 
-use stepper_profiles::{
-    Arithmetic, Curve, Discretization, Exponential, ExponentialExtent, JerkLimited, Linear,
-    LinearExtent, Rounding, Spec, ThreeStage, Timer, period_table,
+use common::golden::{self, Body, Folder, Header};
+use common::seeds::{
+    self, SEED001_SEGMENTS, SEED004_INTEGER, integer_compat, jerk_limited, seed004, zeng,
 };
+use stepper_profiles::{Curve, SegmentFigures, Spec, Timer, period_table};
 
-/// Most mismatching entries listed per file.
-const SHOWN_PER_FILE: usize = 20;
-
-/// Values per line in a golden file of periods.
-const PER_LINE: usize = 10;
+/// The golden files of this test.
+const GOLDEN: Folder = Folder {
+    dir: "tests/golden/curves",
+    test: "golden_curves",
+    number: "a number of ticks",
+};
 
 /// What `period_table!` expanded to.
 enum FromMacro {
@@ -56,13 +57,8 @@ struct Golden {
     spec: Spec,
 }
 
-/// A table's entries: periods, or (period, count) segments.
-#[derive(Debug, PartialEq, Eq)]
-enum Body {
-    Periods(Vec<u32>),
-    Segments(Vec<(u32, u32)>),
-}
-
+// Seed 001's segments and seed 004's integer table, which `curves_exact.rs`
+// and `seed004_c.rs` check too, are in `common::seeds`.
 static SEED001_1MHZ: [u16; 120] = period_table!(
     curve = exponential,
     fmin = 500,
@@ -78,26 +74,6 @@ static SEED001_10MHZ: [u16; 120] = period_table!(
     f_inf = 15000,
     len = 120,
     timer_hz = 10_000_000,
-);
-static SEED001_SEGMENTS: [(u16, u16); 8] = period_table!(
-    curve = exponential,
-    fmin = 500,
-    fmax = 10000,
-    f_inf = 15000,
-    len = 120,
-    timer_hz = 1_000_000,
-    segments = 8,
-);
-static SEED004_INTEGER: [u16; 201] = period_table!(
-    curve = linear,
-    fmin = 500,
-    fmax = 5000,
-    len = 201,
-    timer_hz = 50_000_000,
-    ticks_per_step = 2,
-    discretization = index,
-    rounding = truncate,
-    arithmetic = integer,
 );
 static SEED004_EXACT: [u16; 200] = period_table!(
     curve = linear,
@@ -127,23 +103,7 @@ static JERK: [u16; 754] = period_table!(
 );
 
 fn goldens() -> Vec<Golden> {
-    let seed001 = Curve::Exponential(Exponential {
-        fmin: 500.0,
-        fmax: 10_000.0,
-        f_inf: 15_000.0,
-        extent: ExponentialExtent::Len(120),
-    });
-    let seed004 = |len| {
-        Spec::new(
-            Curve::Linear(Linear {
-                fmin: 500.0,
-                fmax: 5000.0,
-                extent: LinearExtent::Len(len),
-            }),
-            Timer::new(50_000_000),
-        )
-        .with_ticks_per_step(2)
-    };
+    let seed001 = Curve::Exponential(seeds::seed001());
     vec![
         Golden {
             file: "seed001_exponential_1mhz.txt",
@@ -163,10 +123,7 @@ fn goldens() -> Vec<Golden> {
         Golden {
             file: "seed004_linear_integer.txt",
             from_macro: FromMacro::Periods(&SEED004_INTEGER),
-            spec: seed004(201)
-                .with_discretization(Discretization::Index)
-                .with_rounding(Rounding::Truncate)
-                .with_arithmetic(Arithmetic::Integer),
+            spec: integer_compat(seed004(201)),
         },
         Golden {
             file: "seed004_linear_exact.txt",
@@ -176,146 +133,34 @@ fn goldens() -> Vec<Golden> {
         Golden {
             file: "seed002_three_stage.txt",
             from_macro: FromMacro::Periods(&ZENG),
-            spec: Spec::new(
-                Curve::ThreeStage(ThreeStage {
-                    fmin: 100.0,
-                    fmax: 1200.0,
-                    accel: 4000.0,
-                    f1: 400.0,
-                    f2: 900.0,
-                    shape: 12.0,
-                }),
-                Timer::new(1_000_000),
-            ),
+            spec: Spec::new(Curve::ThreeStage(zeng(12.0)), Timer::new(1_000_000)),
         },
         Golden {
             file: "jerk_limited.txt",
             from_macro: FromMacro::Periods(&JERK),
-            spec: Spec::new(
-                Curve::JerkLimited(JerkLimited {
-                    fmin: 200.0,
-                    fmax: 5000.0,
-                    accel: 20_000.0,
-                    jerk: 400_000.0,
-                }),
-                Timer::new(10_000_000),
-            ),
+            spec: Spec::new(Curve::JerkLimited(jerk_limited()), Timer::new(10_000_000)),
         },
     ]
 }
 
-fn golden_path(file: &str) -> PathBuf {
-    [
-        env!("CARGO_MANIFEST_DIR"),
-        "tests",
-        "golden",
-        "curves",
-        file,
-    ]
-    .iter()
-    .collect()
-}
-
-fn owned(entries: &[(&str, String)]) -> Vec<(String, String)> {
-    entries
-        .iter()
-        .map(|(k, v)| ((*k).to_owned(), v.clone()))
-        .collect()
-}
-
-/// The curve's own parameters, as the macro's keys.
-fn curve_parameters(curve: &Curve) -> Vec<(String, String)> {
-    let s = |v: f64| v.to_string();
-    let mut out = vec![("curve", curve.name().to_owned())];
-    match *curve {
-        Curve::Exponential(e) => {
-            out.extend([
-                ("fmin", s(e.fmin)),
-                ("fmax", s(e.fmax)),
-                ("f_inf", s(e.f_inf)),
-            ]);
-            out.push(match e.extent {
-                ExponentialExtent::Len(len) => ("len", len.to_string()),
-                ExponentialExtent::Tau(tau) => ("tau", s(tau)),
-            });
-        }
-        Curve::Linear(l) => {
-            out.extend([("fmin", s(l.fmin)), ("fmax", s(l.fmax))]);
-            out.push(match l.extent {
-                LinearExtent::Len(len) => ("len", len.to_string()),
-                LinearExtent::Accel(a) => ("accel", s(a)),
-            });
-        }
-        Curve::ThreeStage(z) => out.extend([
-            ("fmin", s(z.fmin)),
-            ("fmax", s(z.fmax)),
-            ("accel", s(z.accel)),
-            ("f1", s(z.f1)),
-            ("f2", s(z.f2)),
-            ("shape", s(z.shape)),
-        ]),
-        Curve::JerkLimited(j) => out.extend([
-            ("fmin", s(j.fmin)),
-            ("fmax", s(j.fmax)),
-            ("accel", s(j.accel)),
-            ("jerk", s(j.jerk)),
-        ]),
-        ref other => panic!("expected a non-sigmoid golden curve, got {other:?}"),
-    }
-    owned(&out)
-}
-
 /// The `# key = value` header and the entries, as `period_table!` and the
 /// library compute them (after checking that the two agree).
-fn checked(golden: &Golden) -> (Vec<(String, String)>, Body) {
+fn checked(golden: &Golden) -> (Header, Body) {
     let spec = &golden.spec;
     let file = golden.file;
-    let mut header = curve_parameters(&spec.curve);
-    header.extend(owned(&[
-        ("timer_hz", spec.timer.timer_hz.to_string()),
-        ("word", spec.timer.word.name().to_owned()),
-        ("ticks_per_step", spec.timer.ticks_per_step.to_string()),
-        ("discretization", spec.discretization.name().to_owned()),
-        ("rounding", spec.rounding.name().to_owned()),
-        ("arithmetic", spec.arithmetic.name().to_owned()),
-    ]));
+    let mut header = golden::spec_header(spec);
     if let Curve::Exponential(e) = spec.curve {
-        header.extend(owned(&[
+        header.extend(golden::header(&[
             ("tau_s", format!("{:.9}", e.tau())),
             ("rise_time_s", format!("{:.9}", e.rise_time())),
         ]));
     }
     match golden.from_macro {
         FromMacro::Periods(from_macro) => {
-            let table = spec
-                .table()
-                .unwrap_or_else(|e| panic!("{file}: expected a valid table, got the error {e}"));
-            let from_macro: Vec<u32> = from_macro.iter().map(|&p| u32::from(p)).collect();
-            let first_difference = from_macro
-                .iter()
-                .zip(&table.periods)
-                .position(|(m, t)| m != t);
-            assert!(
-                from_macro.len() == table.periods.len() && first_difference.is_none(),
-                "{file}: expected period_table! to equal Spec::table(); lengths {} and {}, \
-                 first difference at index {first_difference:?}",
-                from_macro.len(),
-                table.periods.len()
-            );
-            let f = table.figures;
-            header.extend(owned(&[
-                ("entries", f.len.to_string()),
-                ("first", f.first_ticks.to_string()),
-                ("last", f.last_ticks.to_string()),
-                ("total_ticks", f.total_ticks.to_string()),
-                ("duration_s", format!("{:.9}", f.duration_s)),
-                (
-                    "max_edge_error_ticks",
-                    format!("{:.6}", f.max_edge_error_ticks),
-                ),
-                ("total_error_ticks", format!("{:.6}", f.total_error_ticks)),
-            ]));
-            (header, Body::Periods(table.periods))
+            let (periods, figures) = golden::checked_periods(file, spec, from_macro);
+            header.extend(golden::header(&[("entries", figures.len.to_string())]));
+            header.extend(golden::figures_header(&figures));
+            (header, Body::Periods(periods))
         }
         FromMacro::Segments(from_macro) => {
             let n = from_macro.len() as u32;
@@ -331,160 +176,27 @@ fn checked(golden: &Golden) -> (Vec<(String, String)>, Body) {
                 from_macro, pairs,
                 "{file}: expected period_table!(segments = {n}) to equal Spec::for_each_segment()"
             );
-            header.extend(owned(&[
-                ("segments", f.segments.to_string()),
-                ("steps", f.steps.to_string()),
-                ("flash_bytes", f.flash_bytes.to_string()),
-                ("per_step_flash_bytes", f.per_step_flash_bytes.to_string()),
-                ("total_ticks", f.total_ticks.to_string()),
-                ("duration_s", format!("{:.9}", f.duration_s)),
-                (
-                    "max_edge_error_ticks",
-                    format!("{:.6}", f.max_edge_error_ticks),
-                ),
-                ("total_error_ticks", format!("{:.6}", f.total_error_ticks)),
-            ]));
+            header.extend(segment_figures_header(&f));
             (header, Body::Segments(pairs))
         }
     }
 }
 
-/// A golden file's text: header lines, then the entries right-aligned.
-fn render(header: &[(String, String)], body: &Body) -> String {
-    let mut out = String::new();
-    for (key, value) in header {
-        let _ = writeln!(out, "# {key} = {value}");
-    }
-    match body {
-        Body::Periods(periods) => {
-            let width = periods
-                .iter()
-                .map(|p| p.to_string().len())
-                .max()
-                .unwrap_or(1);
-            for line in periods.chunks(PER_LINE) {
-                let cells: Vec<String> = line.iter().map(|p| format!("{p:>width$}")).collect();
-                let _ = writeln!(out, "{}", cells.join(" "));
-            }
-        }
-        Body::Segments(pairs) => {
-            let width = pairs
-                .iter()
-                .map(|(p, c)| p.to_string().len().max(c.to_string().len()))
-                .max()
-                .unwrap_or(1);
-            for (period, count) in pairs {
-                let _ = writeln!(out, "{period:>width$} {count:>width$}");
-            }
-        }
-    }
-    out
-}
-
-/// A golden file read back: its header and its entries, shaped like `like`.
-fn parse(file: &str, text: &str, like: &Body) -> Result<(Vec<(String, String)>, Body), String> {
-    let mut header = Vec::new();
-    let mut values: Vec<u32> = Vec::new();
-    for (number, line) in text.lines().enumerate() {
-        let at = || format!("{file}:{}", number + 1);
-        if let Some(rest) = line.strip_prefix('#') {
-            let (key, value) = rest
-                .split_once('=')
-                .ok_or_else(|| format!("{}: expected `# key = value`, got {line:?}", at()))?;
-            header.push((key.trim().to_owned(), value.trim().to_owned()));
-            continue;
-        }
-        let words: Vec<&str> = line.split_whitespace().collect();
-        if matches!(like, Body::Segments(_)) && words.len() != 2 {
-            return Err(format!(
-                "{}: expected one `period count` pair, got {line:?}",
-                at()
-            ));
-        }
-        for word in words {
-            values.push(
-                word.parse()
-                    .map_err(|_| format!("{}: expected a number of ticks, got {word:?}", at()))?,
-            );
-        }
-    }
-    let body = match like {
-        Body::Periods(_) => Body::Periods(values),
-        Body::Segments(_) => Body::Segments(values.chunks(2).map(|c| (c[0], c[1])).collect()),
-    };
-    Ok((header, body))
-}
-
-/// Every difference between a golden file and the actual table, described.
-fn differences(
-    file: &str,
-    golden: &(Vec<(String, String)>, Body),
-    header: &[(String, String)],
-    body: &Body,
-) -> Vec<String> {
-    let mut problems = Vec::new();
-    let keys = |h: &[(String, String)]| h.iter().map(|(k, _)| k.clone()).collect::<Vec<_>>();
-    if keys(&golden.0) != keys(header) {
-        problems.push(format!(
-            "{file}: header keys differ: golden {:?}, actual {:?}",
-            keys(&golden.0),
-            keys(header)
-        ));
-    }
-    for (key, actual) in header {
-        match golden.0.iter().find(|(k, _)| k == key) {
-            Some((_, expected)) if expected == actual => {}
-            Some((_, expected)) => problems.push(format!(
-                "{file}: header `{key}`: golden {expected}, actual {actual}"
-            )),
-            None => problems.push(format!("{file}: header `{key}` missing, actual {actual}")),
-        }
-    }
-    let (golden_cells, actual_cells, unit): (Vec<String>, Vec<String>, &str) =
-        match (&golden.1, body) {
-            (Body::Periods(g), Body::Periods(a)) => (
-                g.iter().map(|p| format!("{p} ticks")).collect(),
-                a.iter().map(|p| format!("{p} ticks")).collect(),
-                "index",
-            ),
-            (Body::Segments(g), Body::Segments(a)) => (
-                g.iter()
-                    .map(|(p, c)| format!("{p} ticks x {c} steps"))
-                    .collect(),
-                a.iter()
-                    .map(|(p, c)| format!("{p} ticks x {c} steps"))
-                    .collect(),
-                "segment",
-            ),
-            _ => unreachable!("parsed like the actual body"),
-        };
-    if golden_cells.len() != actual_cells.len() {
-        problems.push(format!(
-            "{file}: golden has {} entries, actual table {}",
-            golden_cells.len(),
-            actual_cells.len()
-        ));
-    }
-    let mismatched: Vec<(usize, &String, &String)> = golden_cells
-        .iter()
-        .zip(&actual_cells)
-        .enumerate()
-        .filter(|(_, (g, a))| g != a)
-        .map(|(i, (g, a))| (i, g, a))
-        .collect();
-    for &(index, expected, actual) in mismatched.iter().take(SHOWN_PER_FILE) {
-        problems.push(format!(
-            "{file}: {unit} {index}: golden {expected}, actual {actual}"
-        ));
-    }
-    if mismatched.len() > SHOWN_PER_FILE {
-        problems.push(format!(
-            "{file}: ... {} more mismatched entries ({} in all)",
-            mismatched.len() - SHOWN_PER_FILE,
-            mismatched.len()
-        ));
-    }
-    problems
+/// The header lines of a segment table's figures.
+fn segment_figures_header(f: &SegmentFigures) -> Header {
+    let mut header = golden::header(&[
+        ("segments", f.segments.to_string()),
+        ("steps", f.steps.to_string()),
+        ("flash_bytes", f.flash_bytes.to_string()),
+        ("per_step_flash_bytes", f.per_step_flash_bytes.to_string()),
+    ]);
+    header.extend(golden::timing(
+        f.total_ticks,
+        f.duration_s,
+        f.max_edge_error_ticks,
+        f.total_error_ticks,
+    ));
+    header
 }
 
 #[test]
@@ -496,47 +208,13 @@ fn period_table_macro_equals_spec_table() {
 
 #[test]
 fn tables_match_golden_files() {
-    let update = std::env::var_os("UPDATE_GOLDEN").is_some_and(|v| v == "1");
-    let mut problems = Vec::new();
-    for golden in &goldens() {
+    let mut problems = GOLDEN.bless_or_compare(goldens().iter().map(|golden| {
         let (header, body) = checked(golden);
-        let path = golden_path(golden.file);
-        if update {
-            fs::create_dir_all(path.parent().expect("a golden directory"))
-                .expect("can create tests/golden/curves");
-            // Write beside, then rename: tests reading the file meanwhile see
-            // the old table or the new one, never half of one.
-            let partial = path.with_extension("txt.partial");
-            fs::write(&partial, render(&header, &body))
-                .and_then(|()| fs::rename(&partial, &path))
-                .unwrap_or_else(|e| panic!("cannot write {}: {e}", path.display()));
-            continue;
-        }
-        let text = match fs::read_to_string(&path) {
-            Ok(text) => text,
-            Err(e) => {
-                problems.push(format!(
-                    "{}: cannot read {}: {e}",
-                    golden.file,
-                    path.display()
-                ));
-                continue;
-            }
-        };
-        match parse(golden.file, &text, &body) {
-            Ok(parsed) => problems.extend(differences(golden.file, &parsed, &header, &body)),
-            Err(problem) => problems.push(problem),
-        }
-    }
+        (golden.file, header, body)
+    }));
     // Also after blessing: the files must still show the seeds' facts.
     problems.extend(seed_facts());
-    assert!(
-        problems.is_empty(),
-        "expected the tables to match their golden files (tests/golden/curves/); after an \
-         intended change run `UPDATE_GOLDEN=1 cargo test --test golden_curves` and review \
-         `git diff`:\n{}",
-        problems.join("\n")
-    );
+    GOLDEN.assert_no_problems(&problems);
 }
 
 /// Guards the blessed files themselves, so that a table blessed by mistake
@@ -545,11 +223,6 @@ fn tables_match_golden_files() {
 /// 004's integer table runs from 50 000 to 5000 ticks (500 Hz to 5000 Hz at
 /// 50 MHz, two reloads per step) over 201 entries.
 fn seed_facts() -> Vec<String> {
-    let read = |file: &str, like: &Body| {
-        fs::read_to_string(golden_path(file))
-            .map_err(|e| format!("{file}: cannot read: {e}"))
-            .and_then(|text| parse(file, &text, like))
-    };
     let mut problems = Vec::new();
     let mut check = |ok: bool, what: String| {
         if !ok {
@@ -563,7 +236,7 @@ fn seed_facts() -> Vec<String> {
             .map(|(_, v)| v.clone())
             .unwrap_or_default()
     };
-    match read("seed001_exponential_1mhz.txt", &Body::Periods(Vec::new())) {
+    match GOLDEN.read("seed001_exponential_1mhz.txt", &Body::Periods(Vec::new())) {
         Ok((header, Body::Periods(p))) => {
             let total: u64 = p.iter().map(|&t| u64::from(t)).sum();
             check(
@@ -594,7 +267,7 @@ fn seed_facts() -> Vec<String> {
         Ok(_) => unreachable!("parsed as periods"),
         Err(e) => check(false, e),
     }
-    match read(
+    match GOLDEN.read(
         "seed001_exponential_8_segments_1mhz.txt",
         &Body::Segments(Vec::new()),
     ) {
@@ -608,7 +281,7 @@ fn seed_facts() -> Vec<String> {
         Ok(_) => unreachable!("parsed as segments"),
         Err(e) => check(false, e),
     }
-    match read("seed004_linear_integer.txt", &Body::Periods(Vec::new())) {
+    match GOLDEN.read("seed004_linear_integer.txt", &Body::Periods(Vec::new())) {
         Ok((_, Body::Periods(p))) => check(
             p.len() == 201 && p.first() == Some(&50_000) && p.last() == Some(&5000),
             format!(

@@ -24,16 +24,15 @@
 //! A missing C compiler is a failure, not a skip: a silently skipped
 //! compatibility test promises nothing.
 
+mod common;
+
 use std::fmt;
-use std::fs;
-use std::path::{Path, PathBuf};
-use std::process::Command;
 use std::sync::OnceLock;
 
-use stepper_profiles::{
-    Arithmetic, Curve, Discretization, Error, Key, Linear, LinearExtent, Rounding, Spec, Timer,
-    Word, period_table,
-};
+use common::cc::CProgram;
+use common::lcg::Lcg;
+use common::seeds::{SEED004_INTEGER, integer_compat, seed004_ramp};
+use stepper_profiles::{Curve, Error, Key, Linear, LinearExtent, Spec, Timer, Word};
 
 /// Seed 004's `pulse()`, its globals and a checking `main`.
 const C_SOURCE: &str = r#"#include <stdint.h>
@@ -177,6 +176,18 @@ int main(int argc, char **argv)
 }
 "#;
 
+/// [`C_SOURCE`] and how to compile it.
+static C_PROGRAM: CProgram = CProgram {
+    dir: "seed004_c",
+    name: "pulse",
+    source: C_SOURCE,
+    flags: &["-O2", "-std=c99", "-Wall", "-Wextra"],
+    libs: &[],
+    what: "seed 004's pulse()",
+    what_in_full: "seed 004's integer pulse()",
+    executable: OnceLock::new(),
+};
+
 /// One call `pulse(f0, fmax, trans, ...)` on a timer: `len = trans + 1` entries.
 #[derive(Clone, Copy, Debug)]
 struct Call {
@@ -226,66 +237,18 @@ enum COutcome {
     Overflow(Vec<String>),
 }
 
-/// Compiles [`C_SOURCE`] once per test process and returns the executable.
-fn c_program() -> &'static Path {
-    static PROGRAM: OnceLock<PathBuf> = OnceLock::new();
-    PROGRAM.get_or_init(|| {
-        let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("seed004_c");
-        fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("cannot create {}: {e}", dir.display()));
-        // Build under per-process names, then rename into place, so that
-        // concurrent test runs never execute a half-written file.
-        let pid = std::process::id();
-        let source = dir.join(format!("pulse-{pid}.c"));
-        let built = dir.join(format!("pulse-{pid}"));
-        fs::write(&source, C_SOURCE)
-            .unwrap_or_else(|e| panic!("cannot write {}: {e}", source.display()));
-        let cc = std::env::var("CC").unwrap_or_else(|_| "cc".to_owned());
-        let output = Command::new(&cc)
-            .args(["-O2", "-std=c99", "-Wall", "-Wextra", "-o"])
-            .arg(&built)
-            .arg(&source)
-            .output()
-            .unwrap_or_else(|e| {
-                panic!(
-                    "cannot run the C compiler `{cc}` ({e}): this test compiles seed 004's \
-                     integer pulse() to check bit compatibility and needs a C compiler such as \
-                     gcc (set CC to use another one); it fails rather than skips"
-                )
-            });
-        assert!(
-            output.status.success(),
-            "expected `{cc}` to compile seed 004's pulse(), got {}:\n{}",
-            output.status,
-            String::from_utf8_lossy(&output.stderr)
-        );
-        let program = dir.join("pulse");
-        fs::rename(&built, &program)
-            .unwrap_or_else(|e| panic!("cannot move {} into place: {e}", built.display()));
-        let _ = fs::remove_file(&source);
-        program
-    })
-}
-
 /// Runs the compiled C code for `call`.
 fn run_c(call: &Call) -> COutcome {
-    let program = c_program();
-    let output = Command::new(program)
-        .args([
+    let stdout = C_PROGRAM.run(
+        [
             call.f0.to_string(),
             call.fmax.to_string(),
             call.len.to_string(),
             call.timer_hz.to_string(),
             call.ticks_per_step.to_string(),
-        ])
-        .output()
-        .unwrap_or_else(|e| panic!("cannot run {}: {e}", program.display()));
-    assert!(
-        output.status.success(),
-        "expected the C program to succeed for {call}, got {}:\n{}",
-        output.status,
-        String::from_utf8_lossy(&output.stderr)
+        ],
+        call,
     );
-    let stdout = String::from_utf8(output.stdout).expect("the C program prints ASCII");
     let overflows: Vec<String> = stdout
         .lines()
         .filter_map(|l| l.strip_prefix("overflow "))
@@ -321,7 +284,7 @@ fn run_c(call: &Call) -> COutcome {
 
 /// The spec that claims to reproduce `call`.
 fn compat_spec(call: &Call, word: Word) -> Spec {
-    Spec::new(
+    integer_compat(Spec::new(
         Curve::Linear(Linear {
             fmin: call.f0 as f64,
             fmax: call.fmax as f64,
@@ -332,10 +295,7 @@ fn compat_spec(call: &Call, word: Word) -> Spec {
             word,
             ticks_per_step: call.ticks_per_step,
         },
-    )
-    .with_discretization(Discretization::Index)
-    .with_rounding(Rounding::Truncate)
-    .with_arithmetic(Arithmetic::Integer)
+    ))
 }
 
 /// What one call amounted to.
@@ -424,18 +384,6 @@ fn compare(call: &Call, word: Word) -> Result<Verdict, String> {
     }
 }
 
-static SEED_TABLE: [u16; 201] = period_table!(
-    curve = linear,
-    fmin = 500,
-    fmax = 5000,
-    len = 201,
-    timer_hz = 50_000_000,
-    ticks_per_step = 2,
-    discretization = index,
-    rounding = truncate,
-    arithmetic = integer,
-);
-
 #[test]
 fn seed_call_matches_c_through_the_macro() {
     let COutcome::Table { tdata0, entries } = run_c(&SEED) else {
@@ -446,7 +394,7 @@ fn seed_call_matches_c_through_the_macro() {
     assert_eq!((entries[0].0, entries[200].0), (500, 5000));
     assert_eq!(entries[1].0, 611, "f[1] = isqrt(2 * 61875 + 250000)");
     let c: Vec<u32> = entries.iter().map(|&(_, r)| r).collect();
-    let from_macro: Vec<u32> = SEED_TABLE.iter().map(|&p| u32::from(p)).collect();
+    let from_macro: Vec<u32> = SEED004_INTEGER.iter().map(|&p| u32::from(p)).collect();
     assert_eq!(
         from_macro, c,
         "expected period_table!(... arithmetic = integer) to equal seed 004's C reloads"
@@ -491,27 +439,6 @@ fn corner_calls_match_c() {
             matches!(verdict, Verdict::Matched { .. }),
             "expected {call} to fit, got {verdict:?}"
         );
-    }
-}
-
-/// Knuth's MMIX linear congruential generator: a fixed, dependency-free stream.
-struct Lcg(u64);
-
-impl Lcg {
-    fn next_unit(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6_364_136_223_846_793_005)
-            .wrapping_add(1_442_695_040_888_963_407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    fn log_uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        (lo.ln() + self.next_unit() * (hi.ln() - lo.ln())).exp()
-    }
-
-    fn pick<T: Copy>(&mut self, items: &[T]) -> T {
-        items[((self.next_unit() * items.len() as f64) as usize).min(items.len() - 1)]
     }
 }
 
@@ -620,22 +547,7 @@ fn overflowing_calls_are_errors() {
     }
 
     // Frequencies must be whole numbers and fit a REG16.
-    let spec = |fmin: f64, fmax: f64| {
-        Spec::new(
-            Curve::Linear(Linear {
-                fmin,
-                fmax,
-                extent: LinearExtent::Len(201),
-            }),
-            Timer {
-                ticks_per_step: 2,
-                ..Timer::new(50_000_000)
-            },
-        )
-        .with_discretization(Discretization::Index)
-        .with_rounding(Rounding::Truncate)
-        .with_arithmetic(Arithmetic::Integer)
-    };
+    let spec = |fmin: f64, fmax: f64| integer_compat(seed004_ramp(fmin, fmax, 201));
     assert_eq!(
         spec(500.0, 5000.5).table().map(|t| t.periods.len()),
         Err(Error::NotWhole {

@@ -14,18 +14,15 @@
 //! A missing C compiler is a failure, not a skip: CI has one, and a silently
 //! skipped compatibility test promises nothing.
 
+mod common;
+
 use std::fmt;
-use std::fs;
-use std::path::{Path, PathBuf};
-use std::process::Command;
 use std::sync::OnceLock;
 
-use stepper_profiles::{
-    Arithmetic, Curve, Discretization, Rounding, Sigmoid, Spec, Timer, period_table,
-};
-
-/// The timer frequency hard-wired into the C function.
-const TIMER_HZ: u32 = 10_000_000;
+use common::cc::CProgram;
+use common::lcg::Lcg;
+use common::seeds::{SEED000_ORANGE_COMPAT, SEED000_TIMER_HZ, f32_compat, seed000};
+use stepper_profiles::{Curve, Spec};
 
 /// Seed 000's `CalculateSModelLine` and a `main` that runs it.
 ///
@@ -101,6 +98,19 @@ int main(int argc, char **argv)
 }
 "#;
 
+/// [`C_SOURCE`] and how to compile it: C99, and no fused multiply-add
+/// (`-ffp-contract=off`), so that every `float` operation rounds as written.
+static C_PROGRAM: CProgram = CProgram {
+    dir: "seed_c",
+    name: "calculate_s_model_line",
+    source: C_SOURCE,
+    flags: &["-O2", "-std=c99", "-ffp-contract=off", "-Wall", "-Wextra"],
+    libs: &["-lm"],
+    what: "seed 000's C function",
+    what_in_full: "seed 000's C function",
+    executable: OnceLock::new(),
+};
+
 /// One call `CalculateSModelLine(Freq, Period, len, fmax, fmin, flexible)`.
 #[derive(Clone, Copy, Debug)]
 struct Call {
@@ -153,25 +163,6 @@ const CORNER_CALLS: [Call; 10] = [
     call(333, 5600.0, 5599.0, 0.5),
 ];
 
-/// Knuth's MMIX linear congruential generator: a fixed, dependency-free stream.
-struct Lcg(u64);
-
-impl Lcg {
-    /// A uniform value in `[0, 1)` from the top 53 bits of the next state.
-    fn next_unit(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6_364_136_223_846_793_005)
-            .wrapping_add(1_442_695_040_888_963_407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    /// Log-uniform in `[lo, hi)`.
-    fn log_uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        (lo.ln() + self.next_unit() * (hi.ln() - lo.ln())).exp()
-    }
-}
-
 /// `count` parameter sets spread over the valid range, the same on every run:
 /// lengths 2 to 4096, `flexible` 0.5 to 20 (two decimals, so mostly not exact
 /// in binary), `fmin` from 153 Hz (some with a fraction), `fmax` up to 400 kHz.
@@ -191,54 +182,6 @@ fn generated_calls(count: usize) -> Vec<Call> {
         .collect()
 }
 
-/// Compiles [`C_SOURCE`] once per test process and returns the executable.
-fn c_program() -> &'static Path {
-    static PROGRAM: OnceLock<PathBuf> = OnceLock::new();
-    PROGRAM.get_or_init(|| {
-        let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("seed_c");
-        fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("cannot create {}: {e}", dir.display()));
-        // Build under per-process names, then rename into place, so that
-        // concurrent test runs never execute a half-written file.
-        let pid = std::process::id();
-        let source = dir.join(format!("calculate_s_model_line-{pid}.c"));
-        let built = dir.join(format!("calculate_s_model_line-{pid}"));
-        fs::write(&source, C_SOURCE)
-            .unwrap_or_else(|e| panic!("cannot write {}: {e}", source.display()));
-        let cc = std::env::var("CC").unwrap_or_else(|_| "cc".to_owned());
-        let output = Command::new(&cc)
-            .args([
-                "-O2",
-                "-std=c99",
-                "-ffp-contract=off",
-                "-Wall",
-                "-Wextra",
-                "-o",
-            ])
-            .arg(&built)
-            .arg(&source)
-            .arg("-lm")
-            .output()
-            .unwrap_or_else(|e| {
-                panic!(
-                    "cannot run the C compiler `{cc}` ({e}): this test compiles seed 000's C \
-                     function to check bit compatibility and needs a C compiler such as gcc \
-                     (set CC to use another one); it fails rather than skips"
-                )
-            });
-        assert!(
-            output.status.success(),
-            "expected `{cc}` to compile seed 000's C function, got {}:\n{}",
-            output.status,
-            String::from_utf8_lossy(&output.stderr)
-        );
-        let program = dir.join("calculate_s_model_line");
-        fs::rename(&built, &program)
-            .unwrap_or_else(|e| panic!("cannot move {} into place: {e}", built.display()));
-        let _ = fs::remove_file(&source);
-        program
-    })
-}
-
 /// One entry as the C program computed it.
 #[derive(Clone, Copy)]
 struct CEntry {
@@ -248,21 +191,15 @@ struct CEntry {
 
 /// Runs the compiled C function for `call`.
 fn run_c(call: &Call) -> Vec<CEntry> {
-    let program = c_program();
-    let output = Command::new(program)
-        .arg(call.len.to_string())
-        .arg(call.fmax.to_string())
-        .arg(call.fmin.to_string())
-        .arg(call.flexible.to_string())
-        .output()
-        .unwrap_or_else(|e| panic!("cannot run {}: {e}", program.display()));
-    assert!(
-        output.status.success(),
-        "expected the C program to succeed for {call}, got {}:\n{}",
-        output.status,
-        String::from_utf8_lossy(&output.stderr)
+    let stdout = C_PROGRAM.run(
+        [
+            call.len.to_string(),
+            call.fmax.to_string(),
+            call.fmin.to_string(),
+            call.flexible.to_string(),
+        ],
+        call,
     );
-    let stdout = String::from_utf8(output.stdout).expect("the C program prints ASCII");
     let entries: Vec<CEntry> = stdout
         .lines()
         .map(|line| {
@@ -285,18 +222,7 @@ fn run_c(call: &Call) -> Vec<CEntry> {
 
 /// The spec that claims to reproduce `call` bit for bit.
 fn compat_spec(call: &Call) -> Spec {
-    Spec::new(
-        Curve::Sigmoid(Sigmoid {
-            fmin: call.fmin,
-            fmax: call.fmax,
-            flexible: call.flexible,
-            len: call.len,
-        }),
-        Timer::new(TIMER_HZ),
-    )
-    .with_discretization(Discretization::Index)
-    .with_rounding(Rounding::Truncate)
-    .with_arithmetic(Arithmetic::F32)
+    f32_compat(seed000(call.len, call.fmax, call.fmin, call.flexible))
 }
 
 /// The mismatches of one call, described, and how many `fre[i]` differ in bits.
@@ -399,7 +325,7 @@ fn orange_seed_facts_hold_in_c() {
         "expected the orange call's first and last periods to be 19183 and 156"
     );
     let total: u64 = c.iter().map(|e| e.period as u64).sum();
-    let seconds = total as f64 / TIMER_HZ as f64;
+    let seconds = total as f64 / SEED000_TIMER_HZ as f64;
     assert!(
         (seconds - 0.412).abs() < 0.0005,
         "expected the orange table to play in about 0.412 s, got {seconds} s ({total} ticks)"
@@ -429,26 +355,17 @@ fn generated_calls_match_c() {
 
 #[test]
 fn macro_matches_c_for_the_orange_call() {
-    static PERIOD: [u16; 1000] = period_table!(
-        curve = sigmoid,
-        len = 1000,
-        fmin = 500,
-        fmax = 64000,
-        flexible = 8,
-        timer_hz = 10_000_000,
-        discretization = index,
-        rounding = truncate,
-        arithmetic = f32,
-    );
+    // The orange call through `period_table!`, in the compatibility mode.
+    let period = &SEED000_ORANGE_COMPAT;
     assert_eq!(
-        (PERIOD[0], PERIOD[999]),
+        (period[0], period[999]),
         (19183, 156),
         "expected the macro's orange table to run from 19183 to 156 ticks"
     );
     let c = run_c(&SEED_CALLS[1].1);
     let mismatches: Vec<String> = c
         .iter()
-        .zip(PERIOD.iter())
+        .zip(period.iter())
         .enumerate()
         .filter(|(_, (c, rust))| c.period != u32::from(**rust))
         .map(|(i, (c, rust))| {
