@@ -766,15 +766,20 @@ fn motor_from_args<L: Clone>(c: &mut Collector<'_, L>) -> Option<Motor> {
 }
 
 /// Places a motor error: at the value of its key, at `motor` for a table the
-/// motor cannot follow (at `torque_curve` when no `motor` names it), or on
-/// `whole`.
+/// motor cannot follow (when no `motor` names it: at `max_start_hz` for a
+/// start too fast, else at `torque_curve`), or on `whole`.
 pub fn locate_motor<L: Clone>(error: &MotorError, args: &[Arg<L>], whole: &L) -> Diagnostic<L> {
     let find = |k: Key| {
         args.iter()
             .find(|a| a.key == k.name())
             .map(|a| a.value_loc.clone())
     };
+    let inline = match error {
+        MotorError::Start { .. } => Key::MaxStartHz,
+        _ => Key::TorqueCurve,
+    };
     let loc = find(error.key())
+        .or_else(|| find(inline))
         .or_else(|| find(Key::TorqueCurve))
         .unwrap_or_else(|| whole.clone());
     Diagnostic {
