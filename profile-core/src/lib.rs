@@ -46,6 +46,8 @@ pub mod params;
 pub mod player;
 mod segments;
 mod sigmoid;
+#[cfg(feature = "std")]
+pub mod simulate;
 mod solve;
 mod spec;
 #[cfg(feature = "std")]

@@ -1,0 +1,396 @@
+//! Whether the rotor really follows a table: its dynamics integrated under
+//! the table's exact pulse train, and the steps it loses.
+//!
+//! [`Motor::check`] compares torques step by step; this module plays the
+//! pulses to a model of the rotor and watches it. The model is seed 001's
+//! `J θ'' + β θ' + k θ = T_d - T_z` with the two-phase hybrid stepper's
+//! sinusoidal torque for `k θ` and `T_d`:
+//!
+//! ```text
+//! J θ'' = T_peak(f) · sin(lag_e) - friction · sign(θ') - damping · θ'
+//! lag_e = (θ_cmd - θ) · (π/2) / θ_fullstep
+//! ```
+//!
+//! - `J` is the rotor and load inertia; `friction` a Coulomb torque that
+//!   opposes motion and holds the rotor still while the drive torque is
+//!   smaller (stiction); `damping` the viscous coefficient `β`.
+//! - `lag_e` is the electrical lag of the rotor behind the commanded angle: a
+//!   full step is 90° electrical (a 1.8° motor has 50 rotor teeth), the
+//!   torque is largest at a lag of one full step and changes sign beyond two,
+//!   where the rotor falls into the next stable position, four full steps
+//!   away. That is a slip: four full steps (`4 · microsteps` table steps) lost.
+//! - `T_peak(f)` is the pull-out torque curve at the commanded step frequency
+//!   `f`, [`TorqueCurve::torque`](crate::motor::TorqueCurve::torque). This is
+//!   a modelling choice: at 0 Hz the curve gives about the holding torque, the
+//!   amplitude of the static torque-angle curve; at speed the winding current
+//!   no longer reaches its set value (inductance, back EMF) and the torque the
+//!   motor can develop falls as the curve says, so the curve scales the whole
+//!   sine. With this choice the largest torque the model gives at a steady `f`
+//!   is the pull-out torque there, as measured. Beyond the curve's last point
+//!   the motor is not characterised and gives no torque, as in the check. The
+//!   safety factor is not applied: the simulation predicts what the motor
+//!   does, the check keeps a margin.
+//! - `θ_cmd` advances by one table step ([`Motor::step_radians`]) at each
+//!   pulse edge. The timer starts at `t = 0` and entry `k` elapses before
+//!   pulse `k + 1`, as a step interrupt plays a table: pulse `k` (from 1) is
+//!   at `t_k = (periods[0] + ... + periods[k-1]) / (timer_hz / ticks_per_step)`.
+//!   While entry `k` elapses the commanded frequency is `1 / period_k`; after
+//!   the last pulse it is 0 (the motor holds) and `θ_cmd` stays fixed for
+//!   [`SimOptions::settle_s`].
+//!
+//! The integrator is semi-implicit (symplectic) Euler with a fixed step of at
+//! most [`SimOptions::dt_s`], shortened so that every pulse edge falls on a
+//! step boundary (no edge is moved by the grid), with friction applied as an
+//! impulse that can stop the rotor but never reverse it within a step. Halve
+//! `dt_s` to check that it is small enough: the results should not change.
+//!
+//! Not modelled: detent torque, mid-band resonance, the driver's current
+//! regulation, the electrical time constant within a step.
+//!
+//! ```
+//! use profile_core::motor::{Motor, TorqueCurve};
+//! use profile_core::simulate::{self, SimOptions};
+//! use profile_core::{Curve, Linear, LinearExtent, Spec, Timer};
+//!
+//! let motor = Motor {
+//!     step_angle: 1.8,
+//!     microsteps: 1,
+//!     rotor_inertia: 5.4e-6,
+//!     load_inertia: 2.0e-5,
+//!     torque_curve: TorqueCurve::new(&[(0.0, 0.40), (1000.0, 0.33), (2000.0, 0.24)]).unwrap(),
+//!     friction: 0.02,
+//!     damping: 1e-4,
+//!     safety: 1.5,
+//!     max_start_hz: None,
+//! };
+//! let spec = Spec::new(
+//!     Curve::Linear(Linear { fmin: 300.0, fmax: 1000.0, extent: LinearExtent::Len(200) }),
+//!     Timer::new(1_000_000),
+//! );
+//! let table = spec.table()?;
+//! let options = SimOptions { dt_s: 2e-6, settle_s: 0.05 };
+//! let result = simulate::run(&motor, &spec, &table.periods, &options).expect("valid input");
+//! // The rotor follows the ramp, then stops from 1000 full steps/s at once:
+//! // it swings past its final position but falls back into it.
+//! assert_eq!((result.lost_steps, result.slips), (0, 0));
+//! // Each full step moves the field 90° electrical; the rotor never lags
+//! // the 180° at which it would slip.
+//! assert!(result.max_lag_deg >= 90.0 && result.max_lag_deg < 180.0);
+//! assert!(result.settled);
+//! # Ok::<(), profile_core::Error>(())
+//! ```
+
+use core::f64::consts::{FRAC_PI_2, PI, TAU};
+use core::fmt;
+
+use crate::motor::{Motor, MotorError};
+use crate::spec::Spec;
+
+/// The most integration steps one run may take. A run that would take more
+/// is refused with [`SimError::TooManySteps`] before it starts (about a
+/// second of computation).
+pub const MAX_STEPS: u64 = 20_000_000;
+
+/// How to integrate.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SimOptions {
+    /// Largest integration step, in s. A small fraction of the shortest
+    /// period and of the rotor's natural period (see [`SimOptions::suggested`]).
+    pub dt_s: f64,
+    /// Time to keep integrating after the last pulse, with `θ_cmd` fixed, in s.
+    pub settle_s: f64,
+}
+
+impl SimOptions {
+    /// A step of a fiftieth of the shortest period and a two-hundredth of the
+    /// rotor's natural period at holding torque, whichever is shorter, and a
+    /// settle time of ten natural periods (at least 10 ms).
+    ///
+    /// The natural angular frequency is `sqrt(T_peak(0) · (π/2) / θ_fullstep / J)`:
+    /// the rotor's small oscillations about a held position.
+    pub fn suggested(motor: &Motor, spec: &Spec, periods: &[u32]) -> Self {
+        let per_second = ticks_per_second(spec);
+        let shortest = periods
+            .iter()
+            .filter(|&&p| p > 0)
+            .min()
+            .map_or(f64::INFINITY, |&p| p as f64 / per_second);
+        let inertia = motor.rotor_inertia + motor.load_inertia;
+        let stiffness = motor.torque_curve.torque(0.0) * FRAC_PI_2 / motor.step_angle.to_radians();
+        let natural = TAU / libm::sqrt(stiffness / inertia);
+        let natural = if natural.is_finite() && natural > 0.0 {
+            natural
+        } else {
+            1e-3
+        };
+        SimOptions {
+            dt_s: (shortest / 50.0).min(natural / 200.0),
+            settle_s: (10.0 * natural).max(0.01),
+        }
+    }
+}
+
+/// What the rotor did.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SimResult {
+    /// Table steps lost by the end, after settling: the rotor's final
+    /// electrical lag rounded to whole electrical turns, each
+    /// `4 · microsteps` table steps. Positive when the rotor ends behind the
+    /// command, negative when it overshot into a later position.
+    pub lost_steps: i64,
+    /// Times the rotor fell into another stable position (its lag crossed
+    /// ±180° electrical from the position it was in), either way.
+    pub slips: u32,
+    /// Pulses given when the rotor first slipped (`periods.len()` when it
+    /// slipped only after the last pulse), if it did.
+    pub first_slip_pulse: Option<u32>,
+    /// Largest electrical lag `|lag_e|` while pulses were given, in degrees:
+    /// below 90° the motor had torque to spare; above 180° it slipped.
+    pub max_lag_deg: f64,
+    /// The same lag in table steps (`90°` is one full step, `microsteps`
+    /// table steps).
+    pub max_lag_steps: f64,
+    /// Pulses given when the largest lag occurred.
+    pub max_lag_pulse: u32,
+    /// Largest `θ - θ_cmd` after the last pulse, in table steps: how far the
+    /// rotor swings past its final position (0 when it never reaches it).
+    pub overshoot_steps: f64,
+    /// `θ_cmd - θ` at the end, in table steps.
+    pub final_error_steps: f64,
+    /// Whether, at the end, the rotor no longer had the energy to leave the
+    /// stable position it was in, so that `lost_steps` is final. A longer
+    /// `settle_s` (or some damping or friction) settles it.
+    pub settled: bool,
+    /// Integration steps taken.
+    pub steps: u64,
+}
+
+/// Why a simulation did not run.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum SimError {
+    /// The motor's parameters are invalid.
+    Motor(MotorError),
+    /// The spec's timer has `timer_hz` or `ticks_per_step` 0.
+    Timer,
+    /// `dt_s` is not a finite number above 0, or `settle_s` not a finite
+    /// number, 0 or more.
+    Options {
+        /// `dt_s`.
+        dt_s: f64,
+        /// `settle_s`.
+        settle_s: f64,
+    },
+    /// The run would take more than [`MAX_STEPS`] integration steps.
+    TooManySteps {
+        /// Steps the run needs (at least this many).
+        needed: u64,
+        /// [`MAX_STEPS`].
+        max: u64,
+    },
+}
+
+impl fmt::Display for SimError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            SimError::Motor(e) => e.fmt(f),
+            SimError::Timer => {
+                f.write_str("the timer must have `timer_hz` and `ticks_per_step` above 0")
+            }
+            SimError::Options { dt_s, settle_s } => write!(
+                f,
+                "the integration step must be a finite number of seconds above 0 and the settle time one of 0 or more (got dt_s = {dt_s}, settle_s = {settle_s})"
+            ),
+            SimError::TooManySteps { needed, max } => write!(
+                f,
+                "the simulation needs {needed} integration steps, more than the {max} allowed: use a longer step"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for SimError {}
+
+impl From<MotorError> for SimError {
+    fn from(e: MotorError) -> Self {
+        SimError::Motor(e)
+    }
+}
+
+fn ticks_per_second(spec: &Spec) -> f64 {
+    spec.timer.timer_hz as f64 / spec.timer.ticks_per_step as f64
+}
+
+/// Integration steps for an interval of `duration` s, at most `dt` each.
+fn substeps(duration: f64, dt: f64) -> f64 {
+    libm::ceil(duration / dt).max(0.0)
+}
+
+/// The rotor's state and what has been seen of it.
+struct Rotor {
+    theta: f64,
+    omega: f64,
+    /// Electrical radians per mechanical radian: `(π/2) / θ_fullstep`.
+    poles: f64,
+    inertia: f64,
+    friction: f64,
+    damping: f64,
+    /// The stable position the rotor is in, in electrical turns behind the command.
+    well: i64,
+    slips: u32,
+    first_slip: Option<u32>,
+    /// Pulses given so far.
+    pulses: u32,
+    steps: u64,
+}
+
+impl Rotor {
+    fn lag(&self, cmd: f64) -> f64 {
+        self.poles * (cmd - self.theta)
+    }
+
+    /// `n` semi-implicit Euler steps of `h` s with `θ_cmd = cmd` and a torque
+    /// amplitude `peak`; `each(lag_e, θ)` after every step.
+    fn advance(&mut self, cmd: f64, peak: f64, n: u64, h: f64, mut each: impl FnMut(f64, f64)) {
+        let impulse = self.friction * h / self.inertia;
+        for _ in 0..n {
+            let drive = peak * libm::sin(self.lag(cmd)) - self.damping * self.omega;
+            let mut omega = self.omega + h * drive / self.inertia;
+            // Friction opposes the motion and may stop it, never reverse it.
+            if omega > impulse {
+                omega -= impulse;
+            } else if omega < -impulse {
+                omega += impulse;
+            } else {
+                omega = 0.0;
+            }
+            self.omega = omega;
+            self.theta += h * omega;
+            self.steps += 1;
+            let lag = self.lag(cmd);
+            // Into the next stable position when the lag passes ±180°
+            // electrical from the current one.
+            let rel = lag - TAU * self.well as f64;
+            if !(-PI..=PI).contains(&rel) {
+                let well = libm::round(lag / TAU) as i64;
+                self.slips = self
+                    .slips
+                    .saturating_add(well.abs_diff(self.well).min(u32::MAX as u64) as u32);
+                self.well = well;
+                self.first_slip.get_or_insert(self.pulses);
+            }
+            each(lag, self.theta);
+        }
+    }
+}
+
+/// Plays `periods` (a table of `spec`, or any pulse train in its timer's
+/// ticks) to `motor` and reports what the rotor did. See the module
+/// documentation for the model.
+///
+/// Errors, never panics: an invalid motor, a timer at 0 Hz, a step that is
+/// not a finite positive number, or a run of more than [`MAX_STEPS`] steps.
+pub fn run(
+    motor: &Motor,
+    spec: &Spec,
+    periods: &[u32],
+    options: &SimOptions,
+) -> Result<SimResult, SimError> {
+    motor.validate()?;
+    if spec.timer.timer_hz == 0 || spec.timer.ticks_per_step == 0 {
+        return Err(SimError::Timer);
+    }
+    let SimOptions { dt_s, settle_s } = *options;
+    if !(dt_s.is_finite() && dt_s > 0.0 && settle_s.is_finite() && settle_s >= 0.0) {
+        return Err(SimError::Options { dt_s, settle_s });
+    }
+    let per_second = ticks_per_second(spec);
+    // Count the steps first: refuse a run that is too long before it starts.
+    let mut needed = substeps(settle_s, dt_s);
+    for &p in periods {
+        needed += substeps(p as f64 / per_second, dt_s);
+        if needed > MAX_STEPS as f64 {
+            break;
+        }
+    }
+    if needed > MAX_STEPS as f64 {
+        return Err(SimError::TooManySteps {
+            needed: if needed < u64::MAX as f64 {
+                needed as u64
+            } else {
+                u64::MAX
+            },
+            max: MAX_STEPS,
+        });
+    }
+
+    let step = motor.step_radians();
+    let poles = FRAC_PI_2 / motor.step_angle.to_radians();
+    // Electrical radians to table steps.
+    let to_steps = 1.0 / (poles * step);
+    let mut rotor = Rotor {
+        theta: 0.0,
+        omega: 0.0,
+        poles,
+        inertia: motor.rotor_inertia + motor.load_inertia,
+        friction: motor.friction,
+        damping: motor.damping,
+        well: 0,
+        slips: 0,
+        first_slip: None,
+        pulses: 0,
+        steps: 0,
+    };
+    let mut max_lag = 0.0f64;
+    let mut max_lag_pulse = 0u32;
+    for (k, &p) in periods.iter().enumerate() {
+        let cmd = k as f64 * step;
+        let duration = p as f64 / per_second;
+        let n = substeps(duration, dt_s);
+        let h = if n > 0.0 { duration / n } else { 0.0 };
+        let peak = motor.torque_curve.torque(per_second / p as f64);
+        rotor.advance(cmd, peak, n as u64, h, |lag, _| {
+            if lag.abs() > max_lag {
+                max_lag = lag.abs();
+                max_lag_pulse = k as u32;
+            }
+        });
+        // The pulse at the end of entry k: one more table step commanded.
+        rotor.pulses = rotor.pulses.saturating_add(1);
+        let lag = rotor.lag(cmd + step);
+        if lag.abs() > max_lag {
+            max_lag = lag.abs();
+            max_lag_pulse = k as u32 + 1;
+        }
+    }
+
+    // Settle with the command fixed; the motor holds (0 Hz on the curve).
+    let cmd = periods.len() as f64 * step;
+    let holding = motor.torque_curve.torque(0.0);
+    let n = substeps(settle_s, dt_s);
+    let h = if n > 0.0 { settle_s / n } else { 0.0 };
+    let mut overshoot = 0.0f64;
+    rotor.advance(cmd, holding, n as u64, h, |_, theta| {
+        overshoot = overshoot.max(theta - cmd);
+    });
+    // Trapped: kinetic plus potential energy within the well below the
+    // barrier at ±180° electrical, 2 T / poles above its bottom.
+    let lag = rotor.lag(cmd);
+    let rel = lag - TAU * libm::round(lag / TAU);
+    let energy =
+        0.5 * rotor.inertia * rotor.omega * rotor.omega + holding / poles * (1.0 - libm::cos(rel));
+    let settled = energy < 2.0 * holding / poles;
+    let turns = libm::round(lag / TAU);
+    Ok(SimResult {
+        lost_steps: (turns as i64).saturating_mul(4 * motor.microsteps as i64),
+        slips: rotor.slips,
+        first_slip_pulse: rotor.first_slip,
+        max_lag_deg: max_lag.to_degrees(),
+        max_lag_steps: max_lag * to_steps,
+        max_lag_pulse,
+        overshoot_steps: (overshoot.max(0.0)) / step,
+        final_error_steps: lag * to_steps,
+        settled,
+        steps: rotor.steps,
+    })
+}
