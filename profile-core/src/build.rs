@@ -412,6 +412,7 @@ impl Profiles {
                 name: name.get_ref().clone(),
                 table,
                 torque,
+                motor: parsed.motor,
             });
         }
         if !diagnostics.is_empty() {

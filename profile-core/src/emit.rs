@@ -52,6 +52,10 @@ pub struct Profile {
     pub table: Generated,
     /// Where its motor has the least torque to spare, when it names one.
     pub torque: Option<crate::motor::TorqueFigures>,
+    /// The motor it drives, when it names one: for plots and simulations
+    /// ([`Motor::check_with`](crate::motor::Motor::check_with),
+    /// [`simulate::run`](crate::simulate::run)).
+    pub motor: Option<crate::motor::Motor>,
 }
 
 /// Rust source of an array expression holding `periods` as `word`s:
