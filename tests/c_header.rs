@@ -103,6 +103,11 @@ fn expected(profiles: &Profiles) -> BTreeMap<String, BTreeMap<String, Figure>> {
                 m.insert("DURATION_S".into(), float(f.duration_s));
             }
         }
+        // A profile that names a motor: where its torque margin is smallest.
+        if let Some(t) = &p.torque {
+            m.insert("TORQUE_MARGIN_NM".into(), float(t.min_margin_nm));
+            m.insert("TORQUE_MARGIN_STEP".into(), int(u64::from(t.step)));
+        }
         all.insert(p.name.clone(), m);
     }
     all

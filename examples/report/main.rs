@@ -7,8 +7,9 @@
 //!
 //! PATH defaults to the `profiles.toml` at the root of this repository.
 //! Output goes to `target/profiles/` (one SVG and one CSV per profile, an
-//! overview, `profiles.h`). `--docs` also regenerates the figures under
-//! `docs/` that the README shows. A mistake in the file prints
+//! overview, `profiles.h`, and `NAME_torque.svg` for each profile that names
+//! a motor). `--docs` also regenerates the figures under `docs/` that the
+//! README shows. A mistake in the file prints
 //! `file:line:col: message` and exits with status 1.
 
 mod plots;
@@ -21,6 +22,9 @@ use std::time::Duration;
 use plotters::style::RGBColor;
 use profile_core::build::Profiles;
 use profile_core::emit::{Generated, Profile};
+use profile_core::motor::Motor;
+use profile_core::player::{Player, Ramp};
+use profile_core::simulate::{self, SimOptions, SimResult};
 use profile_core::{Discretization, Error, Rounding, Spec, Table, Word};
 
 use plots::Series;
@@ -167,6 +171,79 @@ fn print_accuracy(profiles: &[Profile]) -> Result<(), Error> {
     Ok(())
 }
 
+/// The move a `Player` plays from `table`: up it and down it again.
+fn round_trip(table: &[u32]) -> Vec<u32> {
+    let mut player = Player::new(Ramp::steps(table));
+    player.start(2 * table.len() as u32);
+    std::iter::from_fn(|| player.next_period()).collect()
+}
+
+/// The motor-bound profile's move (up the table and down), simulated.
+fn simulate_move(motor: &Motor, spec: &Spec, table: &[u32]) -> Result<SimResult, String> {
+    let moves = round_trip(table);
+    let options = SimOptions::suggested(motor, spec, &moves);
+    simulate::run(motor, spec, &moves, &options).map_err(|e| e.to_string())
+}
+
+/// For each profile that names a motor: the smallest torque margin of the
+/// compile-time check and where it is, and the simulated move.
+fn print_motors(profiles: &[Profile]) {
+    let bound: Vec<&Profile> = profiles.iter().filter(|p| p.motor.is_some()).collect();
+    if bound.is_empty() {
+        return;
+    }
+    println!(
+        "\nMotor torque (profiles that name a motor; the move is the table up and down again, simulated):"
+    );
+    println!(
+        "{:<21} {:>10} {:>6} {:>9} {:>9} {:>9}   {:>5} {:>5} {:>8} {:>9}",
+        "profile",
+        "margin",
+        "step",
+        "at Hz",
+        "needed",
+        "available",
+        "lost",
+        "slips",
+        "max lag",
+        "overshoot"
+    );
+    println!(
+        "{:<21} {:>10} {:>6} {:>9} {:>9} {:>9}   {:>5} {:>5} {:>8} {:>9}",
+        "", "N·m", "", "", "N·m", "N·m", "steps", "", "°el", "steps"
+    );
+    for p in bound {
+        let (Some(motor), Some(t)) = (&p.motor, &p.torque) else {
+            continue;
+        };
+        let sim = match simulate_move(motor, p.table.spec(), &p.table.step_periods()) {
+            Ok(r) => format!(
+                "{:>5} {:>5} {:>8.1} {:>9.3}",
+                r.lost_steps, r.slips, r.max_lag_deg, r.overshoot_steps
+            ),
+            Err(e) => format!("simulation: {e}"),
+        };
+        println!(
+            "{:<21} {:>10.4} {:>6} {:>9.1} {:>9.4} {:>9.4}   {sim}",
+            p.name, t.min_margin_nm, t.step, t.hz, t.needed_nm, t.available_nm
+        );
+    }
+}
+
+/// Needed and available torque at every edge of a motor-bound profile.
+fn write_torque_plot(p: &Profile, path: &Path) -> Result<(), Box<dyn std::error::Error>> {
+    let Some(motor) = &p.motor else {
+        return Ok(());
+    };
+    let mut edges = Vec::new();
+    motor.check_with(
+        p.table.spec(),
+        &p.table.step_periods(),
+        |step, hz, needed, available| edges.push((step, hz, needed, available)),
+    )?;
+    plots::torque(path, &p.name, &edges, motor.torque_curve.points())
+}
+
 fn series(label: &str, color: RGBColor, t: &Table) -> Series {
     let tps = t.spec.timer.timer_hz as f64 / t.spec.timer.ticks_per_step as f64;
     Series::from_periods(label, color, &t.periods, tps)
@@ -194,6 +271,7 @@ fn write_outputs(profiles: &Profiles, out: &Path) -> Result<(), Box<dyn std::err
             csv.push_str(&format!("{k},{period},{t:.9},{f:.6}\n"));
         }
         std::fs::write(out.join(format!("{}.csv", p.name)), csv)?;
+        write_torque_plot(p, &out.join(format!("{}_torque.svg", p.name)))?;
         overview.push(s);
     }
     plots::overlay(
@@ -275,6 +353,15 @@ fn write_docs(profiles: &Profiles, docs: &Path) -> Result<(), Box<dyn std::error
         "One sigmoid (500 -> 64000 Hz, 1000 steps, flexible 8), three discretizations",
         &sides,
     )?;
+    // The README's worked example: a real motor on the jerk-limited ramp.
+    let Some(worked) = profiles
+        .profiles()
+        .iter()
+        .find(|p| p.name == "jerk_limited" && p.motor.is_some())
+    else {
+        return Err("profile `jerk_limited` with a motor is missing from the file".into());
+    };
+    write_torque_plot(worked, &docs.join("motor_torque.svg"))?;
     Ok(())
 }
 
@@ -323,6 +410,7 @@ fn main() -> ExitCode {
         eprintln!("{e}");
         return ExitCode::FAILURE;
     }
+    print_motors(profiles.profiles());
     let target =
         std::env::var_os("CARGO_TARGET_DIR").map_or_else(|| root.join("target"), PathBuf::from);
     let out = target.join("profiles");
@@ -339,7 +427,9 @@ fn main() -> ExitCode {
             eprintln!("cannot write the docs figures: {e}");
             return ExitCode::FAILURE;
         }
-        println!("wrote docs/seed000_curves.svg and docs/discretizations.svg");
+        println!(
+            "wrote docs/seed000_curves.svg, docs/discretizations.svg and docs/motor_torque.svg"
+        );
     }
     ExitCode::SUCCESS
 }

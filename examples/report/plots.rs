@@ -74,8 +74,44 @@ fn chart<DB: DrawingBackend>(
 where
     DB::ErrorType: 'static,
 {
-    let (x0, x1) = bounds(series.iter().flat_map(|(_, p)| p.iter().map(|q| q.0)));
-    let (y0, y1) = bounds(series.iter().flat_map(|(_, p)| p.iter().map(|q| q.1)));
+    let lines: Vec<Line> = series
+        .iter()
+        .map(|(s, points)| Line {
+            label: s.label.clone(),
+            color: s.color,
+            points: points.clone(),
+        })
+        .collect();
+    chart_lines(
+        area,
+        caption,
+        x_desc,
+        y_desc,
+        &lines,
+        Some(SeriesLabelPosition::LowerRight),
+    )
+}
+
+/// One labelled line of a chart.
+pub struct Line {
+    pub label: String,
+    pub color: RGBColor,
+    pub points: Vec<(f64, f64)>,
+}
+
+fn chart_lines<DB: DrawingBackend>(
+    area: &DrawingArea<DB, plotters::coord::Shift>,
+    caption: &str,
+    x_desc: &str,
+    y_desc: &str,
+    series: &[Line],
+    legend: Option<SeriesLabelPosition>,
+) -> PlotResult
+where
+    DB::ErrorType: 'static,
+{
+    let (x0, x1) = bounds(series.iter().flat_map(|l| l.points.iter().map(|q| q.0)));
+    let (y0, y1) = bounds(series.iter().flat_map(|l| l.points.iter().map(|q| q.1)));
     let mut chart = ChartBuilder::on(area)
         .caption(caption, ("sans-serif", 18))
         .margin(12)
@@ -87,11 +123,11 @@ where
         .x_desc(x_desc)
         .y_desc(y_desc)
         .draw()?;
-    for (s, points) in series {
+    for s in series {
         let color = s.color;
         chart
             .draw_series(LineSeries::new(
-                points.iter().copied(),
+                s.points.iter().copied(),
                 color.stroke_width(2),
             ))?
             .label(s.label.clone())
@@ -100,11 +136,41 @@ where
             });
     }
     if series.len() > 1 {
+        let position = legend.unwrap_or_else(|| {
+            // At the right, in the widest empty band between the lines.
+            let (width, height) = chart.plotting_area().dim_in_pixel();
+            let mut ys: Vec<f64> = series
+                .iter()
+                .flat_map(|l| l.points.iter())
+                .filter(|p| p.0 >= x0 + (x1 - x0) * 0.4)
+                .map(|p| p.1)
+                .chain([y0, y1])
+                .collect();
+            ys.sort_by(f64::total_cmp);
+            let (lo, hi) = ys
+                .windows(2)
+                .map(|w| (w[0], w[1]))
+                .fold((y0, y0), |best, gap| {
+                    if gap.1 - gap.0 > best.1 - best.0 {
+                        gap
+                    } else {
+                        best
+                    }
+                });
+            let middle = (y1 - (lo + hi) / 2.0) / (y1 - y0) * height as f64;
+            let box_height = 20.0 * series.len() as f64 + 10.0;
+            let box_width =
+                7.0 * series.iter().map(|l| l.label.len()).max().unwrap_or(0) as f64 + 60.0;
+            SeriesLabelPosition::Coordinate(
+                (width as f64 - box_width - 10.0).max(0.0) as i32,
+                (middle - box_height / 2.0).max(0.0) as i32,
+            )
+        });
         chart
             .configure_series_labels()
             .border_style(BLACK)
             .background_style(WHITE.mix(0.8))
-            .position(SeriesLabelPosition::LowerRight)
+            .position(position)
             .draw()?;
     }
     Ok(())
@@ -188,6 +254,75 @@ pub fn side_by_side(path: &Path, title: &str, series: &[Series]) -> PlotResult {
             &[(s, s.steps.clone())],
         )?;
     }
+    root.present()?;
+    Ok(())
+}
+
+/// A motor-bound profile: the torque each edge needs against the torque the
+/// motor gives there, against step and against step frequency.
+/// `edges` holds `(step, step frequency in Hz, needed N·m, available N·m)`;
+/// `curve` the pull-out curve before the safety factor, `(Hz, N·m)`.
+pub fn torque(
+    path: &Path,
+    title: &str,
+    edges: &[(u32, f64, f64, f64)],
+    curve: &[(f64, f64)],
+) -> PlotResult {
+    let root = SVGBackend::new(path, (900, 760)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let areas = root.split_evenly((2, 1));
+    let needed = RGBColor(0xd6, 0x27, 0x28);
+    let available = RGBColor(0x1f, 0x77, 0xb4);
+    let pull_out = RGBColor(0x80, 0x80, 0x80);
+    let line = |label: &str, color, points: Vec<(f64, f64)>| Line {
+        label: label.to_string(),
+        color,
+        points,
+    };
+    chart_lines(
+        &areas[0],
+        &format!("{title}: torque against step"),
+        "step",
+        "torque (N·m)",
+        &[
+            line(
+                "needed: J α + friction + damping ω",
+                needed,
+                edges.iter().map(|e| (e.0 as f64, e.2)).collect(),
+            ),
+            line(
+                "available: pull-out curve / safety",
+                available,
+                edges.iter().map(|e| (e.0 as f64, e.3)).collect(),
+            ),
+        ],
+        None,
+    )?;
+    // The pull-out curve over the frequencies the ramp covers.
+    let top = edges.iter().map(|e| e.1).fold(0.0, f64::max);
+    let mut outline: Vec<(f64, f64)> = curve.iter().copied().filter(|p| p.0 <= top).collect();
+    if let Some(&(hz, nm)) = curve.iter().find(|p| p.0 > top) {
+        // Up to the ramp's top, interpolated.
+        let &(h0, n0) = outline.last().unwrap_or(&(hz, nm));
+        let t = if hz > h0 { (top - h0) / (hz - h0) } else { 0.0 };
+        outline.push((top, n0 + (nm - n0) * t));
+    }
+    chart_lines(
+        &areas[1],
+        &format!("{title}: torque against step frequency"),
+        "step frequency (Hz)",
+        "torque (N·m)",
+        &[
+            line("needed", needed, edges.iter().map(|e| (e.1, e.2)).collect()),
+            line(
+                "available",
+                available,
+                edges.iter().map(|e| (e.1, e.3)).collect(),
+            ),
+            line("pull-out curve", pull_out, outline),
+        ],
+        None,
+    )?;
     root.present()?;
     Ok(())
 }
