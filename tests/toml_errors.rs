@@ -42,6 +42,19 @@ const REQUIRED: &[&str] = &[
     "several_errors",
     "no_profiles",
     "missing_file",
+    // The motor: its parameters, names, and ramps it cannot follow.
+    "motor_step_angle_zero",
+    "motor_microsteps_zero",
+    "motor_rotor_inertia_nan",
+    "motor_safety_below_one",
+    "motor_curve_not_rising",
+    "motor_curve_too_many_points",
+    "motor_curve_not_points",
+    "motor_missing_keys",
+    "motor_unknown",
+    "motor_no_motors",
+    "motor_cannot_follow",
+    "motor_start_too_fast",
 ];
 
 /// The file named in messages, as `include_profiles!("profiles.toml")` names it.

@@ -1,0 +1,601 @@
+//! The motor model: the compile-time torque check (`Motor::check`) and the
+//! step-loss simulation (`simulate::run`) on the same ramps.
+//!
+//! The motor of most tests is a NEMA 17 with a 2.0e-5 kg·m² load, the
+//! figures of `tests/ui/motor_*.rs` and `tests/toml_errors/motor_*.toml`
+//! (whose messages are pinned there). Moves are played as firmware plays
+//! them, with `Player`: up the table and down it again, ending at rest.
+//!
+//! Simulations print their figures (`cargo test --test motor -- --nocapture`).
+
+use profile_core::build::Profiles;
+use profile_core::emit::Generated;
+use profile_core::motor::{MAX_CURVE_POINTS, Motor, MotorError, TorqueCurve};
+use profile_core::player::{Player, Ramp};
+use profile_core::simulate::{self, MAX_STEPS, SimError, SimOptions, SimResult};
+use profile_core::{Curve, Key, Linear, LinearExtent, Spec, Timer};
+use stepper_profiles::period_table;
+
+/// Pull-out torque against full steps per second, N·m.
+const CURVE: [(f64, f64); 6] = [
+    (0.0, 0.40),
+    (500.0, 0.38),
+    (1000.0, 0.33),
+    (2000.0, 0.24),
+    (4000.0, 0.12),
+    (6000.0, 0.06),
+];
+
+/// The tests' motor at `microsteps`: its curve in the table's step frequency.
+fn nema17(microsteps: u32) -> Motor {
+    let points: Vec<(f64, f64)> = CURVE
+        .iter()
+        .map(|&(hz, nm)| (hz * microsteps as f64, nm))
+        .collect();
+    Motor {
+        step_angle: 1.8,
+        microsteps,
+        rotor_inertia: 5.4e-6,
+        load_inertia: 2.0e-5,
+        torque_curve: TorqueCurve::new(&points).unwrap(),
+        friction: 0.02,
+        damping: 0.0,
+        safety: 1.5,
+        max_start_hz: Some(1200.0 * microsteps as f64),
+    }
+}
+
+/// A constant-acceleration ramp from 300 to 2000 full steps/s at `accel`
+/// full steps/s², in table steps of `microsteps`.
+fn ramp(accel: f64, microsteps: u32) -> (Spec, Vec<u32>) {
+    let k = microsteps as f64;
+    let timer = if microsteps == 1 {
+        1_000_000
+    } else {
+        10_000_000
+    };
+    let spec = Spec::new(
+        Curve::Linear(Linear {
+            fmin: 300.0 * k,
+            fmax: 2000.0 * k,
+            extent: LinearExtent::Accel(accel * k),
+        }),
+        Timer::new(timer),
+    );
+    let periods = spec.table().unwrap().periods;
+    (spec, periods)
+}
+
+/// The move a `Player` plays from `table`: up it and down it again.
+fn round_trip(table: &[u32]) -> Vec<u32> {
+    let mut player = Player::new(Ramp::steps(table));
+    player.start(2 * table.len() as u32);
+    std::iter::from_fn(|| player.next_period()).collect()
+}
+
+fn simulate(motor: &Motor, spec: &Spec, periods: &[u32], options: &SimOptions) -> SimResult {
+    let result = simulate::run(motor, spec, periods, options).unwrap();
+    println!(
+        "  {} pulses, dt {:.3e} s: lost {} steps, {} slips (first at pulse {:?}), max lag {:.2}° ({:.3} steps) at pulse {}, overshoot {:.4} steps, final error {:.4} steps, settled {}, {} integration steps",
+        periods.len(),
+        options.dt_s,
+        result.lost_steps,
+        result.slips,
+        result.first_slip_pulse,
+        result.max_lag_deg,
+        result.max_lag_steps,
+        result.max_lag_pulse,
+        result.overshoot_steps,
+        result.final_error_steps,
+        result.settled,
+        result.steps
+    );
+    result
+}
+
+#[test]
+fn torque_curve_interpolates_and_gives_nothing_beyond_its_last_point() {
+    let c = TorqueCurve::new(&[(100.0, 0.4), (1000.0, 0.3), (3000.0, 0.1)]).unwrap();
+    assert_eq!(c.points(), [(100.0, 0.4), (1000.0, 0.3), (3000.0, 0.1)]);
+    assert_eq!(c.top(), 3000.0);
+    // Below the first point, the first torque holds.
+    assert_eq!(c.torque(0.0), 0.4);
+    assert_eq!(c.torque(100.0), 0.4);
+    // Linear between points.
+    assert!((c.torque(550.0) - 0.35).abs() < 1e-12);
+    assert_eq!(c.torque(1000.0), 0.3);
+    assert!((c.torque(2000.0) - 0.2).abs() < 1e-12);
+    assert!((c.torque(2500.0) - 0.15).abs() < 1e-12);
+    // At the last point its torque; beyond it the motor is not
+    // characterised and gives nothing.
+    assert_eq!(c.torque(3000.0), 0.1);
+    assert_eq!(c.torque(3000.001), 0.0);
+    assert_eq!(c.torque(f64::INFINITY), 0.0);
+    // One point: a flat curve up to its frequency.
+    let one = TorqueCurve::new(&[(500.0, 0.2)]).unwrap();
+    assert_eq!(
+        (one.torque(0.0), one.torque(500.0), one.torque(501.0)),
+        (0.2, 0.2, 0.0)
+    );
+    // From 1 to MAX_CURVE_POINTS points.
+    assert!(TorqueCurve::new(&[]).is_none());
+    assert!(TorqueCurve::new(&[(0.0, 1.0); MAX_CURVE_POINTS]).is_some());
+    assert!(TorqueCurve::new(&[(0.0, 1.0); MAX_CURVE_POINTS + 1]).is_none());
+}
+
+/// Halving the integration step changes nothing that matters: the same
+/// steps lost, the same slips, the largest lag within 1° electrical and the
+/// overshoot within 0.05 table step.
+#[test]
+fn halving_the_integration_step_changes_nothing() {
+    for (name, accel, microsteps) in [
+        ("gentle, 1/8 steps", 2_000.0, 8),
+        ("near the limit, full steps", 100_000.0, 1),
+        ("too fast, full steps", 400_000.0, 1),
+    ] {
+        let motor = nema17(microsteps);
+        let (spec, table) = ramp(accel, microsteps);
+        let moves = round_trip(&table);
+        let options = SimOptions::suggested(&motor, &spec, &moves);
+        let half = SimOptions {
+            dt_s: options.dt_s / 2.0,
+            ..options
+        };
+        println!("{name} ({accel} full steps/s²):");
+        let a = simulate(&motor, &spec, &moves, &options);
+        let b = simulate(&motor, &spec, &moves, &half);
+        assert_eq!(a.lost_steps, b.lost_steps, "{name}: lost steps");
+        assert_eq!(a.slips, b.slips, "{name}: slips");
+        assert_eq!(a.first_slip_pulse, b.first_slip_pulse, "{name}: first slip");
+        assert!(
+            (a.max_lag_deg - b.max_lag_deg).abs() < 1.0,
+            "{name}: max lag {} vs {}",
+            a.max_lag_deg,
+            b.max_lag_deg
+        );
+        assert!(
+            (a.overshoot_steps - b.overshoot_steps).abs() < 0.05,
+            "{name}: overshoot {} vs {}",
+            a.overshoot_steps,
+            b.overshoot_steps
+        );
+        assert!(a.settled && b.settled, "{name}: settled");
+        assert!(
+            b.steps >= 2 * a.steps - 2 * moves.len() as u64,
+            "{name}: steps"
+        );
+    }
+}
+
+/// 300 to 2000 full steps/s at 2000 full steps/s² in 1/8 steps: the check
+/// finds torque to spare at every step and the rotor, simulated, follows
+/// with its lag well below the 90° electrical of pull-out. (The lag is not
+/// near 0: starting at 300 full steps/s from rest is a jump in speed, and the
+/// rotor, damped by friction only, swings about the command all along.)
+#[test]
+fn a_gentle_ramp_passes_the_check_and_the_simulation() {
+    let motor = nema17(8);
+    let (spec, table) = ramp(2_000.0, 8);
+    let figures = motor.check(&spec, &table).unwrap();
+    println!("gentle: {figures:?}");
+    assert!(figures.min_margin_nm > 0.1, "{figures:?}");
+    let moves = round_trip(&table);
+    let result = simulate(
+        &motor,
+        &spec,
+        &moves,
+        &SimOptions::suggested(&motor, &spec, &moves),
+    );
+    assert_eq!(result.lost_steps, 0);
+    assert_eq!(result.slips, 0);
+    assert_eq!(result.first_slip_pulse, None);
+    assert!(result.max_lag_deg < 60.0, "{result:?}");
+    assert!(result.overshoot_steps < 8.0, "{result:?}");
+    assert!(result.final_error_steps.abs() < 1.0, "{result:?}");
+    assert!(result.settled);
+}
+
+/// 200 000 full steps/s²: step 7 needs more torque than the curve gives over
+/// the safety factor. The macro and the profiles file refuse it with the same
+/// words (`tests/ui/motor_cannot_follow.stderr`,
+/// `tests/toml_errors/motor_cannot_follow.txt`).
+#[test]
+fn an_aggressive_ramp_fails_the_check() {
+    let motor = nema17(1);
+    let (spec, table) = ramp(200_000.0, 1);
+    let error = motor.check(&spec, &table).unwrap_err();
+    assert!(
+        matches!(
+            error,
+            MotorError::Torque {
+                step: 7,
+                beyond_curve: false,
+                ..
+            }
+        ),
+        "{error:?}"
+    );
+    assert_eq!(error.key(), Key::Motor);
+    assert_eq!(
+        error.to_string(),
+        "the motor cannot follow step 7 at 1757.5 Hz: it needs 0.1799 N·m but gives \
+         0.1746 N·m after the safety factor, short by 0.0053 N·m"
+    );
+    // Beyond the curve's last point the motor gives nothing, and says so.
+    let mut short = motor;
+    short.torque_curve = TorqueCurve::new(&CURVE[..3]).unwrap();
+    let (spec, table) = ramp(2_000.0, 1);
+    let error = short.check(&spec, &table).unwrap_err();
+    assert!(
+        error
+            .to_string()
+            .ends_with("(the frequency is beyond the last point of `torque_curve`)"),
+        "{error}"
+    );
+}
+
+/// 400 000 full steps/s²: the check refuses it even without a safety factor,
+/// and the simulated rotor slips and ends whole electrical turns (4 full
+/// steps each) behind.
+#[test]
+fn a_ramp_too_fast_loses_steps_and_the_check_refuses_it() {
+    let motor = nema17(1);
+    let (spec, table) = ramp(400_000.0, 1);
+    let error = motor.check(&spec, &table).unwrap_err();
+    assert!(
+        matches!(error, MotorError::Torque { step: 1, .. }),
+        "{error}"
+    );
+    let unsafe_motor = Motor {
+        safety: 1.0,
+        ..motor
+    };
+    assert!(matches!(
+        unsafe_motor.check(&spec, &table),
+        Err(MotorError::Torque { step: 1, .. })
+    ));
+
+    // The ramp alone, then held.
+    let up = simulate(
+        &motor,
+        &spec,
+        &table,
+        &SimOptions::suggested(&motor, &spec, &table),
+    );
+    // A whole move.
+    let moves = round_trip(&table);
+    let result = simulate(
+        &motor,
+        &spec,
+        &moves,
+        &SimOptions::suggested(&motor, &spec, &moves),
+    );
+    for r in [up, result] {
+        assert!(r.lost_steps > 0, "{r:?}");
+        assert_eq!(r.lost_steps % 4, 0, "whole electrical turns: {r:?}");
+        assert!(r.slips > 0 && r.max_lag_deg > 180.0, "{r:?}");
+        assert!(
+            r.first_slip_pulse
+                .is_some_and(|p| p as usize <= table.len())
+        );
+        assert!(r.settled);
+        assert!(
+            (r.final_error_steps - r.lost_steps as f64).abs() < 0.5,
+            "{r:?}"
+        );
+    }
+}
+
+/// Seed 001's advice: a ramp starts below the motor's maximum start
+/// frequency (`tests/ui/motor_start_too_fast.stderr`,
+/// `tests/toml_errors/motor_start_too_fast.txt`).
+#[test]
+fn a_start_above_max_start_hz_is_an_error() {
+    let motor = nema17(1);
+    let spec = |fmin: f64| {
+        Spec::new(
+            Curve::Linear(Linear {
+                fmin,
+                fmax: 2000.0,
+                extent: LinearExtent::Accel(2_000.0),
+            }),
+            Timer::new(1_000_000),
+        )
+    };
+    let fast = spec(1500.0);
+    let error = motor
+        .check(&fast, &fast.table().unwrap().periods)
+        .unwrap_err();
+    assert!(
+        matches!(error, MotorError::Start { hz, max_hz: 1200.0 } if (hz - 1501.5).abs() < 0.05),
+        "{error:?}"
+    );
+    assert_eq!(
+        error.to_string(),
+        "the ramp starts at 1501.5 Hz, above the motor's maximum start frequency `max_start_hz = 1200`"
+    );
+    // Just below the limit is fine; without a limit anything goes.
+    let slow = spec(1190.0);
+    let table = slow.table().unwrap().periods;
+    assert!(1_000_000.0 / table[0] as f64 <= 1200.0);
+    assert!(motor.check(&slow, &table).is_ok());
+    let no_limit = Motor {
+        max_start_hz: None,
+        ..motor
+    };
+    assert!(
+        no_limit
+            .check(&fast, &fast.table().unwrap().periods)
+            .is_ok()
+    );
+}
+
+/// Every parameter is checked, with the message the front ends show.
+#[test]
+fn motor_parameters_are_checked() {
+    let good = nema17(1);
+    assert_eq!(good.validate(), Ok(()));
+    let message = |m: Motor| m.validate().unwrap_err().to_string();
+    for angle in [0.0, -1.8, f64::NAN, f64::INFINITY] {
+        let e = message(Motor {
+            step_angle: angle,
+            ..good
+        });
+        assert_eq!(
+            e,
+            format!("`step_angle` must be a finite number above 0 (got {angle})")
+        );
+    }
+    assert_eq!(
+        message(Motor {
+            microsteps: 0,
+            ..good
+        }),
+        "`microsteps` must be at least 1 (got 0)"
+    );
+    assert_eq!(
+        message(Motor {
+            rotor_inertia: f64::NAN,
+            ..good
+        }),
+        "`rotor_inertia` must be a finite number above 0 (got NaN)"
+    );
+    assert_eq!(
+        message(Motor {
+            load_inertia: -1e-6,
+            ..good
+        }),
+        "`load_inertia` must be a finite number, 0 or more (got -0.000001)"
+    );
+    assert_eq!(
+        message(Motor {
+            safety: 0.99,
+            ..good
+        }),
+        "`safety` must be a finite number, 1 or more (got 0.99)"
+    );
+    assert_eq!(
+        message(Motor {
+            max_start_hz: Some(0.0),
+            ..good
+        }),
+        "`max_start_hz` must be a finite number above 0 (got 0)"
+    );
+    let curve = |points: &[(f64, f64)]| Motor {
+        torque_curve: TorqueCurve::new(points).unwrap(),
+        ..good
+    };
+    assert_eq!(
+        message(curve(&[(0.0, 0.4), (1000.0, 0.3), (1000.0, 0.2)])),
+        "`torque_curve` point 3 (1000, 0.2) must have a higher frequency than the point before it and a torque above 0"
+    );
+    assert_eq!(
+        message(curve(&[(0.0, 0.4), (1000.0, 0.0)])),
+        "`torque_curve` point 2 (1000, 0) must have a higher frequency than the point before it and a torque above 0"
+    );
+    assert_eq!(
+        message(curve(&[(-1.0, 0.4)])),
+        "`torque_curve` point 1 (-1, 0.4) must have a frequency of 0 or more and a torque above 0"
+    );
+    let e = curve(&[(0.0, 0.4), (500.0, 0.3)])
+        .validate()
+        .map_err(|e| e.key());
+    assert_eq!(e, Ok(()));
+    assert_eq!(
+        curve(&[(0.0, 0.4), (0.0, 0.3)])
+            .validate()
+            .unwrap_err()
+            .key(),
+        Key::TorqueCurve
+    );
+}
+
+/// The simulation refuses what it cannot run and never panics.
+#[test]
+fn the_simulation_refuses_bad_input() {
+    let motor = nema17(1);
+    let (spec, table) = ramp(2_000.0, 1);
+    let run = |m: &Motor, s: &Spec, p: &[u32], dt_s: f64, settle_s: f64| {
+        simulate::run(m, s, p, &SimOptions { dt_s, settle_s })
+    };
+    for (dt, settle) in [
+        (0.0, 0.0),
+        (-1e-6, 0.0),
+        (f64::NAN, 0.0),
+        (f64::INFINITY, 0.0),
+        (1e-6, -1.0),
+        (1e-6, f64::NAN),
+        (1e-6, f64::INFINITY),
+    ] {
+        assert!(
+            matches!(
+                run(&motor, &spec, &table, dt, settle),
+                Err(SimError::Options { .. })
+            ),
+            "dt {dt}, settle {settle}"
+        );
+    }
+    // Too many steps: refused before running, with how many it needed.
+    let e = run(&motor, &spec, &table, 1e-12, 0.0).unwrap_err();
+    assert!(
+        matches!(e, SimError::TooManySteps { needed, max: MAX_STEPS } if needed > MAX_STEPS),
+        "{e:?}"
+    );
+    assert!(e.to_string().starts_with("the simulation needs "), "{e}");
+    assert!(matches!(
+        run(&motor, &spec, &[u32::MAX; 100], 1e-9, 0.0),
+        Err(SimError::TooManySteps { .. })
+    ));
+    assert!(matches!(
+        run(&motor, &spec, &table, 1e-6, 1e9),
+        Err(SimError::TooManySteps { .. })
+    ));
+    // An invalid motor, a timer at 0 Hz.
+    let bad = Motor {
+        rotor_inertia: 0.0,
+        ..motor
+    };
+    assert_eq!(
+        run(&bad, &spec, &table, 1e-5, 0.0),
+        Err(SimError::Motor(MotorError::Invalid {
+            key: Key::RotorInertia,
+            value: 0.0,
+            expected: "a finite number above 0"
+        }))
+    );
+    let mut stopped = spec;
+    stopped.timer.timer_hz = 0;
+    assert_eq!(
+        run(&motor, &stopped, &table, 1e-5, 0.0),
+        Err(SimError::Timer)
+    );
+    // No pulses: the rotor stays. Zero-tick periods: pulses at one instant.
+    let still = run(&motor, &spec, &[], 1e-5, 0.01).unwrap();
+    assert_eq!((still.lost_steps, still.slips), (0, 0));
+    assert_eq!(still.max_lag_deg, 0.0);
+    assert!(still.settled);
+    let burst = run(&motor, &spec, &[0, 0, 0, 0, 0, 0, 0, 0, 0], 1e-5, 0.05).unwrap();
+    assert!(burst.max_lag_deg >= 810.0 - 1e-9, "{burst:?}");
+    assert_eq!(burst.lost_steps % 4, 0);
+}
+
+/// `period_table!` takes the motor keys inline: the table is the same, the
+/// check passes at compile time (a refused one is in `tests/ui`).
+#[test]
+fn the_macro_checks_inline_motor_keys() {
+    static WITH_MOTOR: [u16; 978] = period_table!(
+        curve = linear,
+        fmin = 300,
+        fmax = 2000,
+        accel = 2000,
+        timer_hz = 1_000_000,
+        step_angle = 1.8,
+        rotor_inertia = 5.4e-6,
+        load_inertia = 2.0e-5,
+        torque_curve = [
+            (0, 0.40),
+            (500, 0.38),
+            (1000, 0.33),
+            (2000, 0.24),
+            (4000, 0.12),
+            (6000, 0.06)
+        ],
+        friction = 0.02,
+        damping = 0,
+        safety = 1.5,
+        max_start_hz = 1200,
+    );
+    let (_, table) = ramp(2_000.0, 1);
+    let plain: Vec<u32> = WITH_MOTOR.iter().map(|&p| u32::from(p)).collect();
+    assert_eq!(plain, table);
+}
+
+/// The profiles file: a `[motors.NAME]` table fills the keys of the profiles
+/// that name it, and the loaded profile carries the motor and its figures.
+#[test]
+fn profiles_name_their_motor() {
+    let source = r#"
+[motors.nema17]
+step_angle = 1.8
+rotor_inertia = 5.4e-6
+load_inertia = 2.0e-5
+torque_curve = [[0, 0.40], [500, 0.38], [1000, 0.33], [2000, 0.24], [4000, 0.12], [6000, 0.06]]
+friction = 0.02
+damping = 0.0
+safety = 1.5
+max_start_hz = 1200
+
+[profiles.gentle]
+curve = "linear"
+fmin = 300
+fmax = 2000
+accel = 2000
+timer_hz = 1_000_000
+motor = "nema17"
+
+[profiles.unbound]
+curve = "linear"
+fmin = 300
+fmax = 2000
+accel = 2000
+timer_hz = 1_000_000
+"#;
+    let profiles = Profiles::parse("profiles.toml", source).unwrap();
+    let [gentle, unbound] = profiles.profiles() else {
+        panic!("two profiles");
+    };
+    assert_eq!(gentle.motor, Some(nema17(1)));
+    assert_eq!(unbound.motor, None);
+    assert_eq!(unbound.torque, None);
+    let Generated::Steps(table) = &gentle.table else {
+        panic!("a per-step table");
+    };
+    let figures = nema17(1).check(&table.spec, &table.periods).unwrap();
+    assert_eq!(gentle.torque, Some(figures));
+    // The emitted module carries the margin.
+    let source = profiles.rust_source();
+    assert!(source.contains(&format!(
+        "pub const TORQUE_MARGIN_NM: f64 = {:?};",
+        figures.min_margin_nm
+    )));
+    assert!(source.contains(&format!(
+        "pub const TORQUE_MARGIN_STEP: usize = {};",
+        figures.step
+    )));
+}
+
+/// The worked example: every profile of the shipped `profiles.toml` that
+/// names a motor passes the check and, played as a whole move, loses no step.
+#[test]
+fn shipped_profiles_with_a_motor_follow_their_ramps() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("profiles.toml");
+    let profiles = Profiles::load(&path).unwrap();
+    let mut bound = 0;
+    for p in profiles.profiles() {
+        let Some(motor) = &p.motor else {
+            continue;
+        };
+        bound += 1;
+        let spec = *p.table.spec();
+        let table = p.table.step_periods();
+        let figures = motor.check(&spec, &table).unwrap();
+        assert_eq!(p.torque, Some(figures), "{}", p.name);
+        println!(
+            "{}: smallest margin {:.4} N·m at step {} ({:.1} Hz): {:.4} needed of {:.4} available",
+            p.name,
+            figures.min_margin_nm,
+            figures.step,
+            figures.hz,
+            figures.needed_nm,
+            figures.available_nm
+        );
+        let moves = round_trip(&table);
+        let options = SimOptions::suggested(motor, &spec, &moves);
+        let result = simulate(motor, &spec, &moves, &options);
+        assert_eq!(result.lost_steps, 0, "{}", p.name);
+        assert_eq!(result.slips, 0, "{}", p.name);
+        assert!(result.max_lag_deg < 90.0, "{}: {result:?}", p.name);
+        assert!(result.settled, "{}", p.name);
+    }
+    assert!(bound >= 1, "no shipped profile names a motor");
+}
