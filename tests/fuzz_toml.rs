@@ -25,6 +25,7 @@ impl Rng {
     }
 }
 
+/// TOML syntax, values and names; the keys come from `Key::ALL`.
 const PIECES: &[&str] = &[
     "=",
     "\"",
@@ -54,25 +55,6 @@ const PIECES: &[&str] = &[
     "4294967296",
     "true",
     "1979-05-27",
-    "curve",
-    "len",
-    "fmin",
-    "fmax",
-    "flexible",
-    "f_inf",
-    "tau",
-    "accel",
-    "f1",
-    "f2",
-    "shape",
-    "jerk",
-    "timer_hz",
-    "word",
-    "ticks_per_step",
-    "discretization",
-    "rounding",
-    "arithmetic",
-    "segments",
     "\"sigmoid\"",
     "\"linear\"",
     "\"exponential\"",
@@ -89,6 +71,11 @@ const PIECES: &[&str] = &[
     "\u{0}",
     "\r\n",
     "\t",
+    "[motors.m]",
+    "motor = \"m\"",
+    "[[0, 0.4], [1000, 0.3]]",
+    "[[1000, 0.3], [0, 0.4]]",
+    "[[0]]",
 ];
 
 fn seeds() -> Vec<String> {
@@ -105,7 +92,16 @@ fn seeds() -> Vec<String> {
     files
 }
 
-fn mutate(rng: &mut Rng, text: &str) -> String {
+/// Every key, then the other pieces.
+fn pieces() -> Vec<&'static str> {
+    profile_core::Key::ALL
+        .iter()
+        .map(|k| k.name())
+        .chain(PIECES.iter().copied())
+        .collect()
+}
+
+fn mutate(rng: &mut Rng, text: &str, pieces: &[&str]) -> String {
     let mut s: Vec<char> = text.chars().collect();
     for _ in 0..1 + rng.below(4) {
         let at = rng.below(s.len() + 1);
@@ -125,7 +121,7 @@ fn mutate(rng: &mut Rng, text: &str) -> String {
                 s[i] = char::from_u32(rng.below(0x80) as u32).unwrap_or('x');
             }
             _ => {
-                let piece = PIECES[rng.below(PIECES.len())];
+                let piece = pieces[rng.below(pieces.len())];
                 s.splice(at..at, piece.chars());
             }
         }
@@ -156,11 +152,12 @@ fn check(input: &str, case: usize) {
 fn mutated_files_never_panic() {
     let seeds = seeds();
     let mut rng = Rng(0x5eed_0001);
+    let pieces = pieces();
     let n = cases();
     let mut errors = 0;
     for case in 0..n {
         let seed = &seeds[rng.below(seeds.len())];
-        let input = mutate(&mut rng, seed);
+        let input = mutate(&mut rng, seed, &pieces);
         check(&input, case);
         errors += usize::from(Profiles::parse("profiles.toml", &input).is_err());
     }

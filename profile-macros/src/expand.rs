@@ -81,26 +81,8 @@ mod tests {
 
     use super::*;
 
+    /// Names, values and punctuation besides the keys (which come from `Key::ALL`).
     const PIECES: &[&str] = &[
-        "curve",
-        "len",
-        "fmin",
-        "fmax",
-        "flexible",
-        "f_inf",
-        "tau",
-        "accel",
-        "f1",
-        "f2",
-        "shape",
-        "jerk",
-        "timer_hz",
-        "word",
-        "ticks_per_step",
-        "discretization",
-        "rounding",
-        "arithmetic",
-        "segments",
         "speed",
         "sigmoid",
         "exponential",
@@ -157,30 +139,20 @@ mod tests {
         "#",
         "b\"x\"",
         "340282366920938463463374607431768211456",
+        "(0, 0.4)",
+        "[(0, 0.4), (1000, 0.3)]",
+        "[(1000, 0.3), (0, 0.4)]",
+        "[]",
     ];
 
-    const KEYS: &[&str] = &[
-        "curve",
-        "len",
-        "fmin",
-        "fmax",
-        "flexible",
-        "f_inf",
-        "tau",
-        "accel",
-        "f1",
-        "f2",
-        "shape",
-        "jerk",
-        "timer_hz",
-        "word",
-        "ticks_per_step",
-        "discretization",
-        "rounding",
-        "arithmetic",
-        "segments",
-        "fmni",
-    ];
+    /// Every key, and two that are not keys.
+    fn keys() -> Vec<&'static str> {
+        profile_core::Key::ALL
+            .iter()
+            .map(|k| k.name())
+            .chain(["fmni", "speed"])
+            .collect()
+    }
 
     const VALUES: &[&str] = &[
         "sigmoid",
@@ -218,6 +190,10 @@ mod tests {
         "65537",
         "1e-300",
         "\"u32\"",
+        "1.8",
+        "5.4e-6",
+        "[(0, 0.4), (1000, 0.3)]",
+        "[(0, 0.4)]",
     ];
 
     struct Rng(u64);
@@ -238,11 +214,13 @@ mod tests {
             .and_then(|v| v.parse().ok())
             .unwrap_or(5000);
         let mut rng = Rng(0x5eed_0003);
+        let keys = keys();
+        let pieces: Vec<&str> = keys.iter().chain(PIECES).copied().collect();
         let (mut tables, mut errors) = (0, 0);
         for case in 0..n {
             let text = if case % 2 == 0 {
                 let words: Vec<&str> = (0..rng.below(24))
-                    .map(|_| PIECES[rng.below(PIECES.len())])
+                    .map(|_| pieces[rng.below(pieces.len())])
                     .collect();
                 words.join(" ")
             } else {
@@ -270,7 +248,7 @@ mod tests {
                         1 if !pairs.is_empty() => {
                             pairs.remove(rng.below(pairs.len()));
                         }
-                        _ => pairs.push((KEYS[rng.below(KEYS.len())].to_string(), value)),
+                        _ => pairs.push((keys[rng.below(keys.len())].to_string(), value)),
                     }
                 }
                 let pairs: Vec<String> = pairs.iter().map(|(k, v)| format!("{k} = {v}")).collect();
