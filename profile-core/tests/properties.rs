@@ -393,3 +393,60 @@ proptest! {
         }
     }
 }
+
+/// Any motor, any pulse train: the check and the simulation give a result
+/// or a typed error, never a panic, and the simulation's work stays bounded.
+#[cfg(feature = "std")]
+mod motors {
+    use super::*;
+    use profile_core::motor::{Motor, TorqueCurve};
+    use profile_core::simulate::{self, SimOptions};
+
+    fn curve() -> impl Strategy<Value = Vec<(f64, f64)>> {
+        proptest::collection::vec((hostile(), hostile()), 0..40)
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(cases()))]
+
+        #[test]
+        fn hostile_motors_never_panic(
+            points in curve(),
+            step_angle in hostile(),
+            microsteps in prop_oneof![Just(0u32), Just(1), Just(16), Just(u32::MAX)],
+            inertia in (hostile(), hostile()),
+            friction in hostile(),
+            damping in hostile(),
+            safety in hostile(),
+            max_start in proptest::option::of(hostile()),
+            periods in proptest::collection::vec(prop_oneof![Just(0u32), Just(1), Just(u32::MAX), 1u32..100_000], 0..40),
+            timer_hz in prop_oneof![Just(0u32), Just(1_000_000), Just(u32::MAX)],
+            dt in prop_oneof![Just(f64::NAN), Just(0.0), Just(-1.0), Just(1e-3), Just(1e-5)],
+        ) {
+            let Some(torque_curve) = TorqueCurve::new(&points) else {
+                prop_assert!(points.is_empty() || points.len() > profile_core::motor::MAX_CURVE_POINTS);
+                return Ok(());
+            };
+            let motor = Motor {
+                step_angle,
+                microsteps,
+                rotor_inertia: inertia.0,
+                load_inertia: inertia.1,
+                torque_curve,
+                friction,
+                damping,
+                safety,
+                max_start_hz: max_start,
+            };
+            let curve = Curve::Linear(Linear { fmin: 100.0, fmax: 1000.0, extent: LinearExtent::Len(10) });
+            let spec = Spec::new(curve, Timer { timer_hz, word: Word::U32, ticks_per_step: 1 });
+            if let Err(e) = motor.check(&spec, &periods) {
+                prop_assert!(!e.to_string().is_empty());
+            }
+            let options = SimOptions { dt_s: dt, settle_s: 1e-3 };
+            if let Err(e) = simulate::run(&motor, &spec, &periods, &options) {
+                prop_assert!(!e.to_string().is_empty());
+            }
+        }
+    }
+}
