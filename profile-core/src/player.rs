@@ -253,6 +253,9 @@ pub struct Player<'a, W> {
     /// The periods under the two cursors, read when a cursor moves.
     acc_period: W,
     dec_period: W,
+    /// Steps ahead that repeat the last one (cruising, the deceleration side
+    /// out of reach): played with no decision at all.
+    coast: u32,
 }
 
 impl<'a, W: TableWord> Player<'a, W> {
@@ -280,6 +283,7 @@ impl<'a, W: TableWord> Player<'a, W> {
             decel_fastest: fastest(&decel),
             acc_period: W::from_ticks(0),
             dec_period: W::from_ticks(0),
+            coast: 0,
         }
     }
 
@@ -288,6 +292,7 @@ impl<'a, W: TableWord> Player<'a, W> {
     pub fn start(&mut self, steps: u32) {
         self.cruise = self.accel_last;
         self.remaining = 0;
+        self.coast = 0;
         // A move on an empty ramp has no steps.
         let (Some(acc), Some(dec)) = (
             Cursor::at(&self.accel, 0),
@@ -309,6 +314,7 @@ impl<'a, W: TableWord> Player<'a, W> {
     /// ramp up or down one step per step. Clamped to the ramp.
     pub fn set_cruise(&mut self, pos: u32) {
         self.cruise = pos.min(self.accel_last);
+        self.coast = 0;
     }
 
     /// Decelerates from the current speed to rest: the deceleration ramp is
@@ -317,6 +323,7 @@ impl<'a, W: TableWord> Player<'a, W> {
     /// when the motor already runs slower than that entry). A stop never
     /// lengthens a move.
     pub fn stop(&mut self) {
+        self.coast = 0;
         if self.remaining == 0 {
             return;
         }
@@ -391,6 +398,12 @@ impl<'a, W: TableWord> Player<'a, W> {
     /// side is the slower, it takes over and plays its ramp to the end,
     /// again exactly as its table reads.
     pub fn next_period(&mut self) -> Option<W> {
+        if self.coast > 0 {
+            // `coast < remaining`, and nothing changes but the count.
+            self.coast -= 1;
+            self.remaining -= 1;
+            return W::from_ticks(self.last_period).into();
+        }
         if self.remaining == 0 {
             return None;
         }
@@ -398,9 +411,22 @@ impl<'a, W: TableWord> Player<'a, W> {
         // `min(after, decel_last)`.
         let after = self.remaining - 1;
         self.remaining = after;
-        let period = if self.decelerating {
-            self.dec_period
-        } else {
+        if self.decelerating {
+            // The deceleration side plays to the end; its cursor stands at
+            // exactly `after`, one entry lower each step.
+            let period = self.dec_period;
+            if after > 0 {
+                if let Some(p) = self.dec.backward(&self.decel) {
+                    self.dec_period = p;
+                }
+            }
+            self.last_period = period.into_ticks();
+            return Some(period);
+        }
+        // Whether this step left both sides as they were, so that the steps
+        // after it repeat it until the deceleration side comes within reach.
+        let mut still = false;
+        let period = {
             let pa = self.acc_period;
             let take_decel = if after <= self.decel_last {
                 self.decelerating = self.dec_period.into_ticks() >= pa.into_ticks();
@@ -409,12 +435,15 @@ impl<'a, W: TableWord> Player<'a, W> {
                 // The deceleration ramp cannot start from a faster speed than
                 // its top: go no faster (its entries may tie by a tick near
                 // the top, so compare with its fastest entry).
-                self.decel_fastest > pa.into_ticks()
+                still = self.decel_fastest > pa.into_ticks();
+                still
             };
             if take_decel {
                 self.dec_period
             } else {
-                if self.acc.pos != self.cruise {
+                if self.acc.pos == self.cruise {
+                    still = true;
+                } else {
                     let moved = if self.acc.pos < self.cruise {
                         self.acc.forward(&self.accel, self.accel_last)
                     } else {
@@ -433,6 +462,9 @@ impl<'a, W: TableWord> Player<'a, W> {
             }
         }
         self.last_period = period.into_ticks();
+        if still {
+            self.coast = self.remaining.saturating_sub(self.decel_last + 1);
+        }
         Some(period)
     }
 }
