@@ -96,7 +96,7 @@ pub const CURVES: &[&str] = &[
     "jerk_limited",
 ];
 
-/// Keys every curve takes.
+/// Keys every curve takes, besides the motor's ([`Key::MOTOR`]).
 const COMMON: &[Key] = &[
     Key::Curve,
     Key::TimerHz,
@@ -107,15 +107,6 @@ const COMMON: &[Key] = &[
     Key::Arithmetic,
     Key::Segments,
     Key::Motor,
-    Key::StepAngle,
-    Key::Microsteps,
-    Key::RotorInertia,
-    Key::LoadInertia,
-    Key::TorqueCurve,
-    Key::Friction,
-    Key::Damping,
-    Key::Safety,
-    Key::MaxStartHz,
 ];
 
 /// A curve's own keys: those it requires, and pairs of which exactly one is given.
@@ -157,6 +148,7 @@ pub fn keys_for(curve: &str) -> Vec<Key> {
         .copied()
         .filter(|k| {
             COMMON.contains(k)
+                || Key::MOTOR.contains(k)
                 || own.required.contains(k)
                 || own.one_of.is_some_and(|pair| pair.contains(k))
         })
