@@ -25,7 +25,7 @@ use profile_core::emit::{Generated, Profile};
 use profile_core::motor::Motor;
 use profile_core::player::{Player, Ramp};
 use profile_core::simulate::{self, SimOptions, SimResult};
-use profile_core::{Discretization, Error, Rounding, Spec, Table, Word};
+use profile_core::{Discretization, Error, Rounding, Spec, Table};
 
 use plots::Series;
 
@@ -53,13 +53,6 @@ fn edge_error(spec: &Spec, periods: &[u32]) -> Result<(f64, f64), Error> {
         }
     })?;
     Ok((worst, last))
-}
-
-fn word_bytes(word: Word) -> usize {
-    match word {
-        Word::U16 => 2,
-        Word::U32 => 4,
-    }
 }
 
 fn print_table(profiles: &[Profile]) -> Result<(), Error> {
@@ -96,7 +89,7 @@ fn print_table(profiles: &[Profile]) -> Result<(), Error> {
                     f.start_hz,
                     f.final_hz,
                     f.duration_s,
-                    f.len as usize * word_bytes(s.timer.word),
+                    f.len as usize * s.timer.word.bytes() as usize,
                     f.max_accel_hz_s,
                     f.max_jerk_hz_s2,
                     edge,

@@ -150,10 +150,7 @@ impl Spec {
             sink(i, period, count);
             steps_before = steps_after;
         }
-        let word_bytes = match self.timer.word {
-            crate::Word::U16 => 2,
-            crate::Word::U32 => 4,
-        };
+        let word_bytes = self.timer.word.bytes();
         Ok(SegmentFigures {
             segments,
             steps: len,

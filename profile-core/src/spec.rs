@@ -26,6 +26,14 @@ impl Word {
         }
     }
 
+    /// Bytes of flash one entry takes.
+    pub const fn bytes(self) -> u32 {
+        match self {
+            Word::U16 => 2,
+            Word::U32 => 4,
+        }
+    }
+
     /// The Rust (and TOML) name: `u16` or `u32`.
     pub const fn name(self) -> &'static str {
         match self {
