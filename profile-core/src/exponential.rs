@@ -4,9 +4,24 @@ use crate::solve::TimeCurve;
 use crate::spec::{Exponential, ExponentialExtent};
 
 impl Exponential {
-    /// `ln((f_inf - fmin) / (f_inf - fmax))`: rise time in units of `tau`.
+    /// `q = (fmax - fmin) / (f_inf - fmin)`: the part of the way to the
+    /// asymptote the ramp covers.
+    fn reach(&self) -> f64 {
+        (self.fmax - self.fmin) / (self.f_inf - self.fmin)
+    }
+
+    /// `ln((f_inf - fmin) / (f_inf - fmax)) = -ln(1 - q)`: rise time in units of `tau`.
     fn rise_in_tau(&self) -> f64 {
-        libm::log1p((self.fmax - self.fmin) / (self.f_inf - self.fmax))
+        -libm::log1p(-self.reach())
+    }
+
+    /// Steps until `fmax` per second of `tau`:
+    /// `N(t_r) / tau = f_inf u - (fmax - fmin) = fmin u + (fmax - fmin)(u - q)/q`
+    /// with `u` the rise in `tau`. The second form has no cancellation: with
+    /// a distant asymptote (`q` small) `(u - q)/q` is summed as a series.
+    fn steps_per_tau(&self) -> f64 {
+        let q = self.reach();
+        self.fmin * self.rise_in_tau() + (self.fmax - self.fmin) * crate::math::log_excess_ratio(q)
     }
 
     /// The time constant, in s: given, or solved so that `fmax` is reached at
@@ -14,9 +29,7 @@ impl Exponential {
     pub fn tau(&self) -> f64 {
         match self.extent {
             ExponentialExtent::Tau(tau) => tau,
-            ExponentialExtent::Len(len) => {
-                len as f64 / (self.f_inf * self.rise_in_tau() - (self.fmax - self.fmin))
-            }
+            ExponentialExtent::Len(len) => len as f64 / self.steps_per_tau(),
         }
     }
 
@@ -30,7 +43,8 @@ impl Exponential {
 pub(crate) struct ExponentialInTime {
     fmin: f64,
     fmax: f64,
-    f_inf: f64,
+    /// The initial acceleration `(f_inf - fmin) / tau`, in Hz/s.
+    accel: f64,
     tau: f64,
     rise: f64,
     rise_steps: f64,
@@ -42,13 +56,13 @@ impl ExponentialInTime {
         ExponentialInTime {
             fmin: e.fmin,
             fmax: e.fmax,
-            f_inf: e.f_inf,
+            accel: (e.f_inf - e.fmin) / tau,
             tau,
             rise: e.rise_time(),
             rise_steps: match e.extent {
                 // Exactly `len` by construction, without rounding noise.
                 ExponentialExtent::Len(len) => len as f64,
-                ExponentialExtent::Tau(_) => tau * (e.f_inf * e.rise_in_tau() - (e.fmax - e.fmin)),
+                ExponentialExtent::Tau(_) => tau * e.steps_per_tau(),
             },
         }
     }
@@ -62,15 +76,19 @@ impl ExponentialInTime {
 impl TimeCurve for ExponentialInTime {
     fn freq(&self, t: f64) -> f64 {
         if t < self.rise {
-            self.fmin - (self.f_inf - self.fmin) * libm::expm1(-t / self.tau)
+            self.fmin + self.accel * t * crate::math::exp_fraction(t / self.tau)
         } else {
             self.fmax
         }
     }
 
+    /// `N(t) = fmin t + (f_inf - fmin) tau (t/tau - (1 - e^(-t/tau)))`
+    /// `= fmin t + a t² h(t/tau)` with `a = (f_inf - fmin)/tau` and
+    /// `h(x) = (x - (1 - e^-x))/x²`, summed as a series where `t/tau` is small:
+    /// no cancellation, and no underflow however distant the asymptote.
     fn steps(&self, t: f64) -> f64 {
         if t < self.rise {
-            self.f_inf * t + (self.f_inf - self.fmin) * self.tau * libm::expm1(-t / self.tau)
+            self.fmin * t + self.accel * t * t * crate::math::exp_excess_ratio(t / self.tau)
         } else {
             self.rise_steps + self.fmax * (t - self.rise)
         }

@@ -213,9 +213,11 @@ pub(crate) fn edge_time(c: &dyn TimeCurve, k: u32) -> Result<f64, Error> {
     if steps >= ramp_steps {
         return Ok(time_after_ramp(c, steps));
     }
-    // f is non-decreasing and at least f(0), so edge k is no later than k / f(0).
+    // f is non-decreasing from f(0) to the end frequency, so edge k is no
+    // earlier than k / f_end and no later than k / f(0).
     let hi = ramp_time.min(steps / c.freq(0.0));
-    pulse_time(c, steps, 0.0, hi, MAX_ITERATIONS).ok_or(Error::NoConvergence {
+    let lo = (steps / c.end_freq()).min(hi);
+    pulse_time(c, steps, lo, hi, MAX_ITERATIONS).ok_or(Error::NoConvergence {
         index: k,
         iterations: MAX_ITERATIONS,
     })

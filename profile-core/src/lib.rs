@@ -40,6 +40,7 @@ mod exponential;
 mod generate;
 mod jerk;
 mod linear;
+mod math;
 pub mod motor;
 #[cfg(feature = "codegen")]
 pub mod params;

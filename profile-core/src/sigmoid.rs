@@ -3,19 +3,7 @@
 use crate::solve::TimeCurve;
 use crate::spec::Sigmoid;
 
-/// `ln(1 + e^x)` without overflow or loss for large `|x|`.
-fn softplus(x: f64) -> f64 {
-    if x > 0.0 {
-        x + libm::log1p(libm::exp(-x))
-    } else {
-        libm::log1p(libm::exp(x))
-    }
-}
-
-/// `1 / (1 + e^-x)`.
-fn logistic(x: f64) -> f64 {
-    1.0 / (1.0 + libm::exp(-x))
-}
+use crate::math::{logistic, softplus_rise};
 
 impl Sigmoid {
     /// Frequency at step index `i` (`discretization = index`), in Hz.
@@ -57,7 +45,6 @@ pub(crate) struct SigmoidInTime {
     half: f64,
     duration: f64,
     len: f64,
-    softplus_start: f64,
 }
 
 impl SigmoidInTime {
@@ -70,7 +57,6 @@ impl SigmoidInTime {
             half: duration / 2.0,
             duration,
             len: s.len as f64,
-            softplus_start: softplus(-s.flexible),
         }
     }
 
@@ -84,12 +70,13 @@ impl TimeCurve for SigmoidInTime {
         self.fmin + self.delt * logistic(self.arg(t))
     }
 
-    /// `N(t) = fmin t + (fmax - fmin) (T / 2 flexible) (softplus(s(t)) - softplus(-flexible))`.
+    /// `N(t) = fmin t + (fmax - fmin) (T / 2 flexible) (softplus(s(t)) - softplus(-flexible))`,
+    /// the difference taken as one rise of the softplus over `s(t) + flexible
+    /// = flexible t / (T/2)`, so that a flat curve (small `flexible`) keeps
+    /// its digits.
     fn steps(&self, t: f64) -> f64 {
-        self.fmin * t
-            + self.delt
-                * (self.half / self.flexible)
-                * (softplus(self.arg(t)) - self.softplus_start)
+        let rise = softplus_rise(-self.flexible, self.flexible * t / self.half);
+        self.fmin * t + self.delt * (self.half / self.flexible) * rise
     }
 
     fn ramp_end(&self) -> (f64, f64) {

@@ -1,8 +1,11 @@
 //! Pulse times from the step count: solve `N(t) = k` for `t`.
 
-/// The iteration bound of [`pulse_time`]. Safeguarded Newton converges in a
-/// handful of iterations; pure bisection of an `f64` bracket needs at most 64.
-pub(crate) const MAX_ITERATIONS: u32 = 100;
+/// The iteration bound of [`pulse_time`]. Accepted Newton steps at least
+/// halve from one iteration to the next, and each bisection halves the
+/// floating-point numbers left in the bracket; on the brackets
+/// [`edge_time`](crate::generate) builds the solver ends within a few dozen
+/// iterations, usually 3 to 6.
+pub(crate) const MAX_ITERATIONS: u32 = 200;
 
 /// A curve defined in time: frequency and step count. After its ramp ends the
 /// curve holds its end frequency.
@@ -31,12 +34,26 @@ pub(crate) fn time_after_ramp<C: TimeCurve + ?Sized>(curve: &C, steps: f64) -> f
     }
 }
 
-/// Solves `N(t) = target` for `t` in `[lo, hi]`, where `N(lo) <= target <= N(hi)`.
+/// The midpoint of `[lo, hi]` (both `>= 0`) in floating-point numbers: as
+/// many representable values on either side (near the geometric mean for a
+/// wide bracket, the arithmetic one for a narrow one), so that bisection ends
+/// within 64 halvings however wide the bracket is.
+fn midpoint(lo: f64, hi: f64) -> f64 {
+    let (a, b) = (lo.to_bits(), hi.to_bits());
+    f64::from_bits(a + (b - a) / 2)
+}
+
+/// Solves `N(t) = target` for `t` in `[lo, hi]`, where `0 <= lo`,
+/// `N(lo) <= target <= N(hi)`.
 ///
-/// Newton's method on `N` (whose derivative is `f`), falling back to bisection
-/// whenever a Newton step leaves the bracket; the bracket shrinks every
-/// iteration. Returns `None` if `max_iterations` pass without convergence or the
-/// curve yields a non-finite value: never loops without bound.
+/// Newton's method on `N` (whose derivative is `f`), safeguarded as in
+/// `rtsafe`: a Newton step that leaves the bracket, or that is not at most
+/// half the step before it, gives way to bisection (over the floating-point
+/// numbers in the bracket). The bracket shrinks every iteration; the root is
+/// found to a few ulps or the bracket closes to adjacent numbers. Returns
+/// `None` if `max_iterations` pass without convergence, the bracket is not a
+/// finite interval of non-negative numbers, or the curve yields a non-finite
+/// value: never loops without bound.
 pub(crate) fn pulse_time<C: TimeCurve + ?Sized>(
     curve: &C,
     target: f64,
@@ -44,7 +61,10 @@ pub(crate) fn pulse_time<C: TimeCurve + ?Sized>(
     mut hi: f64,
     max_iterations: u32,
 ) -> Option<f64> {
-    let mut t = lo + 0.5 * (hi - lo);
+    if !(lo >= 0.0 && hi >= lo && hi.is_finite()) {
+        return None;
+    }
+    let mut t = midpoint(lo, hi);
     // Start from the left end's Newton step: for the accelerating curves used
     // here it lands close to the root.
     let f_lo = curve.freq(lo);
@@ -54,6 +74,7 @@ pub(crate) fn pulse_time<C: TimeCurve + ?Sized>(
             t = guess;
         }
     }
+    let mut last_step = hi - lo;
     for _ in 0..max_iterations {
         let g = curve.steps(t) - target;
         let slope = curve.freq(t);
@@ -68,14 +89,22 @@ pub(crate) fn pulse_time<C: TimeCurve + ?Sized>(
         } else {
             hi = t;
         }
-        let mut next = t - g / slope;
-        if !(next > lo && next < hi) {
-            next = lo + 0.5 * (hi - lo);
-        }
-        let tolerance = 4.0 * f64::EPSILON * libm::fabs(t);
-        if libm::fabs(next - t) <= tolerance || hi - lo <= tolerance {
+        let newton = t - g / slope;
+        let next = if newton > lo && newton < hi && libm::fabs(newton - t) <= 0.5 * last_step {
+            newton
+        } else {
+            let mid = midpoint(lo, hi);
+            if mid <= lo || mid >= hi {
+                // Adjacent numbers: the root lies between them.
+                return Some(if g < 0.0 { hi } else { lo });
+            }
+            mid
+        };
+        let step = libm::fabs(next - t);
+        if step <= 4.0 * f64::EPSILON * libm::fabs(t) {
             return Some(next);
         }
+        last_step = step;
         t = next;
     }
     None

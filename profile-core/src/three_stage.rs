@@ -62,14 +62,7 @@ impl ThreeStageInTime {
     /// cancellation of two huge terms when `B` is small (`C ~ a/B`):
     /// `N1 = f0 t + (a + B (f1 - f0)) t² h(Bt)` with `h(x) = (x + expm1(-x))/x²`.
     fn stage1_steps(&self, t: f64) -> f64 {
-        let x = self.shape * t;
-        let h = if libm::fabs(x) < 1e-3 {
-            // The series 1/2 - x/6 + x²/24 - x³/120 + x⁴/720: the next term
-            // is below 2e-19 here.
-            0.5 - x / 6.0 + x * x / 24.0 - x * x * x / 120.0 + x * x * x * x / 720.0
-        } else {
-            (x + libm::expm1(-x)) / (x * x)
-        };
+        let h = crate::math::exp_excess_ratio(self.shape * t);
         self.f0 * t + (self.a + self.shape * (self.f1 - self.f0)) * t * t * h
     }
 

@@ -5,6 +5,8 @@
 //!   mismatches described;
 //! - [`cc`]: a C program written to a temporary folder, compiled with `cc` (or
 //!   `$CC`) once per test process, and run;
+//! - [`oracle`]: pulse-edge times by numeric integration of each curve's
+//!   frequency, sharing no formula with `profile-core`;
 //! - [`lcg`]: a fixed, dependency-free stream of pseudo-random numbers;
 //! - [`seeds`]: the seeds' own curves and calls, as specs and as
 //!   `period_table!` expands them.
@@ -18,5 +20,7 @@ pub mod cc;
 pub mod golden;
 #[allow(dead_code)]
 pub mod lcg;
+#[allow(dead_code)]
+pub mod oracle;
 #[allow(dead_code)]
 pub mod seeds;

@@ -1,0 +1,335 @@
+//! An oracle for pulse-edge times that shares no code and no formula with
+//! `profile-core`'s path from a curve to its edges.
+//!
+//! Each curve is written out here as its frequency `f(t)` only, from the
+//! articles' definitions (DESIGN.md section 2), with `std`'s `exp`, `exp_m1`
+//! and `ln_1p` rather than `libm`. No closed-form step count `N(t)` appears:
+//! `N` is integrated numerically (adaptive Gauss-Kronrod 7-15, split at every
+//! joint of the curve), and parameters that production solves for in closed
+//! form (the sigmoid's duration, the exponential's `tau` from a step budget,
+//! the linear ramp's acceleration from `len`) are solved here from that
+//! numeric integral.
+//!
+//! Edge `k` is found from edge `k - 1` by solving `∫ f = 1 - r` over the
+//! step, where `r = N(t_(k-1)) - (k - 1)` is the residual carried from the
+//! previous edge: no running sum of times or steps grows with `k`, so the
+//! edges of a 65 536-entry table are as accurate as the first (each to a few
+//! ulps of its time, and the residual to about 1e-13 step).
+
+/// Kronrod nodes on `[0, 1]` (the other half mirrored), QUADPACK's `qk15`.
+const XGK: [f64; 8] = [
+    0.991_455_371_120_812_6,
+    0.949_107_912_342_758_5,
+    0.864_864_423_359_769_1,
+    0.741_531_185_599_394_4,
+    0.586_087_235_467_691_1,
+    0.405_845_151_377_397_2,
+    0.207_784_955_007_898_5,
+    0.0,
+];
+/// Kronrod weights for `XGK`.
+const WGK: [f64; 8] = [
+    0.022_935_322_010_529_22,
+    0.063_092_092_629_978_55,
+    0.104_790_010_322_250_18,
+    0.140_653_259_715_525_92,
+    0.169_004_726_639_267_9,
+    0.190_350_578_064_785_4,
+    0.204_432_940_075_298_9,
+    0.209_482_141_084_727_83,
+];
+/// Gauss weights for the 7-point rule on `XGK[1], XGK[3], XGK[5], XGK[7]`.
+const WG: [f64; 4] = [
+    0.129_484_966_168_869_7,
+    0.279_705_391_489_276_7,
+    0.381_830_050_505_118_9,
+    0.417_959_183_673_469_4,
+];
+
+/// Deepest bisection of one quadrature interval.
+const MAX_DEPTH: u32 = 30;
+
+/// `∫a^b f` on a smooth piece, to about an ulp of the piece's integral.
+///
+/// The error of the Kronrod sum is estimated as QUADPACK's `qk15` does, from
+/// its difference `δ` with the embedded Gauss sum: `|K| min(1, (200 δ/|K|)^1.5)`;
+/// an interval whose estimate is above `2 ε |K|` is halved.
+fn adaptive(f: &dyn Fn(f64) -> f64, a: f64, b: f64, depth: u32) -> f64 {
+    let c = 0.5 * (a + b);
+    let h = 0.5 * (b - a);
+    let fc = f(c);
+    let mut kronrod = WGK[7] * fc;
+    let mut gauss = WG[3] * fc;
+    for j in 0..7 {
+        let pair = f(c - h * XGK[j]) + f(c + h * XGK[j]);
+        kronrod += WGK[j] * pair;
+        if j % 2 == 1 {
+            gauss += WG[j / 2] * pair;
+        }
+    }
+    let (kronrod, gauss) = (kronrod * h, gauss * h);
+    let size = kronrod.abs();
+    let estimate = size * (200.0 * (kronrod - gauss).abs() / size).powf(1.5).min(1.0);
+    // A NaN estimate (a zero integral) counts as converged.
+    let converged = estimate.is_nan() || estimate <= 2.0 * f64::EPSILON * size;
+    if depth >= MAX_DEPTH || converged || c <= a || c >= b {
+        kronrod
+    } else {
+        adaptive(f, a, c, depth + 1) + adaptive(f, c, b, depth + 1)
+    }
+}
+
+/// A ramp as a function of time: `f(t)` rising from the start to `fmax` at
+/// `t_ramp`, then held at `fmax`.
+pub struct Model {
+    f: Box<dyn Fn(f64) -> f64>,
+    /// Times in `(0, t_ramp)` where a new formula takes over, sorted.
+    joints: Vec<f64>,
+    /// When the ramp reaches `fmax`, in s.
+    pub t_ramp: f64,
+    /// The frequency held after the ramp, in Hz.
+    pub fmax: f64,
+}
+
+impl Model {
+    /// A model from its frequency on `[0, t_ramp)` and its joints.
+    pub fn new(
+        f: impl Fn(f64) -> f64 + 'static,
+        mut joints: Vec<f64>,
+        t_ramp: f64,
+        fmax: f64,
+    ) -> Self {
+        joints.retain(|&j| j > 0.0 && j < t_ramp);
+        joints.sort_by(f64::total_cmp);
+        Model {
+            f: Box::new(f),
+            joints,
+            t_ramp,
+            fmax,
+        }
+    }
+
+    /// `f(t)` for any `t >= 0`.
+    pub fn freq(&self, t: f64) -> f64 {
+        if t < self.t_ramp {
+            (self.f)(t)
+        } else {
+            self.fmax
+        }
+    }
+
+    /// `∫a^b f`, split where the curve changes formula.
+    pub fn integral(&self, a: f64, b: f64) -> f64 {
+        let mut sum = 0.0;
+        let mut from = a;
+        for &cut in self.joints.iter().chain(std::iter::once(&self.t_ramp)) {
+            if cut > from && cut < b {
+                sum += self.piece(from, cut);
+                from = cut;
+            }
+        }
+        sum + self.piece(from, b)
+    }
+
+    fn piece(&self, a: f64, b: f64) -> f64 {
+        if b <= a {
+            0.0
+        } else if a >= self.t_ramp {
+            self.fmax * (b - a)
+        } else {
+            adaptive(&|t| self.freq(t), a, b, 0)
+        }
+    }
+
+    /// Steps until the ramp reaches `fmax`: `N(t_ramp)`.
+    pub fn ramp_steps(&self) -> f64 {
+        self.integral(0.0, self.t_ramp)
+    }
+
+    /// The times of pulse edges `1..=n`, in s: `t(k)` with `N(t(k)) = k`.
+    pub fn edges(&self, n: usize) -> Vec<f64> {
+        let mut out = Vec::with_capacity(n);
+        let (mut t, mut residual) = (0.0f64, 0.0f64);
+        for _ in 0..n {
+            let need = 1.0 - residual;
+            // f does not fall, so the edge is within need / f(t) of t.
+            let mut lo = t;
+            let mut hi = t + need / self.freq(t);
+            while self.integral(t, hi) < need {
+                hi = t + 2.0 * (hi - t);
+            }
+            let mut b = t + need / self.freq(t + 0.5 * (hi - t));
+            if !(b > lo && b < hi) {
+                b = 0.5 * (lo + hi);
+            }
+            for _ in 0..200 {
+                let g = self.integral(t, b) - need;
+                if g == 0.0 {
+                    break;
+                }
+                if g < 0.0 {
+                    lo = b;
+                } else {
+                    hi = b;
+                }
+                let newton = b - g / self.freq(b);
+                let next = if newton > lo && newton < hi {
+                    newton
+                } else {
+                    0.5 * (lo + hi)
+                };
+                if (next - b).abs() <= 2.0 * f64::EPSILON * b || hi - lo <= 2.0 * f64::EPSILON * b {
+                    b = next;
+                    break;
+                }
+                b = next;
+            }
+            residual = residual + self.integral(t, b) - 1.0;
+            t = b;
+            out.push(t);
+        }
+        out
+    }
+}
+
+/// `Q = ∫0^1 g`, for the parameters that scale a fixed shape to `len` steps.
+pub fn unit_integral(g: impl Fn(f64) -> f64 + 'static) -> f64 {
+    Model::new(g, Vec::new(), 1.0, 0.0).integral(0.0, 1.0)
+}
+
+/// `1 / (1 + e^-x)`.
+fn logistic(x: f64) -> f64 {
+    1.0 / (1.0 + (-x).exp())
+}
+
+/// The sigmoid in time: `fmin + (fmax - fmin) · logistic(F (t - T/2) / (T/2))`
+/// over `[0, T]`, with `T` such that the curve takes `len` steps.
+pub fn sigmoid(fmin: f64, fmax: f64, flexible: f64, len: u32) -> Model {
+    let delt = fmax - fmin;
+    let q = unit_integral(move |s| fmin + delt * logistic(flexible * (2.0 * s - 1.0)));
+    let t = len as f64 / q;
+    let half = t / 2.0;
+    Model::new(
+        move |u| fmin + delt * logistic(flexible * (u - half) / half),
+        vec![half],
+        t,
+        fmin + delt,
+    )
+}
+
+/// How long an exponential ramp is.
+pub enum Extent {
+    /// `fmax` reached at the end of step `len`.
+    Len(u32),
+    /// The time constant, in s, or the acceleration, in Hz/s.
+    Given(f64),
+}
+
+/// Seed 001: `f(t) = fmin + (f_inf - fmin)(1 - e^(-t/tau))`, up to `fmax`.
+pub fn exponential(fmin: f64, fmax: f64, f_inf: f64, extent: Extent) -> Model {
+    let span = f_inf - fmin;
+    // f reaches fmax where 1 - e^-x = (fmax - fmin) / span.
+    let rise = -(-(fmax - fmin) / span).ln_1p();
+    let tau = match extent {
+        Extent::Given(tau) => tau,
+        Extent::Len(len) => {
+            // N scales with tau: the ramp at tau = 1 over x = t / tau in [0, rise].
+            let q = unit_integral(move |s| fmin - span * (-s * rise).exp_m1()) * rise;
+            len as f64 / q
+        }
+    };
+    Model::new(
+        move |t| fmin - span * (-t / tau).exp_m1(),
+        Vec::new(),
+        tau * rise,
+        fmax,
+    )
+}
+
+/// Seed 004 in time: `f(t) = fmin + a t`, up to `fmax`.
+pub fn linear(fmin: f64, fmax: f64, extent: Extent) -> Model {
+    let accel = match extent {
+        Extent::Given(a) => a,
+        Extent::Len(len) => {
+            // The ramp takes T = (fmax - fmin) / a and T · ∫0^1 (fmin + (fmax - fmin) s) ds steps.
+            let q = unit_integral(move |s| fmin + (fmax - fmin) * s);
+            (fmax - fmin) * q / len as f64
+        }
+    };
+    Model::new(
+        move |t| fmin + accel * t,
+        Vec::new(),
+        (fmax - fmin) / accel,
+        fmax,
+    )
+}
+
+/// Zeng, Hu and Hu's three stages (seed 002, equation (5)), value and slope
+/// continuous at both joints: `f0 + C (1 - e^(-B t))`, `a t + d`,
+/// `fc - b (t - tc)²`.
+pub fn three_stage(f0: f64, fc: f64, a: f64, f1: f64, f2: f64, shape: f64) -> Model {
+    let c = f1 - f0 + a / shape;
+    let t1 = (shape * (f1 - f0) / a).ln_1p() / shape;
+    let d = f1 - a * t1;
+    let t2 = t1 + (f2 - f1) / a;
+    let b = a * a / (4.0 * (fc - f2));
+    let tc = t2 + 2.0 * (fc - f2) / a;
+    Model::new(
+        move |t| {
+            if t < t1 {
+                f0 - c * (-shape * t).exp_m1()
+            } else if t < t2 {
+                a * t + d
+            } else {
+                fc - b * (t - tc) * (t - tc)
+            }
+        },
+        vec![t1, t2],
+        tc,
+        fc,
+    )
+}
+
+/// The jerk-limited ramp from its acceleration `a(s) = min(J s, A, J (T - s))`,
+/// with the peak `A` lowered to `sqrt(J (fmax - f0))` when `accel` is out of
+/// reach. `a` is symmetric about `T / 2`, so with `G(u) = ∫0^u min(J s, A) ds`,
+/// `f(t) = f0 + G(t)` on the first half and `fmax - G(T - t)` on the second.
+pub fn jerk_limited(f0: f64, fmax: f64, accel: f64, jerk: f64) -> Model {
+    let dv = fmax - f0;
+    let peak = accel.min((jerk * dv).sqrt());
+    let t_jerk = peak / jerk;
+    // The area under a(s) is peak · (T - t_jerk) = dv.
+    let t_ramp = dv / peak + t_jerk;
+    let g = move |u: f64| {
+        if u <= t_jerk {
+            jerk * u * u / 2.0
+        } else {
+            jerk * t_jerk * t_jerk / 2.0 + peak * (u - t_jerk)
+        }
+    };
+    Model::new(
+        move |t| {
+            if t <= t_ramp / 2.0 {
+                f0 + g(t)
+            } else {
+                fmax - g(t_ramp - t)
+            }
+        },
+        vec![t_jerk, t_ramp / 2.0, t_ramp - t_jerk],
+        t_ramp,
+        fmax,
+    )
+}
+
+/// Entries of a table whose ramp takes `steps` steps (a real number): `None`
+/// when `steps` is so near a whole number that rounding decides.
+pub fn entries(steps: f64) -> Option<u64> {
+    let whole = steps.round();
+    if (steps - whole).abs() <= 1e-9 * steps.max(1.0) {
+        Some(whole.max(1.0) as u64)
+    } else if (steps - whole).abs() <= 1e-6 * steps.max(1.0) {
+        None
+    } else {
+        Some(steps.ceil() as u64)
+    }
+}
