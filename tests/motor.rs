@@ -438,7 +438,7 @@ fn the_simulation_refuses_bad_input() {
     // Too many steps: refused before running, with how many it needed.
     let e = run(&motor, &spec, &table, 1e-12, 0.0).unwrap_err();
     assert!(
-        matches!(e, SimError::TooManySteps { needed, max: MAX_STEPS } if needed > MAX_STEPS),
+        matches!(e, SimError::TooManySteps { needed, max: MAX_STEPS, .. } if needed > MAX_STEPS),
         "{e:?}"
     );
     assert!(e.to_string().starts_with("the simulation needs "), "{e}");
@@ -564,6 +564,39 @@ timer_hz = 1_000_000
     )));
 }
 
+/// `[defaults]` may name the motor and hold motor keys: the motor's keys
+/// fill what a profile omits, defaults what is still missing, and a profile
+/// that names no motor takes no motor key from the defaults.
+#[test]
+fn defaults_name_the_motor_and_hold_its_keys() {
+    let source = r#"
+[defaults]
+timer_hz = 1_000_000
+motor = "nema17"
+safety = 1.5
+max_start_hz = 1200
+
+[motors.nema17]
+step_angle = 1.8
+rotor_inertia = 5.4e-6
+load_inertia = 2.0e-5
+torque_curve = [[0, 0.40], [500, 0.38], [1000, 0.33], [2000, 0.24], [4000, 0.12], [6000, 0.06]]
+friction = 0.02
+
+[profiles.gentle]
+curve = "linear"
+fmin = 300
+fmax = 2000
+accel = 2000
+"#;
+    let profiles = Profiles::parse("profiles.toml", source).unwrap();
+    assert_eq!(profiles.profiles()[0].motor, Some(nema17(1)));
+    // Without `motor` in the defaults, `safety` there makes no motor.
+    let source = source.replace("motor = \"nema17\"\n", "");
+    let profiles = Profiles::parse("profiles.toml", &source).unwrap();
+    assert_eq!(profiles.profiles()[0].motor, None);
+}
+
 /// The worked example: every profile of the shipped `profiles.toml` that
 /// names a motor passes the check and, played as a whole move, loses no step.
 #[test]
@@ -598,4 +631,169 @@ fn shipped_profiles_with_a_motor_follow_their_ramps() {
         assert!(result.settled, "{}", p.name);
     }
     assert!(bound >= 1, "no shipped profile names a motor");
+}
+
+/// The start is judged on every table: a one-entry table whose friction the
+/// motor cannot overcome does not pass, and its message says it is the start.
+#[test]
+fn every_table_is_checked_at_its_start() {
+    let spec = Spec::new(
+        Curve::Linear(Linear {
+            fmin: 400.0,
+            fmax: 500.0,
+            extent: LinearExtent::Len(1),
+        }),
+        Timer::new(1_000_000),
+    );
+    let table = spec.table().unwrap().periods;
+    assert_eq!(table.len(), 1);
+    let stuck = Motor {
+        friction: 10.0,
+        ..nema17(1)
+    };
+    let error = stuck.check(&spec, &table).unwrap_err();
+    assert!(
+        matches!(error, MotorError::Torque { step: 0, .. }),
+        "{error:?}"
+    );
+    assert_eq!(
+        error.to_string(),
+        "the motor cannot start at 450.0 Hz: it needs 10.0000 N·m but gives 0.2547 N·m after \
+         the safety factor, short by 9.7453 N·m"
+    );
+    // The same motor with its real friction starts; the start is the only edge.
+    let figures = nema17(1).check(&spec, &table).unwrap();
+    assert_eq!(figures.step, 0);
+    // 2222 ticks at 1 MHz: 450.045 Hz, where the curve gives 0.38199 N·m.
+    let available = (0.4 - 0.02 * (1e6 / 2222.0) / 500.0) / 1.5;
+    assert!(
+        (figures.min_margin_nm - (available - 0.02)).abs() < 1e-12,
+        "{figures:?}"
+    );
+    // And the check reports the start edge for plots, before the others.
+    let (ramp_spec, ramp_table) = ramp(2_000.0, 1);
+    let mut steps = Vec::new();
+    nema17(1)
+        .check_with(&ramp_spec, &ramp_table, |step, _, _, _| steps.push(step))
+        .unwrap();
+    assert_eq!(steps.len(), ramp_table.len());
+    assert_eq!(steps[..3], [0, 1, 2]);
+}
+
+/// No torque the check computes is ever a NaN or an infinity: inertias whose
+/// sum overflows are refused, and a torque that overflows is an error.
+#[test]
+fn the_check_never_passes_a_non_finite_torque() {
+    let (spec, table) = ramp(2_000.0, 1);
+    let huge = Motor {
+        rotor_inertia: 1e308,
+        load_inertia: 1e308,
+        ..nema17(1)
+    };
+    let error = huge.check(&spec, &table).unwrap_err();
+    assert_eq!(
+        error.to_string(),
+        "`load_inertia` must be small enough that `rotor_inertia + load_inertia` is a finite \
+         number (got 1e308)"
+    );
+    assert_eq!(error.key(), Key::LoadInertia);
+    let heavy = Motor {
+        rotor_inertia: 1.7e308,
+        load_inertia: 0.0,
+        ..nema17(1)
+    };
+    let error = heavy.check(&spec, &table).unwrap_err();
+    assert_eq!(
+        error,
+        MotorError::NotFinite {
+            step: 1,
+            what: "needed"
+        }
+    );
+    assert_eq!(
+        error.to_string(),
+        "the torque needed at step 1 is not a finite number: the motor's inertia, friction, \
+         damping or torque is too large to compute with"
+    );
+    assert_eq!(
+        nema17(1).check(&spec, &[]),
+        Err(MotorError::EmptyTable),
+        "an empty table"
+    );
+}
+
+/// A step too long for the integrator to be stable is refused, with the
+/// bound; a run too long says which step would fit, and that step works.
+#[test]
+fn the_simulation_refuses_unstable_steps_and_says_what_fits() {
+    let motor = nema17(1);
+    let (spec, table) = ramp(2_000.0, 1);
+    // ω = sqrt(0.4 N·m · 50 / 2.54e-5 kg·m²) = 887 rad/s: at most 1.13 ms.
+    let error = simulate::run(
+        &motor,
+        &spec,
+        &table,
+        &SimOptions {
+            dt_s: 2e-3,
+            settle_s: 0.0,
+        },
+    )
+    .unwrap_err();
+    assert_eq!(
+        error.to_string(),
+        "the integration step of 2.000e-3 s is too long for this rotor: the model is \
+         integrated stably with steps of at most 1.127e-3 s"
+    );
+    let SimError::TooManySteps {
+        fits_with_dt_s: Some(fits),
+        ..
+    } = simulate::run(
+        &motor,
+        &spec,
+        &table,
+        &SimOptions {
+            dt_s: 1e-10,
+            settle_s: 0.1,
+        },
+    )
+    .unwrap_err()
+    else {
+        panic!("expected a step that fits")
+    };
+    let result = simulate::run(
+        &motor,
+        &spec,
+        &table,
+        &SimOptions {
+            dt_s: fits,
+            settle_s: 0.1,
+        },
+    );
+    assert!(result.is_ok(), "{result:?}");
+    // A settle time no step can fit says so.
+    let error = simulate::run(
+        &motor,
+        &spec,
+        &table,
+        &SimOptions {
+            dt_s: 1e-6,
+            settle_s: 1e6,
+        },
+    )
+    .unwrap_err();
+    assert!(
+        error
+            .to_string()
+            .ends_with("no stable step fits; simulate a shorter table or a shorter settle time"),
+        "{error}"
+    );
+    // The suggested options are always accepted, even for a stiff, damped rotor.
+    let stiff = Motor {
+        damping: 0.5,
+        torque_curve: TorqueCurve::new(&[(0.0, 4000.0), (2000.0, 3000.0), (4000.0, 100.0)])
+            .unwrap(),
+        ..motor
+    };
+    let options = SimOptions::suggested(&stiff, &spec, &table);
+    assert!(simulate::run(&stiff, &spec, &table, &options).is_ok());
 }

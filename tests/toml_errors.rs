@@ -55,6 +55,15 @@ const REQUIRED: &[&str] = &[
     "motor_no_motors",
     "motor_cannot_follow",
     "motor_start_too_fast",
+    // Values at the edge of what a file can hold, and names C reserves.
+    "motor_table_profile_key",
+    "motor_unknown_many",
+    "number_too_large_float",
+    "number_too_large_int",
+    "number_too_many_digits",
+    "segments_count_overflow",
+    "bad_name_errno",
+    "file_too_large",
 ];
 
 /// The file named in messages, as `include_profiles!("profiles.toml")` names it.
@@ -262,4 +271,50 @@ fn crlf_sources_read_the_same() {
         let crlf = Profiles::parse(FILE, &crlf).unwrap_err();
         assert_eq!(crlf.message(), lf.message(), "{name}");
     }
+}
+
+/// Many mistakes render in time and space linear in their number: 24 000
+/// broken profiles, and 500 profiles naming unknown motors among 500
+/// declared ones (each message lists a few motors, not all of them).
+#[test]
+fn many_mistakes_render_in_linear_time_and_space() {
+    let broken: String = (0..24_000)
+        .map(|i| format!("[profiles.p{i}]\ncurve = \"sigmoid\"\nlen = 0\n\n"))
+        .collect();
+    let message = Profiles::parse(FILE, &broken)
+        .unwrap_err()
+        .message()
+        .to_string();
+    // Each profile: `len` must be at least 1, and its missing keys.
+    let diagnostics = message.matches("profiles.toml:").count();
+    assert_eq!(diagnostics, 48_000, "{}", &message[..400]);
+
+    let motors: String = (0..500)
+        .map(|i| {
+            format!(
+                "[motors.motor_{i}]\nstep_angle = 1.8\nrotor_inertia = 5.4e-6\n\
+                 torque_curve = [[0, 0.4], [6000, 0.06]]\n\n"
+            )
+        })
+        .collect();
+    let profiles: String = (0..500)
+        .map(|i| {
+            format!(
+                "[profiles.p{i}]\ncurve = \"linear\"\nfmin = 300\nfmax = 2000\n\
+                 timer_hz = 1_000_000\naccel = 2000\nmotor = \"unknown_{i}\"\n\n"
+            )
+        })
+        .collect();
+    let source = motors + &profiles;
+    let message = Profiles::parse(FILE, &source)
+        .unwrap_err()
+        .message()
+        .to_string();
+    assert_eq!(message.matches("unknown motor").count(), 500);
+    assert!(
+        message.len() < 400 * 500,
+        "{} bytes for 500 messages: {}",
+        message.len(),
+        &message[..600]
+    );
 }

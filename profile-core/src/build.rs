@@ -76,29 +76,59 @@ impl fmt::Display for LoadError {
 
 impl std::error::Error for LoadError {}
 
-/// 1-based line and column (in characters) of byte `offset`.
-fn line_col(source: &str, offset: usize) -> (usize, usize) {
-    let offset = offset.min(source.len());
-    let before = source.get(..offset).unwrap_or(source);
-    let line = before.matches('\n').count() + 1;
-    let line_start = before.rfind('\n').map_or(0, |i| i + 1);
-    let col = source
-        .get(line_start..offset)
-        .map_or(0, |s| s.chars().count())
-        + 1;
-    (line, col)
+/// Where each line of a source starts, for locating many diagnostics in
+/// one pass over the text.
+struct Lines<'a> {
+    source: &'a str,
+    starts: Vec<usize>,
 }
 
-/// Renders diagnostics as `file:line:col: message`, the line, and a caret.
+impl<'a> Lines<'a> {
+    fn new(source: &'a str) -> Self {
+        let starts = std::iter::once(0)
+            .chain(source.match_indices('\n').map(|(i, _)| i + 1))
+            .collect();
+        Lines { source, starts }
+    }
+
+    /// 1-based line and column (in characters) of byte `offset`.
+    fn line_col(&self, offset: usize) -> (usize, usize) {
+        let offset = offset.min(self.source.len());
+        let line = self.starts.partition_point(|&s| s <= offset);
+        let start = self.starts[line - 1];
+        let col = self
+            .source
+            .get(start..offset)
+            .map_or(0, |s| s.chars().count())
+            + 1;
+        (line, col)
+    }
+
+    /// Line `line` (1-based), without its end.
+    fn line(&self, line: usize) -> Option<&'a str> {
+        let start = *self.starts.get(line - 1)?;
+        if start >= self.source.len() {
+            return None;
+        }
+        let end = self.starts.get(line).map_or(self.source.len(), |&e| e - 1);
+        self.source
+            .get(start..end)
+            .map(|l| l.trim_end_matches('\r'))
+    }
+}
+
+/// Renders diagnostics as `file:line:col: message`, the line, and a caret:
+/// in time linear in the source and the diagnostics.
 fn render(file: &str, source: &str, diagnostics: &[Diagnostic<Range<usize>>]) -> LoadError {
+    let lines = Lines::new(source);
     let mut text = String::new();
     for (i, d) in diagnostics.iter().enumerate() {
         if i > 0 {
             text.push('\n');
         }
-        let (line, col) = line_col(source, d.loc.start);
+        let (line, col) = lines.line_col(d.loc.start);
         text.push_str(&format!("{file}:{line}:{col}: {}\n", d.message));
-        if let Some(src_line) = source.lines().nth(line - 1) {
+        if let Some(src_line) = lines.line(line) {
             let number = line.to_string();
             let pad = " ".repeat(number.len());
             let width = source
@@ -137,6 +167,12 @@ fn bad_name(name: &str) -> Option<String> {
         Some(format!(
             "profile name `{name}` must be a snake_case Rust identifier \
              (lowercase letters, digits and `_`, starting with a letter): it names a module"
+        ))
+    } else if name.starts_with('e') && name[1..].starts_with(|c: char| c.is_ascii_digit()) {
+        Some(format!(
+            "profile name `{name}` would make C names `{}_...`, which C reserves for error codes \
+             (`E` followed by a digit): start it otherwise",
+            name.to_uppercase()
         ))
     } else if KEYWORDS.contains(&name) {
         Some(format!(
@@ -199,12 +235,34 @@ fn toml_message(message: &str, source: &str, span: &Range<usize>) -> String {
     }
     if let Some(rest) = message.strip_prefix("unknown field `") {
         let field = rest.split('`').next().unwrap_or("");
-        let hint = params::suggest(field, ["defaults", "profiles"])
+        let hint = params::suggest(field, ["defaults", "motors", "profiles"])
             .map(|s| format!("did you mean `[{s}]`? "))
             .unwrap_or_default();
         return format!(
-            "unknown table `{field}`; {hint}expected `[defaults]` or `[profiles.NAME]` tables"
+            "unknown table `{field}`; {hint}expected `[defaults]`, `[motors.NAME]` or \
+             `[profiles.NAME]` tables"
         );
+    }
+    // A number too large for the parser: name the key it is the value of.
+    if message.contains("overflowed") || message.contains(" as i128") {
+        let line_start = source
+            .get(..span.start)
+            .and_then(|s| s.rfind('\n'))
+            .map_or(0, |i| i + 1);
+        let key = source
+            .get(line_start..span.start)
+            .unwrap_or("")
+            .trim_end()
+            .trim_end_matches('=')
+            .trim();
+        return if message.contains("overflowed") {
+            format!("`{key}` is too large for a 64-bit float (at most about 1.8e308)")
+        } else {
+            format!(
+                "`{key}` is too large for a TOML integer (at most {})",
+                i64::MAX
+            )
+        };
     }
     if message.contains("expected a map") {
         return format!(
@@ -218,6 +276,40 @@ fn sorted(table: &Table) -> Vec<(&Spanned<String>, &Spanned<toml::Value>)> {
     let mut entries: Vec<_> = table.iter().collect();
     entries.sort_by_key(|(k, _)| k.span().start);
     entries
+}
+
+/// The most entries (steps, summed over every profile) one profiles file may
+/// generate: four tables of [`MAX_LEN`](crate::MAX_LEN), 512 KiB of `u16`
+/// flash. It bounds the work and memory of one `include_profiles!` or build
+/// script; a file above it is refused before its tables are computed.
+pub const MAX_FILE_ENTRIES: u32 = 4 * crate::MAX_LEN;
+
+/// The most motor names an "unknown motor" message lists.
+const LISTED_MOTORS: usize = 8;
+
+/// "unknown motor": the declared names (a few, in order), and the nearest.
+fn unknown_motor(value: &Value, declared: &[&str]) -> String {
+    let hint = match value {
+        Value::Name(n) => params::suggest(n, declared.iter().copied())
+            .map(|s| format!("did you mean `{s}`? "))
+            .unwrap_or_default(),
+        _ => String::new(),
+    };
+    let list = match declared.len() {
+        0 => "the file declares no `[motors.NAME]` table".to_string(),
+        n if n <= LISTED_MOTORS => {
+            format!(
+                "the file declares {}",
+                params::quoted(declared.iter().copied())
+            )
+        }
+        n => format!(
+            "the file declares {} and {} more",
+            params::quoted(declared[..LISTED_MOTORS].iter().copied()),
+            n - LISTED_MOTORS
+        ),
+    };
+    format!("unknown motor {}; {hint}{list}", value.quoted())
 }
 
 /// The profiles of one file, checked and computed.
@@ -291,7 +383,35 @@ impl Profiles {
             });
         }
 
+        // A motor table holds a motor's keys only; checked once per motor.
+        let motors: Vec<_> = parsed.motors.iter().flatten().collect();
+        for (_, table) in &motors {
+            for (key, _) in sorted(table.get_ref()) {
+                if Key::from_name(key.get_ref()).is_some_and(|k| Key::MOTOR.contains(&k)) {
+                    continue;
+                }
+                let motor_keys = Key::MOTOR.iter().map(|k| k.name());
+                let hint = params::suggest(key.get_ref(), motor_keys.clone())
+                    .map(|s| format!("did you mean `{s}`? "))
+                    .unwrap_or_default();
+                diagnostics.push(Diagnostic {
+                    loc: key.span(),
+                    message: format!(
+                        "`{}` is not a motor key; {hint}a `[motors.NAME]` table takes {} \
+                         (a profile's keys go in `[profiles.NAME]` or `[defaults]`)",
+                        key.get_ref(),
+                        params::quoted(motor_keys)
+                    ),
+                });
+            }
+        }
+        let mut motor_names: Vec<&str> = motors.iter().map(|(k, _)| k.get_ref().as_str()).collect();
+        motor_names.sort_unstable();
+
         let mut profiles = Vec::new();
+        // Profiles whose arguments are right, and the entries they ask for.
+        let mut checked = Vec::new();
+        let mut entries: u64 = 0;
         for (name, table) in names {
             if let Some(message) = bad_name(name.get_ref()) {
                 diagnostics.push(Diagnostic {
@@ -304,61 +424,55 @@ impl Profiles {
                 .into_iter()
                 .map(|(key, v)| arg(key, v))
                 .collect();
-            // A named motor's keys fill what the profile omits.
-            if let Some(m) = args.iter().find(|a| a.key == "motor").cloned() {
+            let long = args.iter().find_map(|a| {
+                let digits = source
+                    .get(a.value_loc.clone())?
+                    .chars()
+                    .filter(char::is_ascii_digit)
+                    .count();
+                let number = matches!(a.value, Value::Int(_) | Value::Float(_));
+                (number && digits > params::MAX_DIGITS).then(|| Diagnostic {
+                    loc: a.value_loc.clone(),
+                    message: params::too_many_digits(&a.key, digits),
+                })
+            });
+            if let Some(d) = long {
+                diagnostics.push(d);
+                continue;
+            }
+            // The motor the profile names, itself or through `[defaults]`:
+            // its keys fill what the profile omits.
+            let named = args
+                .iter()
+                .chain(&defaults)
+                .find(|a| a.key == Key::Motor.name())
+                .cloned();
+            if let Some(m) = &named {
                 let found = match &m.value {
-                    Value::Name(n) => parsed
-                        .motors
-                        .as_ref()
-                        .and_then(|motors| motors.iter().find(|(k, _)| k.get_ref() == n)),
+                    Value::Name(n) => motors.iter().find(|(k, _)| k.get_ref() == n),
                     _ => None,
                 };
                 match found {
                     Some((_, table)) => {
                         for (key, v) in sorted(table.get_ref()) {
-                            if !args.iter().any(|a| &a.key == key.get_ref()) {
+                            let motor_key = Key::from_name(key.get_ref())
+                                .is_some_and(|k| Key::MOTOR.contains(&k));
+                            if motor_key && !args.iter().any(|a| &a.key == key.get_ref()) {
                                 args.push(arg(key, v));
                             }
                         }
                     }
                     None => {
-                        let mut names: Vec<String> = parsed
-                            .motors
-                            .iter()
-                            .flatten()
-                            .map(|(k, _)| format!("`{}`", k.get_ref()))
-                            .collect();
-                        names.sort();
-                        let declared = if names.is_empty() {
-                            "the file declares no `[motors.NAME]` table".to_string()
-                        } else {
-                            format!("the file declares {}", names.join(", "))
-                        };
-                        let hint = match &m.value {
-                            Value::Name(n) => params::suggest(
-                                n,
-                                parsed
-                                    .motors
-                                    .iter()
-                                    .flatten()
-                                    .map(|(k, _)| k.get_ref().as_str()),
-                            )
-                            .map(|s| format!("did you mean `{s}`? "))
-                            .unwrap_or_default(),
-                            _ => String::new(),
-                        };
                         diagnostics.push(Diagnostic {
                             loc: m.value_loc.clone(),
-                            message: format!(
-                                "unknown motor {}; {hint}{declared}",
-                                m.value.quoted()
-                            ),
+                            message: unknown_motor(&m.value, &motor_names),
                         });
                         continue;
                     }
                 }
             }
-            // Defaults fill what the profile omits, where its curve takes them.
+            // Defaults fill what the profile omits, where its curve takes
+            // them; a motor's keys only where the profile has a motor.
             let curve = args
                 .iter()
                 .chain(&defaults)
@@ -367,23 +481,54 @@ impl Profiles {
                     Value::Name(n) if params::CURVES.contains(&n.as_str()) => Some(n.clone()),
                     _ => None,
                 });
+            let has_motor = named.is_some()
+                || args
+                    .iter()
+                    .any(|a| Key::from_name(&a.key).is_some_and(|k| Key::MOTOR.contains(&k)));
             for d in &defaults {
-                let applies = match &curve {
-                    Some(c) => params::keys_for(c).iter().any(|k| k.name() == d.key),
-                    None => true,
+                let key = Key::from_name(&d.key);
+                let applies = if key.is_some_and(|k| Key::MOTOR.contains(&k)) {
+                    has_motor
+                } else {
+                    match &curve {
+                        Some(c) => params::keys_for(c).iter().any(|k| k.name() == d.key),
+                        None => true,
+                    }
                 };
                 if applies && !args.iter().any(|a| a.key == d.key) {
                     args.push(d.clone());
                 }
             }
             let whole = name.span();
-            let parsed = match params::spec_from_args_assuming(&args, &whole, &meant) {
-                Ok(p) => p,
-                Err(mut d) => {
-                    diagnostics.append(&mut d);
-                    continue;
+            match params::spec_from_args_assuming(&args, &whole, &meant) {
+                Ok(p) => {
+                    entries += p.spec.len() as u64;
+                    checked.push((name, args, p));
                 }
-            };
+                Err(mut d) => diagnostics.append(&mut d),
+            }
+        }
+        // The file's total, checked before any table is computed.
+        if entries > MAX_FILE_ENTRIES as u64 {
+            let mut sum = 0u64;
+            let over = checked.iter().find(|(_, _, p)| {
+                sum += p.spec.len() as u64;
+                sum > MAX_FILE_ENTRIES as u64
+            });
+            if let Some((name, _, _)) = over {
+                diagnostics.push(Diagnostic {
+                    loc: name.span(),
+                    message: format!(
+                        "profile `{}` brings the file to {sum} entries, more than the \
+                         {MAX_FILE_ENTRIES} one file may hold; split the profiles over several files",
+                        name.get_ref()
+                    ),
+                });
+            }
+            checked.clear();
+        }
+        for (name, args, parsed) in checked {
+            let whole = name.span();
             let spec = parsed.spec;
             let table = match parsed.layout {
                 Layout::Steps => spec.table().map(Generated::Steps),
@@ -499,10 +644,17 @@ mod tests {
     #[test]
     fn line_and_column_count_characters() {
         let src = "a = 1\nbé = 2\n";
-        assert_eq!(line_col(src, 0), (1, 1));
-        assert_eq!(line_col(src, 6), (2, 1));
-        assert_eq!(line_col(src, src.find('=').unwrap()), (1, 3));
-        assert_eq!(line_col(src, src.rfind('2').unwrap()), (2, 6));
+        let lines = Lines::new(src);
+        assert_eq!(lines.line_col(0), (1, 1));
+        assert_eq!(lines.line_col(6), (2, 1));
+        assert_eq!(lines.line_col(src.find('=').unwrap()), (1, 3));
+        assert_eq!(lines.line_col(src.rfind('2').unwrap()), (2, 6));
+        assert_eq!(lines.line_col(src.len()), (3, 1));
+        // As `str::lines`: no line after the final newline.
+        assert_eq!(
+            (lines.line(1), lines.line(2), lines.line(3)),
+            (Some("a = 1"), Some("bé = 2"), None)
+        );
     }
 
     #[test]
@@ -515,5 +667,9 @@ mod tests {
         assert!(bad_name("type").is_some());
         assert!(bad_name("_hidden").is_some());
         assert!(bad_name("").is_some());
+        assert!(bad_name("e1").is_some());
+        assert!(bad_name("e2_fast").is_some());
+        assert!(bad_name("exponential").is_none());
+        assert!(bad_name("e").is_none());
     }
 }

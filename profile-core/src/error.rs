@@ -262,6 +262,15 @@ pub enum Error {
         /// The number of steps in the ramp.
         steps: u32,
     },
+    /// A segment holds more steps than its count's word holds.
+    SegmentTooLong {
+        /// The segment's index.
+        index: u32,
+        /// Its step count.
+        count: u32,
+        /// The word of the counts.
+        word: crate::Word,
+    },
     /// A segment table needs a curve in time.
     SegmentsNeedTime {
         /// The discretization asked for.
@@ -355,9 +364,28 @@ impl Error {
             Error::TicksPerStep { .. } => Some(Key::TicksPerStep),
             Error::PeriodOverflow { .. } => Some(Key::Fmin),
             Error::PeriodZero { .. } => Some(Key::Fmax),
-            Error::EmptySegment { .. } | Error::SegmentsNeedTime { .. } => Some(Key::Segments),
+            Error::EmptySegment { .. }
+            | Error::SegmentTooLong { .. }
+            | Error::SegmentsNeedTime { .. } => Some(Key::Segments),
             Error::BufferLength { .. } | Error::WordMismatch { .. } => None,
-            Error::NoConvergence { .. } => Some(Key::Curve),
+            Error::NoConvergence { .. } => None,
+        }
+    }
+}
+
+/// A number as a user wrote it: plain between 1e-6 and 1e16 (`500`,
+/// `0.25`), in exponent form beyond (`1e308`, `2.5e-9`), so that no message
+/// spells out three hundred digits.
+pub(crate) struct Num(pub(crate) f64);
+
+impl fmt::Display for Num {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let v = self.0;
+        let magnitude = libm::fabs(v);
+        if !v.is_finite() || v == 0.0 || (1e-6..1e16).contains(&magnitude) {
+            write!(f, "{v}")
+        } else {
+            write!(f, "{v:e}")
         }
     }
 }
@@ -408,13 +436,18 @@ impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match *self {
             Error::NotFinite { key, value } => {
-                write!(f, "`{key}` must be a finite number (got {value})")
+                write!(f, "`{key}` must be a finite number (got {})", Num(value))
             }
             Error::NotPositive { key, value } => {
-                write!(f, "`{key}` must be greater than 0 (got {value})")
+                write!(f, "`{key}` must be greater than 0 (got {})", Num(value))
             }
             Error::TooLarge { key, value, max } => {
-                write!(f, "`{key}` must be at most {max} (got {value})")
+                write!(
+                    f,
+                    "`{key}` must be at most {} (got {})",
+                    Num(max),
+                    Num(value)
+                )
             }
             Error::NotGreater {
                 key,
@@ -423,7 +456,9 @@ impl fmt::Display for Error {
                 other_value,
             } => write!(
                 f,
-                "`{key}` must be greater than `{other}` (got {value} <= {other_value})"
+                "`{key}` must be greater than `{other}` (got {} <= {})",
+                Num(value),
+                Num(other_value)
             ),
             Error::Zero { key } => write!(f, "`{key}` must not be 0"),
             Error::TooSmall {
@@ -433,8 +468,9 @@ impl fmt::Display for Error {
                 why,
             } => write!(
                 f,
-                "`{key}` must be greater than {}{why} (got {value})",
-                Significant(min)
+                "`{key}` must be greater than {}{why} (got {})",
+                Significant(min),
+                Num(value)
             ),
             Error::NotAtLeast {
                 key,
@@ -443,11 +479,14 @@ impl fmt::Display for Error {
                 other_value,
             } => write!(
                 f,
-                "`{key}` must be at least `{other}` (got {value} < {other_value})"
+                "`{key}` must be at least `{other}` (got {} < {})",
+                Num(value),
+                Num(other_value)
             ),
             Error::NotWhole { key, value } => write!(
                 f,
-                "`{key}` must be a whole number with `arithmetic = integer` (got {value})"
+                "`{key}` must be a whole number with `arithmetic = integer` (got {})",
+                Num(value)
             ),
             Error::IntegerOverflow {
                 key,
@@ -465,6 +504,13 @@ impl fmt::Display for Error {
             Error::EmptySegment { index, steps } => write!(
                 f,
                 "segment {index} holds no step of the {steps}-step ramp; use fewer `segments`"
+            ),
+            Error::SegmentTooLong { index, count, word } => write!(
+                f,
+                "segment {index} holds {count} steps, more than a `word = {}` count holds ({}); \
+                 use more `segments`",
+                word.name(),
+                word.max()
             ),
             Error::SegmentsNeedTime { discretization } => write!(
                 f,
@@ -513,7 +559,8 @@ impl fmt::Display for Error {
             ),
             Error::NoConvergence { index, iterations } => write!(
                 f,
-                "the pulse time of step {index} did not converge within {iterations} iterations"
+                "the pulse time of step {index} did not converge within {iterations} iterations: \
+                 the curve's step count is not a finite number there"
             ),
         }
     }
@@ -618,6 +665,14 @@ mod tests {
                 "segment 0 holds no step of the 120-step ramp; use fewer `segments`",
             ),
             (
+                Error::SegmentTooLong {
+                    index: 0,
+                    count: 65_536,
+                    word: Word::U16
+                },
+                "segment 0 holds 65536 steps, more than a `word = u16` count holds (65535); use more `segments`",
+            ),
+            (
                 Error::SegmentsNeedTime {
                     discretization: Discretization::Index
                 },
@@ -683,7 +738,7 @@ mod tests {
                     index: 7,
                     iterations: 100
                 },
-                "the pulse time of step 7 did not converge within 100 iterations",
+                "the pulse time of step 7 did not converge within 100 iterations: the curve's step count is not a finite number there",
             ),
         ]
     }
@@ -712,13 +767,14 @@ mod tests {
             Error::WordMismatch { .. } => 19,
             Error::NoConvergence { .. } => 20,
             Error::NotAtLeast { .. } => 21,
+            Error::SegmentTooLong { .. } => 22,
         }
     }
 
     #[test]
     fn every_variant_has_a_pinned_message() {
         let examples = examples();
-        let mut seen = [false; 22];
+        let mut seen = [false; 23];
         for (error, message) in &examples {
             assert_eq!(error.to_string(), *message);
             seen[covered(error)] = true;

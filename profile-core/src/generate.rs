@@ -134,6 +134,29 @@ impl Quantizer {
         self.check(index, rounded, entry)
     }
 
+    /// Refuses, before any pulse time is solved, a curve whose every period
+    /// (between `1 / f_start` and `1 / f_end`) is too long for the word or
+    /// rounds to 0 ticks: entry 0 is then out of range whatever the curve.
+    fn reachable(&self, f_start: f64, f_end: f64) -> Result<(), Error> {
+        let (shortest, longest) = (self.scale / f_end, self.scale / f_start);
+        if shortest.is_nan() || shortest > self.timer.word.max() as f64 + 1.0 {
+            return Err(Error::PeriodOverflow {
+                index: 0,
+                ticks: longest,
+                word: self.timer.word,
+                timer_hz: self.timer.timer_hz,
+                lowest_hz: self.timer.lowest_frequency(),
+            });
+        }
+        if longest.is_nan() || longest < 0.5 {
+            return Err(Error::PeriodZero {
+                index: 0,
+                highest_hz: self.scale,
+            });
+        }
+        Ok(())
+    }
+
     /// Records entry `index` already rounded by the curve's own arithmetic.
     fn push_exact(&mut self, index: u32, ticks: u64, entry: f64) -> Result<u32, Error> {
         self.exact_edge += entry;
@@ -365,6 +388,7 @@ impl Spec {
             (curve, discretization) => {
                 let model = TimeModel::new(&curve);
                 let c = model.curve();
+                quantizer.reachable(c.freq(0.0), c.end_freq())?;
                 let mut t = 0.0;
                 for k in 0..len {
                     let next = edge_time(c, k + 1)?;

@@ -24,7 +24,7 @@
 
 use core::fmt;
 
-use crate::error::Key;
+use crate::error::{Key, Num};
 use crate::spec::Spec;
 
 /// The most points a pull-out torque curve may have.
@@ -158,6 +158,16 @@ pub enum MotorError {
         /// Whether the frequency is beyond the torque curve's last point.
         beyond_curve: bool,
     },
+    /// A torque the check computes is not a finite number: the motor's
+    /// figures are too large for `f64` arithmetic.
+    NotFinite {
+        /// The step where it happens.
+        step: u32,
+        /// What is not finite: `needed` or `available`.
+        what: &'static str,
+    },
+    /// The table to check has no entries.
+    EmptyTable,
     /// The ramp starts above the motor's maximum start frequency.
     Start {
         /// The ramp's start frequency, in Hz.
@@ -174,6 +184,8 @@ impl MotorError {
             MotorError::Invalid { key, .. } => key,
             MotorError::Curve { .. } => Key::TorqueCurve,
             MotorError::Torque { .. } | MotorError::Start { .. } => Key::Motor,
+            MotorError::NotFinite { .. } => Key::RotorInertia,
+            MotorError::EmptyTable => Key::Motor,
         }
     }
 }
@@ -186,7 +198,7 @@ impl fmt::Display for MotorError {
                 value,
                 expected,
             } => {
-                write!(f, "`{key}` must be {expected} (got {value})")
+                write!(f, "`{key}` must be {expected} (got {})", Num(value))
             }
             MotorError::Curve { index, hz, nm } => {
                 write!(
@@ -208,9 +220,14 @@ impl fmt::Display for MotorError {
                 available_nm,
                 beyond_curve,
             } => {
+                if step == 0 {
+                    write!(f, "the motor cannot start at {hz:.1} Hz")?;
+                } else {
+                    write!(f, "the motor cannot follow step {step} at {hz:.1} Hz")?;
+                }
                 write!(
                     f,
-                    "the motor cannot follow step {step} at {hz:.1} Hz: it needs {needed_nm:.4} N·m but gives {available_nm:.4} N·m after the safety factor, short by {:.4} N·m",
+                    ": it needs {needed_nm:.4} N·m but gives {available_nm:.4} N·m after the safety factor, short by {:.4} N·m",
                     needed_nm - available_nm
                 )?;
                 if beyond_curve {
@@ -218,6 +235,12 @@ impl fmt::Display for MotorError {
                 }
                 Ok(())
             }
+            MotorError::NotFinite { step, what } => write!(
+                f,
+                "the torque {what} at step {step} is not a finite number: the motor's inertia, \
+                 friction, damping or torque is too large to compute with"
+            ),
+            MotorError::EmptyTable => f.write_str("the table to check has no entries"),
             MotorError::Start { hz, max_hz } => write!(
                 f,
                 "the ramp starts at {hz:.1} Hz, above the motor's maximum start frequency `max_start_hz = {max_hz}`"
@@ -266,6 +289,13 @@ impl Motor {
         }
         positive(Key::RotorInertia, self.rotor_inertia)?;
         non_negative(Key::LoadInertia, self.load_inertia)?;
+        if !(self.rotor_inertia + self.load_inertia).is_finite() {
+            return Err(MotorError::Invalid {
+                key: Key::LoadInertia,
+                value: self.load_inertia,
+                expected: "small enough that `rotor_inertia + load_inertia` is a finite number",
+            });
+        }
         non_negative(Key::Friction, self.friction)?;
         non_negative(Key::Damping, self.damping)?;
         if !(self.safety.is_finite() && self.safety >= 1.0) {
@@ -305,7 +335,7 @@ impl Motor {
     }
 
     /// [`Motor::check`], also calling `each(step, hz, needed, available)` for
-    /// every edge, for plots.
+    /// every edge (step 0 is the start from rest), for plots.
     pub fn check_with<F: FnMut(u32, f64, f64, f64)>(
         &self,
         spec: &Spec,
@@ -322,13 +352,20 @@ impl Motor {
         }
         let inertia = self.rotor_inertia + self.load_inertia;
         let theta = self.step_radians();
+        // The start is an edge too: from rest to the first entry's speed.
+        // Pulling in from rest is `max_start_hz`'s to judge; what the check
+        // asks of the first step is the torque to keep that speed.
+        let Some(&first) = periods.first() else {
+            return Err(MotorError::EmptyTable);
+        };
+        let hz = per_second / first as f64;
+        let mut worst = self.judge(0, hz, self.friction + self.damping * theta * hz, &mut each)?;
         // Speeds are averaged over one full step on each side of an edge
         // (`microsteps` entries, fewer at the ends of the table).
         let m = (self.microsteps as usize).max(1);
         let n = periods.len();
         // Window a = entries [a_start, k + 1), window b = [k + 1, b_end).
         let (mut sum_a, mut a_start, mut sum_b, mut b_end) = (0u64, 0usize, 0u64, 1usize);
-        let mut worst: Option<TorqueFigures> = None;
         for (k, w) in periods.windows(2).enumerate() {
             sum_a += w[0] as u64;
             if k + 1 - a_start > m {
@@ -349,46 +386,49 @@ impl Motor {
             // between the two steps' speeds, half of both periods apart).
             let alpha = theta * (lb / tb - la / ta) / ((ta + tb) / 2.0);
             let (fa, fb) = (per_second / w[0] as f64, per_second / w[1] as f64);
-            let omega = theta * fa.max(fb);
-            let needed = inertia * alpha + self.friction + self.damping * omega;
             // Less torque at higher frequency: judge at the faster step.
             let hz = fa.max(fb);
-            let available = self.available(hz);
-            let step = k as u32 + 1;
-            each(step, hz, needed, available);
-            if needed > available {
-                return Err(MotorError::Torque {
-                    step,
-                    hz,
-                    needed_nm: needed,
-                    available_nm: available,
-                    beyond_curve: hz > self.torque_curve.top(),
-                });
-            }
-            let margin = available - needed;
-            if worst.is_none_or(|w| margin < w.min_margin_nm) {
-                worst = Some(TorqueFigures {
-                    min_margin_nm: margin,
-                    step,
-                    hz,
-                    needed_nm: needed,
-                    available_nm: available,
-                });
+            let needed = inertia * alpha + self.friction + self.damping * theta * hz;
+            let figures = self.judge(k as u32 + 1, hz, needed, &mut each)?;
+            if figures.min_margin_nm < worst.min_margin_nm {
+                worst = figures;
             }
         }
-        // A one-entry table has no acceleration: only friction at its speed.
-        Ok(worst.unwrap_or_else(|| {
-            let hz = periods.first().map_or(0.0, |&p| per_second / p as f64);
-            let needed = self.friction + self.damping * theta * hz;
-            let available = self.available(hz);
-            TorqueFigures {
-                min_margin_nm: available - needed,
-                step: 0,
+        Ok(worst)
+    }
+
+    /// One edge: the torque `needed` at step frequency `hz` against what the
+    /// motor gives there.
+    fn judge<F: FnMut(u32, f64, f64, f64)>(
+        &self,
+        step: u32,
+        hz: f64,
+        needed: f64,
+        each: &mut F,
+    ) -> Result<TorqueFigures, MotorError> {
+        let available = self.available(hz);
+        for (value, what) in [(needed, "needed"), (available, "available")] {
+            if !value.is_finite() {
+                return Err(MotorError::NotFinite { step, what });
+            }
+        }
+        each(step, hz, needed, available);
+        if needed > available {
+            return Err(MotorError::Torque {
+                step,
                 hz,
                 needed_nm: needed,
                 available_nm: available,
-            }
-        }))
+                beyond_curve: hz > self.torque_curve.top(),
+            });
+        }
+        Ok(TorqueFigures {
+            min_margin_nm: available - needed,
+            step,
+            hz,
+            needed_nm: needed,
+            available_nm: available,
+        })
     }
 }
 

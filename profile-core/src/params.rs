@@ -37,7 +37,11 @@ impl Value {
     /// A name that reads as a number says it is a string.
     pub fn quoted(&self) -> String {
         match self {
-            Value::Name(n) if n.trim().parse::<f64>().is_ok() => {
+            Value::Name(n)
+                if n.trim()
+                    .starts_with(|c: char| c.is_ascii_digit() || "+-.".contains(c))
+                    && n.trim().parse::<f64>().is_ok() =>
+            {
                 format!("the string `\"{n}\"` (write numbers without quotes)")
             }
             Value::Other(kind) => kind.clone(),
@@ -162,7 +166,8 @@ pub(crate) fn listed(keys: &[Key]) -> impl Iterator<Item = &'static str> + '_ {
         .map(|k| k.name())
 }
 
-fn quoted_list<I: IntoIterator<Item = S>, S: AsRef<str>>(items: I) -> String {
+/// Items in backticks, separated by commas: `` `a`, `b` ``.
+pub fn quoted<I: IntoIterator<Item = S>, S: AsRef<str>>(items: I) -> String {
     items
         .into_iter()
         .map(|s| format!("`{}`", s.as_ref()))
@@ -189,12 +194,28 @@ fn distance(a: &str, b: &str) -> usize {
 
 /// The closest of `candidates` to `word`, if close enough to be a typo.
 pub fn suggest<'a>(word: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+    let len = word.chars().count();
     candidates
         .into_iter()
+        // The distance is at least the difference in length: skip the far.
+        .filter(|c| c.chars().count().abs_diff(len) <= 2.max(c.len() / 3))
         .map(|c| (distance(word, c), c))
         .filter(|(d, c)| *d <= 2.max(c.len() / 3) && *d < c.len())
         .min_by_key(|(d, _)| *d)
         .map(|(_, c)| c)
+}
+
+/// The most digits a number may be written with: more than any key needs
+/// (an `f64` holds 17 significant digits), few enough that no number is
+/// parsed at length.
+pub const MAX_DIGITS: usize = 40;
+
+/// The message for a number written with more than [`MAX_DIGITS`] digits.
+pub fn too_many_digits(key: &str, digits: usize) -> String {
+    format!(
+        "`{key}` has a number of {digits} digits, more than the {MAX_DIGITS} any key takes: \
+         write it with an exponent, as in `1.5e9`"
+    )
 }
 
 /// The unit a numeric key is given in, for messages.
@@ -274,11 +295,11 @@ impl<L: Clone> Collector<'_, L> {
             Value::Int(v) => Some(*v as f64),
             Value::Float(v) => Some(*v),
             other => {
-                let message = format!(
-                    "`{key}` expects a number in {}, got {}",
-                    unit(key),
-                    other.quoted()
-                );
+                let unit = match unit(key) {
+                    "" => String::new(),
+                    unit => format!(" in {unit}"),
+                };
+                let message = format!("`{key}` expects a number{unit}, got {}", other.quoted());
                 self.at_arg(i, false, message);
                 None
             }
@@ -317,7 +338,7 @@ impl<L: Clone> Collector<'_, L> {
 
     fn name<T: Copy>(&mut self, key: Key, choices: &[(&'static str, T)]) -> Option<T> {
         let (i, arg) = self.find(key)?;
-        let names = quoted_list(choices.iter().map(|(n, _)| *n));
+        let names = quoted(choices.iter().map(|(n, _)| *n));
         let message = match &arg.value {
             Value::Name(n) => match choices.iter().find(|(c, _)| c == n) {
                 Some((_, v)) => return Some(*v),
@@ -382,7 +403,7 @@ pub fn spec_from_args_assuming<L: Clone>(
         None => {
             c.at_whole(format!(
                 "missing key `curve`: expected one of {}",
-                quoted_list(CURVES)
+                quoted(CURVES)
             ));
             None
         }
@@ -400,11 +421,11 @@ pub fn spec_from_args_assuming<L: Clone>(
                 let message = match other {
                     Value::Name(_) => format!(
                         "`curve` must be one of {} (got `{other}`){hint}",
-                        quoted_list(CURVES)
+                        quoted(CURVES)
                     ),
                     _ => format!(
                         "`curve` expects one of {}, got {}",
-                        quoted_list(CURVES),
+                        quoted(CURVES),
                         other.quoted()
                     ),
                 };
@@ -431,7 +452,7 @@ pub fn spec_from_args_assuming<L: Clone>(
                 let message = format!(
                     "unknown key `{}`; {hint}expected one of {}, or a motor's keys",
                     arg.key,
-                    quoted_list(listed(&valid))
+                    quoted(listed(&valid))
                 );
                 c.at_arg(i, true, message);
             }
@@ -440,7 +461,7 @@ pub fn spec_from_args_assuming<L: Clone>(
                     if !valid.contains(&key) {
                         let message = format!(
                             "`{key}` does not apply to `curve = {n}`, which takes {}",
-                            quoted_list(listed(&valid))
+                            quoted(listed(&valid))
                         );
                         c.at_arg(i, true, message);
                     }
@@ -470,8 +491,8 @@ pub fn spec_from_args_assuming<L: Clone>(
         let plural = if missing.len() == 1 { "key" } else { "keys" };
         c.at_whole(format!(
             "missing {plural} {}: `curve = {curve_name}` needs {}",
-            quoted_list(missing.iter().map(|k| k.name())),
-            quoted_list(required.iter().map(|k| k.name()))
+            quoted(missing.iter().map(|k| k.name())),
+            quoted(required.iter().map(|k| k.name()))
         ));
     }
     if let Some([a, b]) = own.one_of {
@@ -698,8 +719,8 @@ fn motor_from_args<L: Clone>(c: &mut Collector<'_, L>) -> Option<Motor> {
         c.at_whole(format!(
             "missing motor {} {}: a motor needs {}",
             if missing.len() == 1 { "key" } else { "keys" },
-            quoted_list(missing.iter().map(|k| k.name())),
-            quoted_list(required.iter().map(|k| k.name()))
+            quoted(missing.iter().map(|k| k.name())),
+            quoted(required.iter().map(|k| k.name()))
         ));
     }
     let step_angle = c.float(Key::StepAngle);

@@ -124,10 +124,17 @@ impl Spec {
                 Rounding::Truncate => libm::trunc(exact),
                 Rounding::Nearest | Rounding::Diffuse => libm::round(exact),
             };
-            if period > max as f64 || count > max {
+            if count > max {
+                return Err(Error::SegmentTooLong {
+                    index: i,
+                    count,
+                    word: self.timer.word,
+                });
+            }
+            if period > max as f64 {
                 return Err(Error::PeriodOverflow {
                     index: step,
-                    ticks: exact.max(count as f64),
+                    ticks: exact,
                     word: self.timer.word,
                     timer_hz: self.timer.timer_hz,
                     lowest_hz: self.timer.lowest_frequency(),

@@ -103,7 +103,8 @@ pub struct SimOptions {
 
 impl SimOptions {
     /// A step of a fiftieth of the shortest period and a two-hundredth of the
-    /// rotor's natural period at holding torque, whichever is shorter, and a
+    /// rotor's natural period at holding torque, whichever is shorter (and
+    /// at most a quarter of the longest stable step), and a
     /// settle time of ten natural periods (at least 10 ms).
     ///
     /// The natural angular frequency is `sqrt(T_peak(0) · (π/2) / θ_fullstep / J)`:
@@ -123,8 +124,10 @@ impl SimOptions {
         } else {
             1e-3
         };
+        let poles = FRAC_PI_2 / motor.step_angle.to_radians();
+        let stable = stable_step(motor, poles, inertia);
         SimOptions {
-            dt_s: (shortest / 50.0).min(natural / 200.0),
+            dt_s: (shortest / 50.0).min(natural / 200.0).min(stable / 4.0),
             settle_s: (10.0 * natural).max(0.01),
         }
     }
@@ -187,6 +190,23 @@ pub enum SimError {
         needed: u64,
         /// [`MAX_STEPS`].
         max: u64,
+        /// The shortest integration step with which the run would fit, in s,
+        /// if one within [`SimError::StepTooLong`]'s bound would.
+        fits_with_dt_s: Option<f64>,
+    },
+    /// The integration step is too long for the rotor's stiffness or damping:
+    /// the integrator would be unstable and the results meaningless.
+    StepTooLong {
+        /// The step asked for, in s.
+        dt_s: f64,
+        /// The longest step the model integrates stably, in s.
+        max_dt_s: f64,
+    },
+    /// The rotor's state stopped being a finite number: the motor's figures
+    /// are beyond what the model can integrate.
+    Diverged {
+        /// Pulses given when it happened.
+        pulse: u32,
     },
 }
 
@@ -201,9 +221,31 @@ impl fmt::Display for SimError {
                 f,
                 "the integration step must be a finite number of seconds above 0 and the settle time one of 0 or more (got dt_s = {dt_s}, settle_s = {settle_s})"
             ),
-            SimError::TooManySteps { needed, max } => write!(
+            SimError::TooManySteps {
+                needed,
+                max,
+                fits_with_dt_s,
+            } => {
+                write!(
+                    f,
+                    "the simulation needs {needed} integration steps, more than the {max} allowed: "
+                )?;
+                match fits_with_dt_s {
+                    Some(dt) => write!(f, "use a step of at least {dt:.3e} s"),
+                    None => f.write_str(
+                        "no stable step fits; simulate a shorter table or a shorter settle time",
+                    ),
+                }
+            }
+            SimError::StepTooLong { dt_s, max_dt_s } => write!(
                 f,
-                "the simulation needs {needed} integration steps, more than the {max} allowed: use a longer step"
+                "the integration step of {dt_s:.3e} s is too long for this rotor: the model is \
+                 integrated stably with steps of at most {max_dt_s:.3e} s"
+            ),
+            SimError::Diverged { pulse } => write!(
+                f,
+                "the rotor's motion stopped being a finite number after pulse {pulse}: the motor's \
+                 torque, inertia or damping is beyond what the model can integrate"
             ),
         }
     }
@@ -219,6 +261,26 @@ impl From<MotorError> for SimError {
 
 fn ticks_per_second(spec: &Spec) -> f64 {
     spec.timer.timer_hz as f64 / spec.timer.ticks_per_step as f64
+}
+
+/// The longest integration step the semi-implicit Euler integrator takes
+/// stably, in s, with a factor of 2 to spare: `1/ω` where `ω` is the rotor's
+/// natural angular frequency at the curve's largest torque (the method is
+/// stable for `h ω < 2`), and `J / β` for the viscous damping (explicit in
+/// `β`, stable for `h β / J < 2`).
+fn stable_step(motor: &Motor, poles: f64, inertia: f64) -> f64 {
+    let peak = motor
+        .torque_curve
+        .points()
+        .iter()
+        .fold(0.0f64, |m, &(_, nm)| m.max(nm));
+    let omega = libm::sqrt(peak * poles / inertia);
+    let by_damping = if motor.damping > 0.0 {
+        inertia / motor.damping
+    } else {
+        f64::INFINITY
+    };
+    (1.0 / omega).min(by_damping)
 }
 
 /// Integration steps for an interval of `duration` s, at most `dt` each.
@@ -289,7 +351,8 @@ impl Rotor {
 /// documentation for the model.
 ///
 /// Errors, never panics: an invalid motor, a timer at 0 Hz, a step that is
-/// not a finite positive number, or a run of more than [`MAX_STEPS`] steps.
+/// not a finite positive number or too long for the integrator to be stable,
+/// a run of more than [`MAX_STEPS`] steps, or a rotor whose motion overflows.
 pub fn run(
     motor: &Motor,
     spec: &Spec,
@@ -305,15 +368,26 @@ pub fn run(
         return Err(SimError::Options { dt_s, settle_s });
     }
     let per_second = ticks_per_second(spec);
+    let poles = FRAC_PI_2 / motor.step_angle.to_radians();
+    let inertia = motor.rotor_inertia + motor.load_inertia;
+    let max_dt_s = stable_step(motor, poles, inertia);
+    if dt_s > max_dt_s {
+        return Err(SimError::StepTooLong { dt_s, max_dt_s });
+    }
     // Count the steps first: refuse a run that is too long before it starts.
     let mut needed = substeps(settle_s, dt_s);
+    let mut total_s = settle_s;
     for &p in periods {
-        needed += substeps(p as f64 / per_second, dt_s);
-        if needed > MAX_STEPS as f64 {
-            break;
-        }
+        let duration = p as f64 / per_second;
+        needed += substeps(duration, dt_s);
+        total_s += duration;
     }
     if needed > MAX_STEPS as f64 {
+        // Each interval takes at most one step more than its share of the
+        // time: `total / dt + intervals` steps fit when dt is at least this.
+        let intervals = periods.len() as f64 + 1.0;
+        let room = MAX_STEPS as f64 - intervals;
+        let fits = total_s / room;
         return Err(SimError::TooManySteps {
             needed: if needed < u64::MAX as f64 {
                 needed as u64
@@ -321,18 +395,18 @@ pub fn run(
                 u64::MAX
             },
             max: MAX_STEPS,
+            fits_with_dt_s: (room > 0.0 && fits <= max_dt_s).then_some(fits),
         });
     }
 
     let step = motor.step_radians();
-    let poles = FRAC_PI_2 / motor.step_angle.to_radians();
     // Electrical radians to table steps.
     let to_steps = 1.0 / (poles * step);
     let mut rotor = Rotor {
         theta: 0.0,
         omega: 0.0,
         poles,
-        inertia: motor.rotor_inertia + motor.load_inertia,
+        inertia,
         friction: motor.friction,
         damping: motor.damping,
         well: 0,
@@ -381,8 +455,16 @@ pub fn run(
         0.5 * rotor.inertia * rotor.omega * rotor.omega + holding / poles * (1.0 - libm::cos(rel));
     let settled = energy < 2.0 * holding / poles;
     let turns = libm::round(lag / TAU);
+    let diverged = SimError::Diverged {
+        pulse: rotor.pulses,
+    };
+    if !(rotor.theta.is_finite() && rotor.omega.is_finite() && max_lag.is_finite())
+        || libm::fabs(turns) > (i64::MAX / 4 / 1024) as f64
+    {
+        return Err(diverged);
+    }
     Ok(SimResult {
-        lost_steps: (turns as i64).saturating_mul(4 * motor.microsteps as i64),
+        lost_steps: turns as i64 * 4 * motor.microsteps as i64,
         slips: rotor.slips,
         first_slip_pulse: rotor.first_slip,
         max_lag_deg: max_lag.to_degrees(),

@@ -4,7 +4,7 @@
 //! whole `-500` (a `Span` cannot be joined on stable Rust).
 
 use proc_macro2::TokenStream;
-use profile_core::params::{Arg, Value};
+use profile_core::params::{self, Arg, MAX_DIGITS, Value};
 use quote::ToTokens;
 use syn::parse::{Parse, ParseStream, Parser};
 use syn::punctuated::Punctuated;
@@ -24,6 +24,12 @@ impl Parse for Pair {
             .parse::<Token![=]>()
             .map_err(|e| syn::Error::new(e.span(), format!("expected `=` after `{key}`")))?;
         let (value, value_loc) = parse_value(input, &key)?;
+        if !input.is_empty() && !input.peek(Token![,]) {
+            return Err(input.error(format!(
+                "expected `,` after the value of `{key}`: a value is one literal or name, \
+                 expressions are not evaluated"
+            )));
+        }
         Ok(Pair(Arg {
             key: key.to_string(),
             key_loc: key.into_token_stream(),
@@ -43,19 +49,79 @@ fn parse_value(input: ParseStream, key: &Ident) -> syn::Result<(Value, Loc)> {
         return parse_points(input, key);
     }
     let minus: Option<Token![-]> = input.parse()?;
-    let lit: Lit = input
-        .parse()
+    if minus.is_some() && input.peek(Token![-]) {
+        return Err(input.error(format!("`{key}` expects a number after `-`")));
+    }
+    // A literal token, never `syn::Lit`'s parse, which would take a second
+    // `-` as part of the number.
+    let lit = input
+        .step(|cursor| match cursor.literal() {
+            Some((lit, rest)) => Ok((lit, rest)),
+            None => Err(cursor.error("not a literal")),
+        })
         .map_err(|e| syn::Error::new(e.span(), expected()))?;
     let mut loc = minus.to_token_stream();
     lit.to_tokens(&mut loc);
-    let sign = if minus.is_some() { -1 } else { 1 };
-    let value = match &lit {
-        Lit::Int(i) => Value::Int(sign * i.base10_parse::<i128>()?),
-        Lit::Float(f) => Value::Float(sign as f64 * f.base10_parse::<f64>()?),
-        Lit::Str(s) if minus.is_none() => Value::Name(s.value()),
+    let negative = minus.is_some();
+    let value = match Lit::new(lit) {
+        Lit::Int(i) => {
+            number_suffix(key, i.suffix(), &loc)?;
+            digits(key, i.base10_digits(), &loc)?;
+            match i.base10_parse::<i128>() {
+                Ok(v) => Value::Int(if negative { -v } else { v }),
+                Err(_) => Value::Float(float(key, i.base10_digits(), negative, &loc)?),
+            }
+        }
+        Lit::Float(f) => {
+            number_suffix(key, f.suffix(), &loc)?;
+            digits(key, f.base10_digits(), &loc)?;
+            Value::Float(float(key, f.base10_digits(), negative, &loc)?)
+        }
+        Lit::Str(s) if !negative => Value::Name(s.value()),
         _ => return Err(syn::Error::new_spanned(loc, expected())),
     };
     Ok((value, loc))
+}
+
+/// Refuses a suffix on a number: `200u8` would otherwise read as 200.
+fn number_suffix(key: &Ident, suffix: &str, loc: &Loc) -> syn::Result<()> {
+    if suffix.is_empty() {
+        Ok(())
+    } else {
+        Err(syn::Error::new_spanned(
+            loc,
+            format!(
+                "`{key}` takes a plain number: the suffix `{suffix}` is not a unit this key accepts"
+            ),
+        ))
+    }
+}
+
+/// Refuses a literal of more than [`MAX_DIGITS`] digits.
+fn digits(key: &Ident, text: &str, loc: &Loc) -> syn::Result<()> {
+    let count = text.chars().filter(char::is_ascii_digit).count();
+    if count > MAX_DIGITS {
+        Err(syn::Error::new_spanned(
+            loc,
+            params::too_many_digits(&key.to_string(), count),
+        ))
+    } else {
+        Ok(())
+    }
+}
+
+/// A decimal literal's digits as a finite `f64`.
+fn float(key: &Ident, text: &str, negative: bool, loc: &Loc) -> syn::Result<f64> {
+    let v: f64 = text
+        .parse()
+        .map_err(|_| syn::Error::new_spanned(loc, format!("`{key}` expects a number")))?;
+    if !v.is_finite() {
+        return Err(syn::Error::new_spanned(
+            loc,
+            format!("`{key}` is too large for a 64-bit float (at most about 1.8e308)"),
+        ));
+    }
+    Ok(if negative { -v } else { v })
 }
 
 /// `[(x, y), ...]`: a list of number pairs, such as a torque curve.
@@ -94,9 +160,17 @@ fn parse_points(input: ParseStream, key: &Ident) -> syn::Result<(Value, Loc)> {
 fn number(input: ParseStream) -> syn::Result<f64> {
     let minus: Option<Token![-]> = input.parse()?;
     let sign = if minus.is_some() { -1.0 } else { 1.0 };
-    let value = match input.parse::<Lit>()? {
-        Lit::Int(i) => i.base10_parse::<f64>()?,
-        Lit::Float(f) => f.base10_parse::<f64>()?,
+    let lit = input.step(|cursor| match cursor.literal() {
+        Some((lit, rest)) => Ok((lit, rest)),
+        None => Err(cursor.error("expected a number")),
+    })?;
+    let value = match Lit::new(lit) {
+        Lit::Int(i) if i.suffix().is_empty() && i.base10_digits().len() <= MAX_DIGITS => {
+            i.base10_parse::<f64>()?
+        }
+        Lit::Float(f) if f.suffix().is_empty() && f.base10_digits().len() <= MAX_DIGITS => {
+            f.base10_parse::<f64>()?
+        }
         other => return Err(syn::Error::new(other.span(), "expected a number")),
     };
     Ok(sign * value)
@@ -150,7 +224,25 @@ mod tests {
             ("curve", "expected `=` after `curve`"),
             ("curve =", "`curve` expects a number or a name"),
             ("= 5", "expected a key, as in `len = 1000`"),
-            ("len = 5 6", "expected `,`"),
+            (
+                "len = 5 6",
+                "expected `,` after the value of `len`: a value is one literal or name, \
+                 expressions are not evaluated",
+            ),
+            (
+                "len = 100 + 100",
+                "expected `,` after the value of `len`: a value is one literal or name, \
+                 expressions are not evaluated",
+            ),
+            ("fmin = --500", "`fmin` expects a number after `-`"),
+            (
+                "fmin = 200u8",
+                "`fmin` takes a plain number: the suffix `u8` is not a unit this key accepts",
+            ),
+            (
+                "fmax = 1e999",
+                "`fmax` is too large for a 64-bit float (at most about 1.8e308)",
+            ),
             ("len = true", "`len` expects a number or a name"),
             ("len = -x", "`len` expects a number or a name"),
             ("len = 'c'", "`len` expects a number or a name"),
@@ -162,5 +254,12 @@ mod tests {
                 .unwrap_or_else(|| panic!("`{bad}` parsed"));
             assert_eq!(err.to_string(), message, "{bad}");
         }
+        let long = format!("fmax = 1{}", "0".repeat(300));
+        let err = parse(long.parse().unwrap()).expect_err("a 301-digit literal");
+        assert_eq!(
+            err.to_string(),
+            "`fmax` has a number of 301 digits, more than the 40 any key takes: write it with \
+             an exponent, as in `1.5e9`"
+        );
     }
 }
