@@ -307,6 +307,9 @@ fn reference_edges(spec: &Spec, model: &Model, len: usize) -> Vec<f64> {
 /// any edge exceeds `bound` (beyond its tolerance), with that edge.
 struct EdgeErrors {
     worst: f64,
+    /// The largest distance among edges within 2^32 ticks of the start,
+    /// where an `f64` resolves a millionth of a tick.
+    worst_near: f64,
     last: f64,
     tolerance: f64,
     over: Option<(usize, f64, f64)>,
@@ -319,6 +322,7 @@ fn edge_errors(
 ) -> EdgeErrors {
     let mut e = EdgeErrors {
         worst: 0.0,
+        worst_near: 0.0,
         last: 0.0,
         tolerance: 0.0,
         over: None,
@@ -331,6 +335,9 @@ fn edge_errors(
         if error.abs() > e.worst {
             e.worst = error.abs();
             e.tolerance = tol;
+        }
+        if *exact < 4_294_967_296.0 {
+            e.worst_near = e.worst_near.max(error.abs());
         }
         if error.abs() > bound + tol && e.over.is_none() {
             e.over = Some((k + 1, played as f64, *exact));
@@ -348,6 +355,7 @@ struct Tally {
     overflow: usize,
     too_long: usize,
     worst_default: f64,
+    worst_default_near: f64,
 }
 
 fn check(spec: &Spec, rng: &mut Lcg, tally: &mut Tally) {
@@ -396,6 +404,7 @@ fn check(spec: &Spec, rng: &mut Lcg, tally: &mut Tally) {
     );
     if default {
         tally.worst_default = tally.worst_default.max(e.worst);
+        tally.worst_default_near = tally.worst_default_near.max(e.worst_near);
     }
     tally.tables += 1;
     tally.entries += len as u64;
@@ -439,10 +448,12 @@ fn run(name: &str, seed: u64, generate: fn(&mut Lcg) -> Spec) {
         check(&spec, &mut rng, &mut tally);
     }
     println!(
-        "{name}: {n} profiles, {} tables ({} entries, worst default-mode edge {:.6} tick), \
+        "{name}: {n} profiles, {} tables ({} entries; worst default-mode edge {:.6} tick within \
+         2^32 ticks of the start, {:.6} over all edges, where an f64 edge is coarser), \
          {} segment tables, {} periods beyond the word, {} ramps beyond MAX_LEN",
         tally.tables,
         tally.entries,
+        tally.worst_default_near,
         tally.worst_default,
         tally.segment_tables,
         tally.overflow,
