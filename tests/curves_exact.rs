@@ -898,7 +898,7 @@ fn check_segments(name: &str, spec: &Spec, pairs: &[(u32, u32)], figures: &Segme
     let duration = numeric.time_of(len as f64);
     let dt = duration / n as f64;
     let scale = scale(spec);
-    let mut before = 0u32;
+    let (mut before, mut played_end) = (0u32, 0u64);
     for (i, &(period, count)) in pairs.iter().enumerate() {
         let after = if i + 1 == pairs.len() {
             len
@@ -911,10 +911,24 @@ fn check_segments(name: &str, spec: &Spec, pairs: &[(u32, u32)], figures: &Segme
             "{name}, {n} segments: segment {i}'s count"
         );
         let exact = dt * scale / count as f64;
-        assert!(
-            (period as f64 - exact).abs() <= TOLERANCE_TICKS,
-            "{name}, {n} segments: expected segment {i}'s period {exact:.4} rounded, got {period}"
-        );
+        played_end += u64::from(period) * u64::from(count);
+        if spec.rounding == Rounding::Diffuse {
+            // Diffused: the segment's last step ends as near its exact edge
+            // as a whole period repeated `count` times allows.
+            let end = numeric.time_of(after as f64) * scale;
+            assert!(
+                (played_end as f64 - end).abs() <= count as f64 / 2.0 + 1e-6,
+                "{name}, {n} segments: expected segment {i} to end within {} ticks of \
+                 {end:.4}, got {played_end}",
+                count as f64 / 2.0
+            );
+        } else {
+            assert!(
+                (period as f64 - exact).abs() <= TOLERANCE_TICKS,
+                "{name}, {n} segments: expected segment {i}'s period {exact:.4} rounded, \
+                 got {period}"
+            );
+        }
         before = after;
     }
 }
@@ -969,7 +983,7 @@ fn segment_tables_cover_the_ramp() {
             matches!(
                 result,
                 Err(Error::TooLarge {
-                    key: stepper_profiles::Key::Segments,
+                    key: stepper_profiles::Key::SEGMENTS,
                     ..
                 })
             ),

@@ -25,7 +25,7 @@ impl Rng {
     }
 }
 
-/// TOML syntax, values and names; the keys come from `Key::ALL`.
+/// TOML syntax, values and names; the keys come from `Key::all()`.
 const PIECES: &[&str] = &[
     "=",
     "\"",
@@ -94,8 +94,7 @@ fn seeds() -> Vec<String> {
 
 /// Every key, then the other pieces.
 fn pieces() -> Vec<&'static str> {
-    profile_core::Key::ALL
-        .iter()
+    profile_core::Key::all()
         .map(|k| k.name())
         .chain(PIECES.iter().copied())
         .collect()

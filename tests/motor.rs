@@ -8,8 +8,8 @@
 //!
 //! Simulations print their figures (`cargo test --test motor -- --nocapture`).
 
+use profile_core::Generated;
 use profile_core::build::Profiles;
-use profile_core::emit::Generated;
 use profile_core::motor::{MAX_CURVE_POINTS, Motor, MotorError, TorqueCurve};
 use profile_core::player::{Player, Ramp};
 use profile_core::simulate::{self, MAX_STEPS, SimError, SimOptions, SimResult};
@@ -215,7 +215,7 @@ fn an_aggressive_ramp_fails_the_check() {
         ),
         "{error:?}"
     );
-    assert_eq!(error.key(), Key::Motor);
+    assert_eq!(error.key(), Key::MOTOR);
     assert_eq!(
         error.to_string(),
         "the motor cannot follow step 7 at 1757.5 Hz: it needs 0.1799 N·m but gives \
@@ -406,7 +406,7 @@ fn motor_parameters_are_checked() {
             .validate()
             .unwrap_err()
             .key(),
-        Key::TorqueCurve
+        Key::TORQUE_CURVE
     );
 }
 
@@ -458,7 +458,7 @@ fn the_simulation_refuses_bad_input() {
     assert_eq!(
         run(&bad, &spec, &table, 1e-5, 0.0),
         Err(SimError::Motor(MotorError::Invalid {
-            key: Key::RotorInertia,
+            key: Key::ROTOR_INERTIA,
             value: 0.0,
             expected: "a finite number above 0"
         }))
@@ -552,16 +552,21 @@ timer_hz = 1_000_000
     };
     let figures = nema17(1).check(&table.spec, &table.periods).unwrap();
     assert_eq!(gentle.torque, Some(figures));
-    // The emitted module carries the margin.
+    // The emitted module carries the margin, to the last bit.
     let source = profiles.rust_source();
-    assert!(source.contains(&format!(
-        "pub const TORQUE_MARGIN_NM: f64 = {:?};",
-        figures.min_margin_nm
-    )));
-    assert!(source.contains(&format!(
-        "pub const TORQUE_MARGIN_STEP: usize = {};",
-        figures.step
-    )));
+    let value = |name: &str| -> String {
+        let at = source.find(&format!("pub const {name}: ")).expect(name);
+        let value = source[at..].split('=').nth(1).expect("a value");
+        value
+            .split(';')
+            .next()
+            .expect("a statement")
+            .trim()
+            .to_string()
+    };
+    let margin: f64 = value("TORQUE_MARGIN_NM").parse().unwrap();
+    assert_eq!(margin.to_bits(), figures.min_margin_nm.to_bits());
+    assert_eq!(value("TORQUE_MARGIN_STEP"), figures.step.to_string());
 }
 
 /// `[defaults]` may name the motor and hold motor keys: the motor's keys
@@ -696,7 +701,7 @@ fn the_check_never_passes_a_non_finite_torque() {
         "`load_inertia` must be small enough that `rotor_inertia + load_inertia` is a finite \
          number (got 1e308)"
     );
-    assert_eq!(error.key(), Key::LoadInertia);
+    assert_eq!(error.key(), Key::LOAD_INERTIA);
     let heavy = Motor {
         rotor_inertia: 1.7e308,
         load_inertia: 0.0,

@@ -16,8 +16,8 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::{Duration, Instant, SystemTime};
 
+use profile_core::Generated;
 use profile_core::build::Profiles;
-use profile_core::emit::Generated;
 
 /// The macro path: no build script, so only the macro's `include_bytes!`
 /// can make Cargo notice an edit.

@@ -491,32 +491,32 @@ fn spread_of_calls_matches_c_or_is_rejected_like_c() {
 fn overflowing_calls_are_errors() {
     let cases: [(Call, &str, Key); 6] = [
         // 4500 * 5500 / (2 * 99) = 125000: A is a UINT16.
-        (call(500, 5000, 100, 50_000_000, 2), "UINT16 A", Key::Len),
+        (call(500, 5000, 100, 50_000_000, 2), "UINT16 A", Key::LEN),
         // 4500 * 5500 / (2 * 188) = 65824, one transition step short of fitting.
-        (call(500, 5000, 189, 50_000_000, 2), "UINT16 A", Key::Len),
+        (call(500, 5000, 189, 50_000_000, 2), "UINT16 A", Key::LEN),
         // f0 * f0 = 2.5e9 in a 32-bit int.
         (
             call(50_000, 50_001, 2, 72_000_000, 1),
             "int f0*f0",
-            Key::Fmin,
+            Key::FMIN,
         ),
         // (fmax - f0)(fmax + f0) = 2.5e9 in a 32-bit int.
         (
             call(1000, 50_000, 60_000, 72_000_000, 1),
             "int (fmax-f0)*(fmax+f0)",
-            Key::Fmax,
+            Key::FMAX,
         ),
         // 2 A trans + f0 * f0 = 2152960000 in a 32-bit int.
         (
             call(46_000, 46_400, 1001, 72_000_000, 1),
             "int 2*A*i+f0*f0",
-            Key::Fmax,
+            Key::FMAX,
         ),
         // 2 * f[trans] = 80000 in a REG16.
         (
             call(30_000, 40_000, 20_001, 72_000_000, 2),
             "REG16 f0 += f0",
-            Key::Fmax,
+            Key::FMAX,
         ),
     ];
     for (call, c_says, key) in cases {
@@ -551,21 +551,21 @@ fn overflowing_calls_are_errors() {
     assert_eq!(
         spec(500.0, 5000.5).table().map(|t| t.periods.len()),
         Err(Error::NotWhole {
-            key: Key::Fmax,
+            key: Key::FMAX,
             value: 5000.5
         })
     );
     assert_eq!(
         spec(500.25, 5000.0).table().map(|t| t.periods.len()),
         Err(Error::NotWhole {
-            key: Key::Fmin,
+            key: Key::FMIN,
             value: 500.25
         })
     );
     assert!(
         matches!(
             spec(500.0, 70_000.0).table(),
-            Err(Error::IntegerOverflow { key: Key::Fmax, .. })
+            Err(Error::IntegerOverflow { key: Key::FMAX, .. })
         ),
         "fmax = 70000 does not fit a REG16"
     );
@@ -590,7 +590,7 @@ fn trans_65535_is_rejected_like_c() {
     assert!(flagged, "expected C's UINT16 loop to be flagged for {call}");
     let result = compat_spec(&call, Word::U16).table();
     assert!(
-        matches!(result, Err(Error::IntegerOverflow { key: Key::Len, .. })),
+        matches!(result, Err(Error::IntegerOverflow { key: Key::LEN, .. })),
         "expected Err(IntegerOverflow) blaming `len` for {call}, got {:?}",
         result.map(|t| t.periods.len())
     );

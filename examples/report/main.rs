@@ -20,8 +20,9 @@ use std::sync::mpsc;
 use std::time::Duration;
 
 use plotters::style::RGBColor;
+use profile_core::Generated;
 use profile_core::build::Profiles;
-use profile_core::emit::{Generated, Profile};
+use profile_core::emit::Profile;
 use profile_core::motor::Motor;
 use profile_core::player::{Player, Ramp};
 use profile_core::simulate::{self, SimOptions, SimResult};

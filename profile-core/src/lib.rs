@@ -30,39 +30,30 @@
 #[cfg(feature = "std")]
 extern crate std;
 
+mod base;
 #[cfg(feature = "codegen")]
 pub mod build;
 mod curves;
 #[cfg(feature = "codegen")]
 pub mod emit;
-mod error;
-mod exponential;
-mod generate;
-mod jerk;
-mod linear;
-mod math;
 pub mod motor;
 #[cfg(feature = "codegen")]
-pub mod params;
+pub mod pipeline;
 pub mod player;
-mod segments;
-mod sigmoid;
-#[cfg(feature = "std")]
-pub mod simulate;
-mod solve;
-mod spec;
-#[cfg(feature = "std")]
+#[cfg(feature = "codegen")]
+pub mod schema;
 mod table;
-mod three_stage;
-mod validate;
 
-pub use error::{Error, Key};
-pub use generate::{Figures, TableWord};
-pub use segments::SegmentFigures;
-pub use spec::{
-    Arithmetic, Curve, Discretization, Exponential, ExponentialExtent, JerkLimited, Linear,
-    LinearExtent, MAX_LEN, Rounding, Sigmoid, Spec, ThreeStage, Timer, Word,
-};
+pub use base::MAX_LEN;
+pub use base::error::Error;
+pub use base::key::Key;
+pub use base::modes::{Arithmetic, Discretization, Rounding};
+pub use base::timer::{TableWord, Timer, Word};
+pub use curves::public::*;
 #[cfg(feature = "std")]
-pub use table::{SegmentTable, Table};
-pub use validate::MAX_FLEXIBLE;
+pub use motor::simulate;
+#[cfg(feature = "std")]
+pub use table::owned::{Generated, SegmentTable, Table};
+pub use table::quantize::Figures;
+pub use table::segments::SegmentFigures;
+pub use table::spec::{CheckedSpec, Spec};

@@ -4,7 +4,7 @@
 //! whole `-500` (a `Span` cannot be joined on stable Rust).
 
 use proc_macro2::TokenStream;
-use profile_core::params::{self, Arg, MAX_DIGITS, Value};
+use profile_core::schema::{self as params, Arg, MAX_DIGITS, Value};
 use quote::ToTokens;
 use syn::parse::{Parse, ParseStream, Parser};
 use syn::punctuated::Punctuated;

@@ -1,8 +1,9 @@
-//! Arguments to a table, through `profile-core` and its emitter.
+//! `period_table!`: arguments through `profile-core`'s pipeline and emitter.
 
 use proc_macro2::TokenStream;
 use profile_core::emit;
-use profile_core::params::{self, Diagnostic, Layout};
+use profile_core::pipeline::{self, Options};
+use profile_core::schema::Diagnostic;
 
 use crate::args::Loc;
 
@@ -36,40 +37,8 @@ pub(crate) fn period_table(input: TokenStream) -> TokenStream {
 fn try_period_table(input: TokenStream) -> syn::Result<TokenStream> {
     let whole = TokenStream::new();
     let args = crate::args::parse(input)?;
-    let parsed = params::spec_from_args(&args, &whole).map_err(to_error)?;
-    let spec = parsed.spec;
-    let locate = |e| to_error(vec![params::locate(&e, &args, &whole)]);
-    let (source, periods) = match parsed.layout {
-        Layout::Steps => {
-            let table = spec.table().map_err(locate)?;
-            (
-                emit::rust_array(spec.timer.word, &table.periods),
-                table.periods,
-            )
-        }
-        Layout::Segments(n) => {
-            let mut pairs = Vec::with_capacity(n as usize);
-            spec.for_each_segment(n, |_, period, count| pairs.push((period, count)))
-                .map_err(locate)?;
-            let periods = pairs
-                .iter()
-                .flat_map(|&(p, c)| std::iter::repeat_n(p, c as usize))
-                .collect();
-            (emit::rust_pairs(spec.timer.word, &pairs), periods)
-        }
-    };
-    // A table its motor cannot follow does not compile.
-    if let Some(motor) = &parsed.motor {
-        motor
-            .check(&spec, &periods)
-            .map_err(|e| to_error(vec![params::locate_motor(&e, &args, &whole)]))?;
-    }
-    source.parse().map_err(|e| {
-        syn::Error::new(
-            proc_macro2::Span::call_site(),
-            format!("internal error: emitted source does not parse: {e}"),
-        )
-    })
+    let compiled = pipeline::compile(&args, &whole, Options::default()).map_err(to_error)?;
+    Ok(emit::rust::table_expr(&compiled.table))
 }
 
 #[cfg(test)]
@@ -81,7 +50,7 @@ mod tests {
 
     use super::*;
 
-    /// Names, values and punctuation besides the keys (which come from `Key::ALL`).
+    /// Names, values and punctuation besides the keys (which come from `Key::all()`).
     const PIECES: &[&str] = &[
         "speed",
         "sigmoid",
@@ -147,8 +116,7 @@ mod tests {
 
     /// Every key, and two that are not keys.
     fn keys() -> Vec<&'static str> {
-        profile_core::Key::ALL
-            .iter()
+        profile_core::Key::all()
             .map(|k| k.name())
             .chain(["fmni", "speed"])
             .collect()

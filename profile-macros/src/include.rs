@@ -35,12 +35,7 @@ fn try_include(input: TokenStream) -> syn::Result<TokenStream> {
     })?;
     let profiles = Profiles::parse(&relative, &source)
         .map_err(|e| syn::Error::new(lit.span(), e.message()))?;
-    let items: TokenStream = profiles.rust_source().parse().map_err(|e| {
-        syn::Error::new(
-            lit.span(),
-            format!("internal error: emitted source does not parse: {e}"),
-        )
-    })?;
+    let items = profiles.rust_tokens();
     // Make Cargo rebuild when the file changes.
     let tracked = Literal::string(&path.to_string_lossy());
     Ok(quote::quote! {

@@ -84,7 +84,7 @@ use core::f64::consts::{FRAC_PI_2, PI, TAU};
 use core::fmt;
 
 use crate::motor::{Motor, MotorError};
-use crate::spec::Spec;
+use crate::table::spec::Spec;
 
 /// The most integration steps one run may take. A run that would take more
 /// is refused with [`SimError::TooManySteps`] before it starts (about a

@@ -22,10 +22,14 @@
 //! torque in N·m, damping in N·m·s/rad, frequencies in Hz of the table's
 //! steps (microsteps when `microsteps > 1`).
 
+#[cfg(feature = "std")]
+pub mod simulate;
+
 use core::fmt;
 
-use crate::error::{Key, Num};
-use crate::spec::Spec;
+use crate::base::error::Num;
+use crate::base::key::Key;
+use crate::table::spec::Spec;
 
 /// The most points a pull-out torque curve may have.
 pub const MAX_CURVE_POINTS: usize = 32;
@@ -163,7 +167,8 @@ pub enum MotorError {
     NotFinite {
         /// The step where it happens.
         step: u32,
-        /// What is not finite: `needed` or `available`.
+        /// What is not finite: `needed`, `available` or their difference,
+        /// `margin`.
         what: &'static str,
     },
     /// The table to check has no entries.
@@ -182,10 +187,10 @@ impl MotorError {
     pub fn key(&self) -> Key {
         match *self {
             MotorError::Invalid { key, .. } => key,
-            MotorError::Curve { .. } => Key::TorqueCurve,
-            MotorError::Torque { .. } | MotorError::Start { .. } => Key::Motor,
-            MotorError::NotFinite { .. } => Key::RotorInertia,
-            MotorError::EmptyTable => Key::Motor,
+            MotorError::Curve { .. } => Key::TORQUE_CURVE,
+            MotorError::Torque { .. } | MotorError::Start { .. } => Key::MOTOR,
+            MotorError::NotFinite { .. } => Key::ROTOR_INERTIA,
+            MotorError::EmptyTable => Key::MOTOR,
         }
     }
 }
@@ -279,34 +284,34 @@ fn non_negative(key: Key, value: f64) -> Result<(), MotorError> {
 impl Motor {
     /// Checks every parameter.
     pub fn validate(&self) -> Result<(), MotorError> {
-        positive(Key::StepAngle, self.step_angle)?;
+        positive(Key::STEP_ANGLE, self.step_angle)?;
         if self.microsteps == 0 {
             return Err(MotorError::Invalid {
-                key: Key::Microsteps,
+                key: Key::MICROSTEPS,
                 value: 0.0,
                 expected: "at least 1",
             });
         }
-        positive(Key::RotorInertia, self.rotor_inertia)?;
-        non_negative(Key::LoadInertia, self.load_inertia)?;
+        positive(Key::ROTOR_INERTIA, self.rotor_inertia)?;
+        non_negative(Key::LOAD_INERTIA, self.load_inertia)?;
         if !(self.rotor_inertia + self.load_inertia).is_finite() {
             return Err(MotorError::Invalid {
-                key: Key::LoadInertia,
+                key: Key::LOAD_INERTIA,
                 value: self.load_inertia,
                 expected: "small enough that `rotor_inertia + load_inertia` is a finite number",
             });
         }
-        non_negative(Key::Friction, self.friction)?;
-        non_negative(Key::Damping, self.damping)?;
+        non_negative(Key::FRICTION, self.friction)?;
+        non_negative(Key::DAMPING, self.damping)?;
         if !(self.safety.is_finite() && self.safety >= 1.0) {
             return Err(MotorError::Invalid {
-                key: Key::Safety,
+                key: Key::SAFETY,
                 value: self.safety,
                 expected: "a finite number, 1 or more",
             });
         }
         if let Some(hz) = self.max_start_hz {
-            positive(Key::MaxStartHz, hz)?;
+            positive(Key::MAX_START_HZ, hz)?;
         }
         let mut prev = f64::NEG_INFINITY;
         for (index, &(hz, nm)) in self.torque_curve.points().iter().enumerate() {
@@ -422,8 +427,15 @@ impl Motor {
                 beyond_curve: hz > self.torque_curve.top(),
             });
         }
+        let margin = available - needed;
+        if !margin.is_finite() {
+            return Err(MotorError::NotFinite {
+                step,
+                what: "margin",
+            });
+        }
         Ok(TorqueFigures {
-            min_margin_nm: available - needed,
+            min_margin_nm: margin,
             step,
             hz,
             needed_nm: needed,

@@ -1,14 +1,17 @@
-//! Seed 001's compact layout: the ramp cut into equal-time segments, each a
-//! (timer period, step count) pair.
+//! The exponential-ramp article's compact layout: the ramp cut into
+//! equal-time segments, each a (timer period, step count) pair.
 //!
 //! A segment table spends `2 n` words of flash instead of `len`, and pays in
 //! accuracy: every step of a segment has the same period, so pulse edges
 //! drift from the curve within a segment. [`SegmentFigures`] reports both.
 
-use crate::curves::TimeModel;
-use crate::error::Error;
-use crate::generate::{TableWord, edge_time};
-use crate::spec::{Discretization, Rounding, Spec};
+use crate::base::error::Error;
+use crate::base::key::Key;
+use crate::base::modes::Discretization;
+use crate::base::solve::edge_time;
+use crate::base::timer::TableWord;
+use crate::table::quantize::Quantizer;
+use crate::table::spec::{CheckedSpec, Spec};
 
 /// What a segment table amounts to.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -31,30 +34,24 @@ pub struct SegmentFigures {
     pub total_error_ticks: f64,
 }
 
-impl Spec {
-    /// Checks that the spec can be cut into `segments` equal-time segments
-    /// (a valid spec in time, `discretization = exact`, from one segment up
-    /// to one per step).
+impl CheckedSpec {
+    /// Checks that the table can be cut into `segments` equal-time segments
+    /// (`discretization = exact`, from one segment up to one per step).
     pub fn check_segments(&self, segments: u32) -> Result<(), Error> {
-        self.validate()?;
-        if self.discretization != Discretization::Exact {
-            return Err(Error::SegmentsNeedTime {
-                discretization: self.discretization,
-            });
+        let discretization = self.spec().discretization;
+        if discretization != Discretization::Exact {
+            return Err(Error::SegmentsNeedTime { discretization });
         }
         if segments == 0 {
-            return Err(Error::Zero {
-                key: crate::Key::Segments,
-            });
+            return Err(Error::Zero { key: Key::SEGMENTS });
         }
         // Every segment must hold a step; checked here, before any buffer
         // of `segments` pairs is allocated.
-        let steps = self.len();
-        if segments > steps {
+        if segments > self.len() {
             return Err(Error::TooLarge {
-                key: crate::Key::Segments,
+                key: Key::SEGMENTS,
                 value: segments as f64,
-                max: steps as f64,
+                max: self.len() as f64,
             });
         }
         Ok(())
@@ -62,19 +59,13 @@ impl Spec {
 
     /// Computes the segment table into `out` (one `(period, count)` pair per
     /// segment) and returns its figures.
-    ///
-    /// Segment `i` spans `[i T/n, (i+1) T/n]` of the ramp's duration `T`. Its
-    /// count is the difference of the rounded step counts at its ends, so the
-    /// counts sum to the ramp's steps exactly; its period is the segment's
-    /// duration over its count, rounded as `rounding` says (`diffuse` rounds
-    /// to nearest). A segment that holds no step is an error: use fewer.
     pub fn generate_segments<W: TableWord>(
         &self,
         out: &mut [(W, W)],
     ) -> Result<SegmentFigures, Error> {
-        if W::WORD != self.timer.word {
+        if W::WORD != self.word() {
             return Err(Error::WordMismatch {
-                expected: self.timer.word,
+                expected: self.word(),
                 got: W::WORD,
             });
         }
@@ -87,25 +78,33 @@ impl Spec {
     }
 
     /// Computes `segments` segments, calling `sink(index, period, count)` for each.
+    ///
+    /// Segment `i` spans `[i T/n, (i+1) T/n]` of the ramp's duration `T`. Its
+    /// count is the difference of the rounded step counts at its ends, so the
+    /// counts sum to the ramp's steps exactly; its period is the segment's
+    /// duration over its count, rounded through the same quantizer as a
+    /// per-step table: `truncate` and `nearest` round that period, `diffuse`
+    /// rounds so that the segment's last step ends as near its exact edge as
+    /// whole ticks allow, making up for what the segments before it left
+    /// over. A segment that holds no step is an error: use fewer.
     pub fn for_each_segment<F: FnMut(u32, u32, u32)>(
         &self,
         segments: u32,
         mut sink: F,
     ) -> Result<SegmentFigures, Error> {
         self.check_segments(segments)?;
+        let spec = self.spec();
         let len = self.len();
-        let scale = self.timer.ticks_per_second();
-        let max = self.timer.word.max();
-        let model = TimeModel::new(&self.curve);
+        let scale = spec.timer.ticks_per_second();
+        let word = spec.timer.word;
+        let model = spec.curve.time_model();
         let c = model.curve();
         let duration = edge_time(c, len)?;
         let dt = duration / segments as f64;
+        let mut quantizer = Quantizer::new(spec);
 
-        let mut steps_before = 0u32;
-        let mut step = 0u32;
-        let mut played = 0u64;
-        let mut max_error = 0.0f64;
-        let mut last_error = 0.0;
+        let (mut steps_before, mut step, mut played) = (0u32, 0u32, 0u64);
+        let (mut max_error, mut last_error) = (0.0f64, 0.0);
         for i in 0..segments {
             let steps_after = if i + 1 == segments {
                 len
@@ -119,34 +118,16 @@ impl Spec {
                     steps: len,
                 });
             }
-            let exact = dt * scale / count as f64;
-            let period = match self.rounding {
-                Rounding::Truncate => libm::trunc(exact),
-                Rounding::Nearest | Rounding::Diffuse => libm::round(exact),
-            };
-            if count > max {
+            if count > word.max() {
                 return Err(Error::SegmentTooLong {
                     index: i,
                     count,
-                    word: self.timer.word,
+                    word,
                 });
             }
-            if period > max as f64 {
-                return Err(Error::PeriodOverflow {
-                    index: step,
-                    ticks: exact,
-                    word: self.timer.word,
-                    timer_hz: self.timer.timer_hz,
-                    lowest_hz: self.timer.lowest_frequency(),
-                });
-            }
-            if period < 1.0 {
-                return Err(Error::PeriodZero {
-                    index: step,
-                    highest_hz: scale,
-                });
-            }
-            let period = period as u32;
+            let exact = dt * scale / count as f64;
+            let end = edge_time(c, steps_after)? * scale;
+            let period = quantizer.round(step, exact, Some(end), count)?;
             for _ in 0..count {
                 played += period as u64;
                 step += 1;
@@ -157,7 +138,7 @@ impl Spec {
             sink(i, period, count);
             steps_before = steps_after;
         }
-        let word_bytes = self.timer.word.bytes();
+        let word_bytes = word.bytes();
         Ok(SegmentFigures {
             segments,
             steps: len,
@@ -168,5 +149,32 @@ impl Spec {
             max_edge_error_ticks: max_error,
             total_error_ticks: last_error,
         })
+    }
+}
+
+impl Spec {
+    /// Checks the spec and that it can be cut into `segments` segments
+    /// ([`CheckedSpec::check_segments`]).
+    pub fn check_segments(&self, segments: u32) -> Result<(), Error> {
+        self.check()?.check_segments(segments)
+    }
+
+    /// Checks the spec and computes its segment table into `out`
+    /// ([`CheckedSpec::generate_segments`]).
+    pub fn generate_segments<W: TableWord>(
+        &self,
+        out: &mut [(W, W)],
+    ) -> Result<SegmentFigures, Error> {
+        self.check()?.generate_segments(out)
+    }
+
+    /// Checks the spec and computes `segments` segments
+    /// ([`CheckedSpec::for_each_segment`]).
+    pub fn for_each_segment<F: FnMut(u32, u32, u32)>(
+        &self,
+        segments: u32,
+        sink: F,
+    ) -> Result<SegmentFigures, Error> {
+        self.check()?.for_each_segment(segments, sink)
     }
 }

@@ -2,163 +2,9 @@
 
 use core::fmt;
 
-/// A parameter of a table spec, as spelled in macro arguments and TOML.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-#[non_exhaustive]
-pub enum Key {
-    /// `curve`
-    Curve,
-    /// `timer_hz`
-    TimerHz,
-    /// `word`
-    Word,
-    /// `ticks_per_step`
-    TicksPerStep,
-    /// `discretization`
-    Discretization,
-    /// `rounding`
-    Rounding,
-    /// `arithmetic`
-    Arithmetic,
-    /// `fmin`
-    Fmin,
-    /// `fmax`
-    Fmax,
-    /// `flexible`
-    Flexible,
-    /// `len`
-    Len,
-    /// `f_inf`
-    FInf,
-    /// `tau`
-    Tau,
-    /// `accel`
-    Accel,
-    /// `f1`
-    F1,
-    /// `f2`
-    F2,
-    /// `shape`
-    Shape,
-    /// `jerk`
-    Jerk,
-    /// `segments`
-    Segments,
-    /// `motor`
-    Motor,
-    /// `step_angle`
-    StepAngle,
-    /// `microsteps`
-    Microsteps,
-    /// `rotor_inertia`
-    RotorInertia,
-    /// `load_inertia`
-    LoadInertia,
-    /// `torque_curve`
-    TorqueCurve,
-    /// `friction`
-    Friction,
-    /// `damping`
-    Damping,
-    /// `safety`
-    Safety,
-    /// `max_start_hz`
-    MaxStartHz,
-}
-
-impl Key {
-    /// Every key, in the order documentation lists them.
-    pub const ALL: &'static [Key] = &[
-        Key::Curve,
-        Key::Len,
-        Key::Fmin,
-        Key::Fmax,
-        Key::Flexible,
-        Key::FInf,
-        Key::Tau,
-        Key::Accel,
-        Key::F1,
-        Key::F2,
-        Key::Shape,
-        Key::Jerk,
-        Key::TimerHz,
-        Key::Word,
-        Key::TicksPerStep,
-        Key::Discretization,
-        Key::Rounding,
-        Key::Arithmetic,
-        Key::Segments,
-        Key::Motor,
-        Key::StepAngle,
-        Key::Microsteps,
-        Key::RotorInertia,
-        Key::LoadInertia,
-        Key::TorqueCurve,
-        Key::Friction,
-        Key::Damping,
-        Key::Safety,
-        Key::MaxStartHz,
-    ];
-
-    /// The keys that describe a motor (all but `motor` itself).
-    pub const MOTOR: &'static [Key] = &[
-        Key::StepAngle,
-        Key::Microsteps,
-        Key::RotorInertia,
-        Key::LoadInertia,
-        Key::TorqueCurve,
-        Key::Friction,
-        Key::Damping,
-        Key::Safety,
-        Key::MaxStartHz,
-    ];
-
-    /// The key as written by users.
-    pub const fn name(self) -> &'static str {
-        match self {
-            Key::Curve => "curve",
-            Key::TimerHz => "timer_hz",
-            Key::Word => "word",
-            Key::TicksPerStep => "ticks_per_step",
-            Key::Discretization => "discretization",
-            Key::Rounding => "rounding",
-            Key::Arithmetic => "arithmetic",
-            Key::Fmin => "fmin",
-            Key::Fmax => "fmax",
-            Key::Flexible => "flexible",
-            Key::Len => "len",
-            Key::FInf => "f_inf",
-            Key::Tau => "tau",
-            Key::Accel => "accel",
-            Key::F1 => "f1",
-            Key::F2 => "f2",
-            Key::Shape => "shape",
-            Key::Jerk => "jerk",
-            Key::Segments => "segments",
-            Key::Motor => "motor",
-            Key::StepAngle => "step_angle",
-            Key::Microsteps => "microsteps",
-            Key::RotorInertia => "rotor_inertia",
-            Key::LoadInertia => "load_inertia",
-            Key::TorqueCurve => "torque_curve",
-            Key::Friction => "friction",
-            Key::Damping => "damping",
-            Key::Safety => "safety",
-            Key::MaxStartHz => "max_start_hz",
-        }
-    }
-
-    /// The key spelled `name`, if there is one.
-    pub fn from_name(name: &str) -> Option<Key> {
-        Key::ALL.iter().copied().find(|k| k.name() == name)
-    }
-}
-
-impl fmt::Display for Key {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
+use super::key::Key;
+use super::modes::Discretization;
+use super::timer::Word;
 
 /// Why a spec cannot become a table.
 ///
@@ -269,12 +115,12 @@ pub enum Error {
         /// Its step count.
         count: u32,
         /// The word of the counts.
-        word: crate::Word,
+        word: Word,
     },
     /// A segment table needs a curve in time.
     SegmentsNeedTime {
         /// The discretization asked for.
-        discretization: crate::Discretization,
+        discretization: Discretization,
     },
     /// `len` is 0.
     LenZero,
@@ -308,7 +154,7 @@ pub enum Error {
         /// Its period in ticks.
         ticks: f64,
         /// The word.
-        word: crate::Word,
+        word: Word,
         /// `timer_hz`.
         timer_hz: u32,
         /// The lowest step frequency whose period fits, in Hz.
@@ -331,9 +177,9 @@ pub enum Error {
     /// The buffer's element type is not the spec's word.
     WordMismatch {
         /// The spec's word.
-        expected: crate::Word,
+        expected: Word,
         /// The buffer's element type.
-        got: crate::Word,
+        got: Word,
     },
     /// The pulse-time solver did not converge within its iteration bound.
     NoConvergence {
@@ -359,14 +205,14 @@ impl Error {
             | Error::NotGreater { key, .. }
             | Error::NotAtLeast { key, .. }
             | Error::Unsupported { key, .. } => Some(key),
-            Error::LenZero | Error::LenTooLarge { .. } => Some(Key::Len),
-            Error::TimerZero => Some(Key::TimerHz),
-            Error::TicksPerStep { .. } => Some(Key::TicksPerStep),
-            Error::PeriodOverflow { .. } => Some(Key::Fmin),
-            Error::PeriodZero { .. } => Some(Key::Fmax),
+            Error::LenZero | Error::LenTooLarge { .. } => Some(Key::LEN),
+            Error::TimerZero => Some(Key::TIMER_HZ),
+            Error::TicksPerStep { .. } => Some(Key::TICKS_PER_STEP),
+            Error::PeriodOverflow { .. } => Some(Key::FMIN),
+            Error::PeriodZero { .. } => Some(Key::FMAX),
             Error::EmptySegment { .. }
             | Error::SegmentTooLong { .. }
-            | Error::SegmentsNeedTime { .. } => Some(Key::Segments),
+            | Error::SegmentsNeedTime { .. } => Some(Key::SEGMENTS),
             Error::BufferLength { .. } | Error::WordMismatch { .. } => None,
             Error::NoConvergence { .. } => None,
         }
@@ -570,242 +416,5 @@ impl fmt::Display for Error {
 impl std::error::Error for Error {}
 
 #[cfg(test)]
-mod tests {
-    extern crate std;
-    use std::string::ToString;
-    use std::vec::Vec;
-
-    use super::*;
-    use crate::{Discretization, Word};
-
-    /// One example of every variant with its exact message. The match in
-    /// `covered` has no wildcard: a new variant does not compile until it
-    /// is added here.
-    fn examples() -> Vec<(Error, &'static str)> {
-        std::vec![
-            (
-                Error::NotFinite {
-                    key: Key::Fmax,
-                    value: f64::INFINITY
-                },
-                "`fmax` must be a finite number (got inf)"
-            ),
-            (
-                Error::NotPositive {
-                    key: Key::Fmin,
-                    value: -500.0
-                },
-                "`fmin` must be greater than 0 (got -500)"
-            ),
-            (
-                Error::TooLarge {
-                    key: Key::Flexible,
-                    value: 501.0,
-                    max: 500.0
-                },
-                "`flexible` must be at most 500 (got 501)"
-            ),
-            (
-                Error::NotGreater {
-                    key: Key::Fmax,
-                    value: 400.0,
-                    other: Key::Fmin,
-                    other_value: 500.0
-                },
-                "`fmax` must be greater than `fmin` (got 400 <= 500)",
-            ),
-            (Error::Zero { key: Key::Shape }, "`shape` must not be 0"),
-            (
-                Error::TooSmall {
-                    key: Key::Shape,
-                    value: -20.0,
-                    min: -40.0 / 3.0,
-                    why: ", that is -accel / (f1 - fmin), for a concave start"
-                },
-                "`shape` must be greater than -13.3333, that is -accel / (f1 - fmin), for a concave start (got -20)",
-            ),
-            (
-                Error::NotAtLeast {
-                    key: Key::F2,
-                    value: 300.0,
-                    other: Key::F1,
-                    other_value: 400.0
-                },
-                "`f2` must be at least `f1` (got 300 < 400)",
-            ),
-            (
-                Error::NotWhole {
-                    key: Key::Fmin,
-                    value: 500.5
-                },
-                "`fmin` must be a whole number with `arithmetic = integer` (got 500.5)",
-            ),
-            (
-                Error::IntegerOverflow {
-                    key: Key::Fmin,
-                    expression: "f0*f0",
-                    value: 4_294_836_225,
-                    max: 2_147_483_647
-                },
-                "`fmin` overflows the integer `pulse()` code: `f0*f0` is 4294836225, more than 2147483647",
-            ),
-            (
-                Error::RampTooLong {
-                    key: Key::Tau,
-                    steps: 123_456.4,
-                    max: 65_536
-                },
-                "`tau` makes the ramp 123456 steps long; at most 65536 are allowed",
-            ),
-            (
-                Error::EmptySegment {
-                    index: 0,
-                    steps: 120
-                },
-                "segment 0 holds no step of the 120-step ramp; use fewer `segments`",
-            ),
-            (
-                Error::SegmentTooLong {
-                    index: 0,
-                    count: 65_536,
-                    word: Word::U16
-                },
-                "segment 0 holds 65536 steps, more than a `word = u16` count holds (65535); use more `segments`",
-            ),
-            (
-                Error::SegmentsNeedTime {
-                    discretization: Discretization::Index
-                },
-                "`segments` cuts the curve into equal-time pieces and needs `discretization = exact` (got `index`)",
-            ),
-            (Error::LenZero, "`len` must be at least 1 (got 0)"),
-            (
-                Error::LenTooLarge {
-                    len: 65_537,
-                    max: 65_536
-                },
-                "`len` must be at most 65536 (got 65537)"
-            ),
-            (
-                Error::TimerZero,
-                "`timer_hz` must be greater than 0 (got 0)"
-            ),
-            (
-                Error::TicksPerStep { value: 3 },
-                "`ticks_per_step` must be 1 or 2 (got 3)"
-            ),
-            (
-                Error::Unsupported {
-                    key: Key::Arithmetic,
-                    value: "f32",
-                    applies: "with `discretization = index`"
-                },
-                "`arithmetic = f32` applies only with `discretization = index`",
-            ),
-            (
-                Error::PeriodOverflow {
-                    index: 0,
-                    ticks: 99_980.0,
-                    word: Word::U16,
-                    timer_hz: 10_000_000,
-                    lowest_hz: 152.590218
-                },
-                "entry 0 is 99980 ticks, more than `word = u16` holds (65535); at `timer_hz = 10000000` the lowest step frequency that fits is 152.59 Hz",
-            ),
-            (
-                Error::PeriodZero {
-                    index: 999,
-                    highest_hz: 10_000_000.0
-                },
-                "entry 999 rounds to 0 ticks; the timer resolves step frequencies up to 10000000 Hz",
-            ),
-            (
-                Error::BufferLength {
-                    expected: 1000,
-                    got: 10
-                },
-                "the buffer holds 10 entries but the table has `len = 1000`",
-            ),
-            (
-                Error::WordMismatch {
-                    expected: Word::U16,
-                    got: Word::U32
-                },
-                "the buffer holds `u32` entries but the spec has `word = u16`",
-            ),
-            (
-                Error::NoConvergence {
-                    index: 7,
-                    iterations: 100
-                },
-                "the pulse time of step 7 did not converge within 100 iterations: the curve's step count is not a finite number there",
-            ),
-        ]
-    }
-
-    fn covered(e: &Error) -> usize {
-        match e {
-            Error::NotFinite { .. } => 0,
-            Error::NotPositive { .. } => 1,
-            Error::TooLarge { .. } => 2,
-            Error::NotGreater { .. } => 3,
-            Error::Zero { .. } => 4,
-            Error::TooSmall { .. } => 5,
-            Error::NotWhole { .. } => 6,
-            Error::IntegerOverflow { .. } => 7,
-            Error::RampTooLong { .. } => 8,
-            Error::EmptySegment { .. } => 9,
-            Error::SegmentsNeedTime { .. } => 10,
-            Error::LenZero => 11,
-            Error::LenTooLarge { .. } => 12,
-            Error::TimerZero => 13,
-            Error::TicksPerStep { .. } => 14,
-            Error::Unsupported { .. } => 15,
-            Error::PeriodOverflow { .. } => 16,
-            Error::PeriodZero { .. } => 17,
-            Error::BufferLength { .. } => 18,
-            Error::WordMismatch { .. } => 19,
-            Error::NoConvergence { .. } => 20,
-            Error::NotAtLeast { .. } => 21,
-            Error::SegmentTooLong { .. } => 22,
-        }
-    }
-
-    #[test]
-    fn every_variant_has_a_pinned_message() {
-        let examples = examples();
-        let mut seen = [false; 23];
-        for (error, message) in &examples {
-            assert_eq!(error.to_string(), *message);
-            seen[covered(error)] = true;
-            // Messages are lowercase with no trailing period.
-            assert!(!message.ends_with('.'), "{message}");
-            assert!(
-                !message.starts_with(|c: char| c.is_ascii_uppercase()),
-                "{message}"
-            );
-        }
-        assert!(
-            seen.iter().all(|s| *s),
-            "a variant has no example: {seen:?}"
-        );
-    }
-
-    #[test]
-    fn errors_blame_the_key_to_point_at() {
-        assert_eq!(Error::LenZero.key(), Some(Key::Len));
-        assert_eq!(Error::TimerZero.key(), Some(Key::TimerHz));
-        assert_eq!(
-            Error::EmptySegment { index: 0, steps: 1 }.key(),
-            Some(Key::Segments)
-        );
-        assert_eq!(
-            Error::BufferLength {
-                expected: 1,
-                got: 2
-            }
-            .key(),
-            None
-        );
-    }
-}
+#[path = "error_tests.rs"]
+mod tests;

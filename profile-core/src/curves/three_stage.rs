@@ -1,7 +1,40 @@
-//! The exponential-linear-parabolic curve of Zeng, Hu and Hu (seed 002).
+//! The exponential-linear-parabolic curve of Zeng, Hu and Hu.
 
-use crate::solve::TimeCurve;
-use crate::spec::ThreeStage;
+use super::check::{finite, greater, positive};
+use super::{CurveKind, Length, Param, Reader};
+use crate::base::error::Error;
+use crate::base::key::Key;
+use crate::base::solve::TimeCurve;
+
+impl Key {
+    /// `f1`: where the three-stage curve's exponential stage ends, in Hz.
+    pub const F1: Key = Key("f1");
+    /// `f2`: where its linear stage ends, in Hz.
+    pub const F2: Key = Key("f2");
+    /// `shape`: its exponential stage's shape `B`, in 1/s.
+    pub const SHAPE: Key = Key("shape");
+}
+
+/// The three-stage curve of Zeng, Hu and Hu ("Control Algorithm of
+/// Acceleration Curve for Stepper Motor", 2016): exponential up to `f1`,
+/// linear at `accel` up to `f2`, parabolic up to `fmax`, with frequency and
+/// acceleration continuous at both joints. The table runs until `fmax`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ThreeStage {
+    /// Start frequency `f0`, in Hz.
+    pub fmin: f64,
+    /// Final frequency `fc`, reached with zero acceleration, in Hz.
+    pub fmax: f64,
+    /// Acceleration `a` of the linear stage (the peak), in Hz/s.
+    pub accel: f64,
+    /// Frequency where the exponential stage hands over to the linear one, in Hz.
+    pub f1: f64,
+    /// Frequency where the linear stage hands over to the parabola, in Hz.
+    pub f2: f64,
+    /// Shape `B` of the exponential stage, in 1/s: positive is convex
+    /// (acceleration falls towards `a`), negative concave. Not 0.
+    pub shape: f64,
+}
 
 /// The curve with its joints solved (DESIGN section 2):
 /// `C = f1 - f0 + a/B`, `t1 = ln(1 + B (f1 - f0)/a) / B`, `t2 = t1 + (f2 - f1)/a`,
@@ -62,7 +95,7 @@ impl ThreeStageInTime {
     /// cancellation of two huge terms when `B` is small (`C ~ a/B`):
     /// `N1 = f0 t + (a + B (f1 - f0)) t² h(Bt)` with `h(x) = (x + expm1(-x))/x²`.
     fn stage1_steps(&self, t: f64) -> f64 {
-        let h = crate::math::exp_excess_ratio(self.shape * t);
+        let h = crate::base::math::exp_excess_ratio(self.shape * t);
         self.f0 * t + (self.a + self.shape * (self.f1 - self.f0)) * t * t * h
     }
 
@@ -121,6 +154,97 @@ impl TimeCurve for ThreeStageInTime {
 
     fn end_freq(&self) -> f64 {
         self.fc
+    }
+}
+
+impl CurveKind for ThreeStage {
+    const NAME: &'static str = "three_stage";
+    const KEYS: &'static [Key] = &[
+        Key::FMIN,
+        Key::FMAX,
+        Key::ACCEL,
+        Key::F1,
+        Key::F2,
+        Key::SHAPE,
+    ];
+    const REQUIRED: &'static [Key] = Self::KEYS;
+    const UNITS: &'static [(Key, &'static str)] = &[
+        (Key::F1, "Hz (steps/s)"),
+        (Key::F2, "Hz (steps/s)"),
+        (Key::SHAPE, "1/s"),
+    ];
+    type Time = ThreeStageInTime;
+
+    fn time(&self) -> ThreeStageInTime {
+        ThreeStageInTime::new(self)
+    }
+
+    fn frequencies(&self) -> (f64, f64) {
+        (self.fmin, self.fmax)
+    }
+
+    fn length(&self, _index: bool) -> Length {
+        Length::Derived {
+            steps: ThreeStageInTime::new(self).ramp_steps(),
+            key: Key::ACCEL,
+            extra: 0,
+        }
+    }
+
+    fn check(&self, _index: bool) -> Result<(), Error> {
+        positive(Key::FMIN, self.fmin)?;
+        greater(Key::F1, self.f1, Key::FMIN, self.fmin)?;
+        finite(Key::F2, self.f2)?;
+        if self.f2 < self.f1 {
+            return Err(Error::NotAtLeast {
+                key: Key::F2,
+                value: self.f2,
+                other: Key::F1,
+                other_value: self.f1,
+            });
+        }
+        greater(Key::FMAX, self.fmax, Key::F2, self.f2)?;
+        positive(Key::ACCEL, self.accel)?;
+        finite(Key::SHAPE, self.shape)?;
+        if self.shape == 0.0 {
+            return Err(Error::Zero { key: Key::SHAPE });
+        }
+        let min_shape = -self.accel / (self.f1 - self.fmin);
+        if self.shape <= min_shape {
+            return Err(Error::TooSmall {
+                key: Key::SHAPE,
+                value: self.shape,
+                min: min_shape,
+                why: ", that is -accel / (f1 - fmin), for a concave start",
+            });
+        }
+        Ok(())
+    }
+
+    fn read(r: &mut dyn Reader) -> Option<Self> {
+        let (fmin, fmax, accel) = (r.number(Key::FMIN), r.number(Key::FMAX), r.number(Key::ACCEL));
+        let (f1, f2, shape) = (r.number(Key::F1), r.number(Key::F2), r.number(Key::SHAPE));
+        Some(ThreeStage {
+            fmin: fmin?,
+            fmax: fmax?,
+            accel: accel?,
+            f1: f1?,
+            f2: f2?,
+            shape: shape?,
+        })
+    }
+
+    fn describe(&self, out: &mut dyn FnMut(Key, Param)) {
+        for (key, value) in [
+            (Key::FMIN, self.fmin),
+            (Key::FMAX, self.fmax),
+            (Key::ACCEL, self.accel),
+            (Key::F1, self.f1),
+            (Key::F2, self.f2),
+            (Key::SHAPE, self.shape),
+        ] {
+            out(key, Param::Number(value));
+        }
     }
 }
 

@@ -1,9 +1,11 @@
 //! Pulse times from the step count: solve `N(t) = k` for `t`.
 
+use super::error::Error;
+
 /// The iteration bound of [`pulse_time`]. Accepted Newton steps at least
 /// halve from one iteration to the next, and each bisection halves the
 /// floating-point numbers left in the bracket; on the brackets
-/// [`edge_time`](crate::generate) builds the solver ends within a few dozen
+/// [`edge_time`] builds the solver ends within a few dozen
 /// iterations, usually 3 to 6.
 pub(crate) const MAX_ITERATIONS: u32 = 200;
 
@@ -108,6 +110,26 @@ pub(crate) fn pulse_time<C: TimeCurve + ?Sized>(
         t = next;
     }
     None
+}
+
+/// The exact time of pulse edge `k` (when `N(t) = k`), in s.
+pub(crate) fn edge_time(c: &dyn TimeCurve, k: u32) -> Result<f64, Error> {
+    let steps = k as f64;
+    if let Some(t) = c.time_at(steps) {
+        return Ok(t);
+    }
+    let (ramp_time, ramp_steps) = c.ramp_end();
+    if steps >= ramp_steps {
+        return Ok(time_after_ramp(c, steps));
+    }
+    // f is non-decreasing from f(0) to the end frequency, so edge k is no
+    // earlier than k / f_end and no later than k / f(0).
+    let hi = ramp_time.min(steps / c.freq(0.0));
+    let lo = (steps / c.end_freq()).min(hi);
+    pulse_time(c, steps, lo, hi, MAX_ITERATIONS).ok_or(Error::NoConvergence {
+        index: k,
+        iterations: MAX_ITERATIONS,
+    })
 }
 
 #[cfg(test)]

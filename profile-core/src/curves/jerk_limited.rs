@@ -1,8 +1,32 @@
 //! The jerk-limited (7-segment) S-curve: acceleration rises at `jerk`, holds
 //! at `accel`, falls at `jerk` to zero at `fmax`.
 
-use crate::solve::TimeCurve;
-use crate::spec::JerkLimited;
+use super::check::{positive, range};
+use super::{CurveKind, Length, Param, Reader};
+use crate::base::error::Error;
+use crate::base::key::Key;
+use crate::base::solve::TimeCurve;
+
+impl Key {
+    /// `jerk`: the jerk-limited ramp's jerk, in Hz/s².
+    pub const JERK: Key = Key("jerk");
+}
+
+/// The jerk-limited (7-segment) S-curve: acceleration rises at `jerk` up to
+/// `accel`, holds, and falls back to zero at `fmax`. When `accel` cannot be
+/// reached within the speed change, the peak acceleration is lower
+/// (triangular acceleration). The table runs until `fmax`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct JerkLimited {
+    /// Start frequency, in Hz.
+    pub fmin: f64,
+    /// Final frequency, in Hz.
+    pub fmax: f64,
+    /// Largest acceleration, in Hz/s.
+    pub accel: f64,
+    /// Jerk, in Hz/s².
+    pub jerk: f64,
+}
 
 /// The ramp's three phases with their closed forms.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -96,6 +120,58 @@ impl TimeCurve for JerkInTime {
 
     fn end_freq(&self) -> f64 {
         self.fmax
+    }
+}
+
+impl CurveKind for JerkLimited {
+    const NAME: &'static str = "jerk_limited";
+    const KEYS: &'static [Key] = &[Key::FMIN, Key::FMAX, Key::ACCEL, Key::JERK];
+    const REQUIRED: &'static [Key] = Self::KEYS;
+    const UNITS: &'static [(Key, &'static str)] = &[(Key::JERK, "Hz/s²")];
+    type Time = JerkInTime;
+
+    fn time(&self) -> JerkInTime {
+        JerkInTime::new(self)
+    }
+
+    fn frequencies(&self) -> (f64, f64) {
+        (self.fmin, self.fmax)
+    }
+
+    fn length(&self, _index: bool) -> Length {
+        Length::Derived {
+            steps: JerkInTime::new(self).ramp_steps(),
+            key: Key::JERK,
+            extra: 0,
+        }
+    }
+
+    fn check(&self, _index: bool) -> Result<(), Error> {
+        range(self.fmin, self.fmax)?;
+        positive(Key::ACCEL, self.accel)?;
+        positive(Key::JERK, self.jerk)
+    }
+
+    fn read(r: &mut dyn Reader) -> Option<Self> {
+        let (fmin, fmax) = (r.number(Key::FMIN), r.number(Key::FMAX));
+        let (accel, jerk) = (r.number(Key::ACCEL), r.number(Key::JERK));
+        Some(JerkLimited {
+            fmin: fmin?,
+            fmax: fmax?,
+            accel: accel?,
+            jerk: jerk?,
+        })
+    }
+
+    fn describe(&self, out: &mut dyn FnMut(Key, Param)) {
+        for (key, value) in [
+            (Key::FMIN, self.fmin),
+            (Key::FMAX, self.fmax),
+            (Key::ACCEL, self.accel),
+            (Key::JERK, self.jerk),
+        ] {
+            out(key, Param::Number(value));
+        }
     }
 }
 

@@ -1,7 +1,41 @@
-//! The exponential ramp of seed 001.
+//! The exponential ramp of the exponential-ramp article.
 
-use crate::solve::TimeCurve;
-use crate::spec::{Exponential, ExponentialExtent};
+use super::check::{greater, len, positive, range};
+use super::{CurveKind, Length, Param, Reader};
+use crate::base::error::Error;
+use crate::base::key::Key;
+use crate::base::solve::TimeCurve;
+
+impl Key {
+    /// `f_inf`: the exponential's asymptote, in Hz.
+    pub const F_INF: Key = Key("f_inf");
+    /// `tau`: the exponential's time constant, in s.
+    pub const TAU: Key = Key("tau");
+}
+
+/// How long an exponential ramp is: a step budget or a time constant.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ExponentialExtent {
+    /// `fmax` is reached exactly at the end of step `len`; `tau` is solved for.
+    Len(u32),
+    /// The time constant `tau`, in s; the table runs until `fmax` is reached.
+    Tau(f64),
+}
+
+/// The exponential ramp of the exponential-ramp article ("Design and
+/// implementation of speed increase/decrease in stepper motor control"): `f(t) = fmin + (f_inf - fmin)(1 - exp(-t/tau))`,
+/// cut where it reaches `fmax`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Exponential {
+    /// Start frequency `f0`, in Hz.
+    pub fmin: f64,
+    /// Frequency at the end of the ramp, in Hz. Below `f_inf`.
+    pub fmax: f64,
+    /// The asymptote the exponential approaches, in Hz.
+    pub f_inf: f64,
+    /// Step budget or time constant.
+    pub extent: ExponentialExtent,
+}
 
 impl Exponential {
     /// `q = (fmax - fmin) / (f_inf - fmin)`: the part of the way to the
@@ -21,7 +55,7 @@ impl Exponential {
     /// a distant asymptote (`q` small) `(u - q)/q` is summed as a series.
     fn steps_per_tau(&self) -> f64 {
         let q = self.reach();
-        self.fmin * self.rise_in_tau() + (self.fmax - self.fmin) * crate::math::log_excess_ratio(q)
+        self.fmin * self.rise_in_tau() + (self.fmax - self.fmin) * crate::base::math::log_excess_ratio(q)
     }
 
     /// The time constant, in s: given, or solved so that `fmax` is reached at
@@ -76,7 +110,7 @@ impl ExponentialInTime {
 impl TimeCurve for ExponentialInTime {
     fn freq(&self, t: f64) -> f64 {
         if t < self.rise {
-            self.fmin + self.accel * t * crate::math::exp_fraction(t / self.tau)
+            self.fmin + self.accel * t * crate::base::math::exp_fraction(t / self.tau)
         } else {
             self.fmax
         }
@@ -88,7 +122,7 @@ impl TimeCurve for ExponentialInTime {
     /// no cancellation, and no underflow however distant the asymptote.
     fn steps(&self, t: f64) -> f64 {
         if t < self.rise {
-            self.fmin * t + self.accel * t * t * crate::math::exp_excess_ratio(t / self.tau)
+            self.fmin * t + self.accel * t * t * crate::base::math::exp_excess_ratio(t / self.tau)
         } else {
             self.rise_steps + self.fmax * (t - self.rise)
         }
@@ -100,6 +134,68 @@ impl TimeCurve for ExponentialInTime {
 
     fn end_freq(&self) -> f64 {
         self.fmax
+    }
+}
+
+impl CurveKind for Exponential {
+    const NAME: &'static str = "exponential";
+    const KEYS: &'static [Key] = &[Key::FMIN, Key::FMAX, Key::F_INF, Key::LEN, Key::TAU];
+    const REQUIRED: &'static [Key] = &[Key::FMIN, Key::FMAX, Key::F_INF];
+    const ONE_OF: Option<[Key; 2]> = Some([Key::LEN, Key::TAU]);
+    const UNITS: &'static [(Key, &'static str)] = &[(Key::F_INF, "Hz (steps/s)"), (Key::TAU, "s")];
+    type Time = ExponentialInTime;
+
+    fn time(&self) -> ExponentialInTime {
+        ExponentialInTime::new(self)
+    }
+
+    fn frequencies(&self) -> (f64, f64) {
+        (self.fmin, self.fmax)
+    }
+
+    fn length(&self, _index: bool) -> Length {
+        match self.extent {
+            ExponentialExtent::Len(len) => Length::Given(len),
+            ExponentialExtent::Tau(_) => Length::Derived {
+                steps: ExponentialInTime::new(self).ramp_steps(),
+                key: Key::TAU,
+                extra: 0,
+            },
+        }
+    }
+
+    fn check(&self, _index: bool) -> Result<(), Error> {
+        range(self.fmin, self.fmax)?;
+        greater(Key::F_INF, self.f_inf, Key::FMAX, self.fmax)?;
+        match self.extent {
+            ExponentialExtent::Len(n) => len(n),
+            ExponentialExtent::Tau(tau) => positive(Key::TAU, tau),
+        }
+    }
+
+    fn read(r: &mut dyn Reader) -> Option<Self> {
+        let (fmin, fmax, f_inf) = (r.number(Key::FMIN), r.number(Key::FMAX), r.number(Key::F_INF));
+        let extent = if r.has(Key::LEN) {
+            ExponentialExtent::Len(r.len()?)
+        } else {
+            ExponentialExtent::Tau(r.number(Key::TAU)?)
+        };
+        Some(Exponential {
+            fmin: fmin?,
+            fmax: fmax?,
+            f_inf: f_inf?,
+            extent,
+        })
+    }
+
+    fn describe(&self, out: &mut dyn FnMut(Key, Param)) {
+        out(Key::FMIN, Param::Number(self.fmin));
+        out(Key::FMAX, Param::Number(self.fmax));
+        out(Key::F_INF, Param::Number(self.f_inf));
+        match self.extent {
+            ExponentialExtent::Len(n) => out(Key::LEN, Param::Count(n)),
+            ExponentialExtent::Tau(t) => out(Key::TAU, Param::Number(t)),
+        }
     }
 }
 

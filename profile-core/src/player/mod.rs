@@ -34,7 +34,7 @@
 //! assert_eq!(periods, [4000, 2500, 2000, 1800, 1800, 1800, 1800, 2000, 2500, 4000]);
 //! ```
 
-use crate::generate::TableWord;
+use crate::base::timer::TableWord;
 
 /// A ramp to play: a table ordered from slow (rest) to fast.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -1,0 +1,241 @@
+//! Every variant of `Error` with its exact message.
+
+extern crate std;
+use std::string::ToString;
+use std::vec::Vec;
+
+use super::*;
+use crate::base::key::Key;
+use crate::base::modes::Discretization;
+use crate::base::timer::Word;
+
+/// One example of every variant with its exact message. The match in
+/// `covered` has no wildcard: a new variant does not compile until it
+/// is added here.
+fn examples() -> Vec<(Error, &'static str)> {
+    std::vec![
+        (
+            Error::NotFinite {
+                key: Key::FMAX,
+                value: f64::INFINITY
+            },
+            "`fmax` must be a finite number (got inf)"
+        ),
+        (
+            Error::NotPositive {
+                key: Key::FMIN,
+                value: -500.0
+            },
+            "`fmin` must be greater than 0 (got -500)"
+        ),
+        (
+            Error::TooLarge {
+                key: Key::FLEXIBLE,
+                value: 501.0,
+                max: 500.0
+            },
+            "`flexible` must be at most 500 (got 501)"
+        ),
+        (
+            Error::NotGreater {
+                key: Key::FMAX,
+                value: 400.0,
+                other: Key::FMIN,
+                other_value: 500.0
+            },
+            "`fmax` must be greater than `fmin` (got 400 <= 500)",
+        ),
+        (Error::Zero { key: Key::SHAPE }, "`shape` must not be 0"),
+        (
+            Error::TooSmall {
+                key: Key::SHAPE,
+                value: -20.0,
+                min: -40.0 / 3.0,
+                why: ", that is -accel / (f1 - fmin), for a concave start"
+            },
+            "`shape` must be greater than -13.3333, that is -accel / (f1 - fmin), for a concave start (got -20)",
+        ),
+        (
+            Error::NotAtLeast {
+                key: Key::F2,
+                value: 300.0,
+                other: Key::F1,
+                other_value: 400.0
+            },
+            "`f2` must be at least `f1` (got 300 < 400)",
+        ),
+        (
+            Error::NotWhole {
+                key: Key::FMIN,
+                value: 500.5
+            },
+            "`fmin` must be a whole number with `arithmetic = integer` (got 500.5)",
+        ),
+        (
+            Error::IntegerOverflow {
+                key: Key::FMIN,
+                expression: "f0*f0",
+                value: 4_294_836_225,
+                max: 2_147_483_647
+            },
+            "`fmin` overflows the integer `pulse()` code: `f0*f0` is 4294836225, more than 2147483647",
+        ),
+        (
+            Error::RampTooLong {
+                key: Key::TAU,
+                steps: 123_456.4,
+                max: 65_536
+            },
+            "`tau` makes the ramp 123456 steps long; at most 65536 are allowed",
+        ),
+        (
+            Error::EmptySegment {
+                index: 0,
+                steps: 120
+            },
+            "segment 0 holds no step of the 120-step ramp; use fewer `segments`",
+        ),
+        (
+            Error::SegmentTooLong {
+                index: 0,
+                count: 65_536,
+                word: Word::U16
+            },
+            "segment 0 holds 65536 steps, more than a `word = u16` count holds (65535); use more `segments`",
+        ),
+        (
+            Error::SegmentsNeedTime {
+                discretization: Discretization::Index
+            },
+            "`segments` cuts the curve into equal-time pieces and needs `discretization = exact` (got `index`)",
+        ),
+        (Error::LenZero, "`len` must be at least 1 (got 0)"),
+        (
+            Error::LenTooLarge {
+                len: 65_537,
+                max: 65_536
+            },
+            "`len` must be at most 65536 (got 65537)"
+        ),
+        (
+            Error::TimerZero,
+            "`timer_hz` must be greater than 0 (got 0)"
+        ),
+        (
+            Error::TicksPerStep { value: 3 },
+            "`ticks_per_step` must be 1 or 2 (got 3)"
+        ),
+        (
+            Error::Unsupported {
+                key: Key::ARITHMETIC,
+                value: "f32",
+                applies: "with `discretization = index`"
+            },
+            "`arithmetic = f32` applies only with `discretization = index`",
+        ),
+        (
+            Error::PeriodOverflow {
+                index: 0,
+                ticks: 99_980.0,
+                word: Word::U16,
+                timer_hz: 10_000_000,
+                lowest_hz: 152.590218
+            },
+            "entry 0 is 99980 ticks, more than `word = u16` holds (65535); at `timer_hz = 10000000` the lowest step frequency that fits is 152.59 Hz",
+        ),
+        (
+            Error::PeriodZero {
+                index: 999,
+                highest_hz: 10_000_000.0
+            },
+            "entry 999 rounds to 0 ticks; the timer resolves step frequencies up to 10000000 Hz",
+        ),
+        (
+            Error::BufferLength {
+                expected: 1000,
+                got: 10
+            },
+            "the buffer holds 10 entries but the table has `len = 1000`",
+        ),
+        (
+            Error::WordMismatch {
+                expected: Word::U16,
+                got: Word::U32
+            },
+            "the buffer holds `u32` entries but the spec has `word = u16`",
+        ),
+        (
+            Error::NoConvergence {
+                index: 7,
+                iterations: 100
+            },
+            "the pulse time of step 7 did not converge within 100 iterations: the curve's step count is not a finite number there",
+        ),
+    ]
+}
+
+fn covered(e: &Error) -> usize {
+    match e {
+        Error::NotFinite { .. } => 0,
+        Error::NotPositive { .. } => 1,
+        Error::TooLarge { .. } => 2,
+        Error::NotGreater { .. } => 3,
+        Error::Zero { .. } => 4,
+        Error::TooSmall { .. } => 5,
+        Error::NotWhole { .. } => 6,
+        Error::IntegerOverflow { .. } => 7,
+        Error::RampTooLong { .. } => 8,
+        Error::EmptySegment { .. } => 9,
+        Error::SegmentsNeedTime { .. } => 10,
+        Error::LenZero => 11,
+        Error::LenTooLarge { .. } => 12,
+        Error::TimerZero => 13,
+        Error::TicksPerStep { .. } => 14,
+        Error::Unsupported { .. } => 15,
+        Error::PeriodOverflow { .. } => 16,
+        Error::PeriodZero { .. } => 17,
+        Error::BufferLength { .. } => 18,
+        Error::WordMismatch { .. } => 19,
+        Error::NoConvergence { .. } => 20,
+        Error::NotAtLeast { .. } => 21,
+        Error::SegmentTooLong { .. } => 22,
+    }
+}
+
+#[test]
+fn every_variant_has_a_pinned_message() {
+    let examples = examples();
+    let mut seen = [false; 23];
+    for (error, message) in &examples {
+        assert_eq!(error.to_string(), *message);
+        seen[covered(error)] = true;
+        // Messages are lowercase with no trailing period.
+        assert!(!message.ends_with('.'), "{message}");
+        assert!(
+            !message.starts_with(|c: char| c.is_ascii_uppercase()),
+            "{message}"
+        );
+    }
+    assert!(
+        seen.iter().all(|s| *s),
+        "a variant has no example: {seen:?}"
+    );
+}
+
+#[test]
+fn errors_blame_the_key_to_point_at() {
+    assert_eq!(Error::LenZero.key(), Some(Key::LEN));
+    assert_eq!(Error::TimerZero.key(), Some(Key::TIMER_HZ));
+    assert_eq!(
+        Error::EmptySegment { index: 0, steps: 1 }.key(),
+        Some(Key::SEGMENTS)
+    );
+    assert_eq!(
+        Error::BufferLength {
+            expected: 1,
+            got: 2
+        }
+        .key(),
+        None
+    );
+}

@@ -1,0 +1,101 @@
+//! The schema's vocabulary: keys as users spell them.
+
+use core::fmt;
+
+/// A parameter of a table spec, as spelled in macro arguments and TOML.
+///
+/// The keys every curve shares are constants here; a key that only one
+/// curve takes is declared in that curve's module (`Key::FLEXIBLE` with the
+/// sigmoid, `Key::JERK` with the jerk-limited ramp). [`Key::all`] lists them
+/// all, in documentation order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct Key(pub(crate) &'static str);
+
+impl Key {
+    /// `curve`: which curve.
+    pub const CURVE: Key = Key("curve");
+    /// `len`: entries (steps) of the table.
+    pub const LEN: Key = Key("len");
+    /// `fmin`: the start frequency, in Hz.
+    pub const FMIN: Key = Key("fmin");
+    /// `fmax`: the end frequency, in Hz.
+    pub const FMAX: Key = Key("fmax");
+    /// `accel`: an acceleration, in Hz/s.
+    pub const ACCEL: Key = Key("accel");
+    /// `timer_hz`: the timer's tick rate.
+    pub const TIMER_HZ: Key = Key("timer_hz");
+    /// `word`: `u16` or `u32`.
+    pub const WORD: Key = Key("word");
+    /// `ticks_per_step`: timer reloads per step.
+    pub const TICKS_PER_STEP: Key = Key("ticks_per_step");
+    /// `discretization`: how the curve becomes entries.
+    pub const DISCRETIZATION: Key = Key("discretization");
+    /// `rounding`: how exact periods become integers.
+    pub const ROUNDING: Key = Key("rounding");
+    /// `arithmetic`: `f64`, or an article's own arithmetic.
+    pub const ARITHMETIC: Key = Key("arithmetic");
+    /// `segments`: the equal-time segment layout.
+    pub const SEGMENTS: Key = Key("segments");
+    /// `motor`: the motor a profile drives.
+    pub const MOTOR: Key = Key("motor");
+    /// `step_angle`
+    pub const STEP_ANGLE: Key = Key("step_angle");
+    /// `microsteps`
+    pub const MICROSTEPS: Key = Key("microsteps");
+    /// `rotor_inertia`
+    pub const ROTOR_INERTIA: Key = Key("rotor_inertia");
+    /// `load_inertia`
+    pub const LOAD_INERTIA: Key = Key("load_inertia");
+    /// `torque_curve`
+    pub const TORQUE_CURVE: Key = Key("torque_curve");
+    /// `friction`
+    pub const FRICTION: Key = Key("friction");
+    /// `damping`
+    pub const DAMPING: Key = Key("damping");
+    /// `safety`
+    pub const SAFETY: Key = Key("safety");
+    /// `max_start_hz`
+    pub const MAX_START_HZ: Key = Key("max_start_hz");
+
+    /// The keys every curve takes, after the curve's own, in documentation
+    /// order (the motor's keys aside).
+    pub const COMMON: &'static [Key] = &[
+        Key::TIMER_HZ,
+        Key::WORD,
+        Key::TICKS_PER_STEP,
+        Key::DISCRETIZATION,
+        Key::ROUNDING,
+        Key::ARITHMETIC,
+        Key::SEGMENTS,
+        Key::MOTOR,
+    ];
+
+    /// The keys that describe a motor (all but `motor` itself).
+    pub const MOTOR_KEYS: &'static [Key] = &[
+        Key::STEP_ANGLE,
+        Key::MICROSTEPS,
+        Key::ROTOR_INERTIA,
+        Key::LOAD_INERTIA,
+        Key::TORQUE_CURVE,
+        Key::FRICTION,
+        Key::DAMPING,
+        Key::SAFETY,
+        Key::MAX_START_HZ,
+    ];
+
+    /// The key as written by users.
+    pub const fn name(self) -> &'static str {
+        self.0
+    }
+
+    /// Whether the key describes a motor.
+    pub fn is_motor(self) -> bool {
+        Key::MOTOR_KEYS.contains(&self)
+    }
+}
+
+impl fmt::Display for Key {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.0)
+    }
+}

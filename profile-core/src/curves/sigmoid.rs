@@ -1,0 +1,242 @@
+//! The sigmoid S-curve of the S-curve articles, over the step index and over time.
+
+use super::check::{len, positive, range};
+use super::{CurveKind, IndexEntry, Length, Modes, Param, Reader};
+use crate::base::error::Error;
+use crate::base::key::Key;
+use crate::base::math::{logistic, softplus_rise};
+use crate::base::modes::{Arithmetic, Discretization};
+use crate::base::solve::TimeCurve;
+
+impl Key {
+    /// `flexible`: the sigmoid's steepness.
+    pub const FLEXIBLE: Key = Key("flexible");
+}
+
+/// The largest `flexible` accepted: the logistic then spans `[-500, 500]`,
+/// already a step function at any table length, and `exp` stays finite.
+pub const MAX_FLEXIBLE: f64 = 500.0;
+
+/// The sigmoid S-curve of the S-curve articles ("Stepper Motor S-curve
+/// Acceleration and Deceleration Algorithm and Implementation").
+///
+/// `f(x) = fmin + (fmax - fmin) / (1 + exp(-flexible * (x - len/2) / (len/2)))`.
+/// With `discretization = index`, `x` is the step index `0..len`. In time, the same
+/// shape spans `[0, T]` with `T = len / (fmin + (fmax - fmin) / 2)`, so exactly
+/// `len` steps fit.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sigmoid {
+    /// Frequency the curve starts from (its lower asymptote), in Hz (steps/s).
+    pub fmin: f64,
+    /// Frequency the curve rises to (its upper asymptote), in Hz (steps/s).
+    pub fmax: f64,
+    /// Steepness: the logistic runs over `[-flexible, flexible]`. Larger is
+    /// steeper in the middle; small values approach constant acceleration.
+    pub flexible: f64,
+    /// Number of entries (steps) in the table.
+    pub len: u32,
+}
+
+impl Sigmoid {
+    /// Frequency at step index `i` (`discretization = index`), in Hz.
+    pub fn freq_at_index(&self, i: u32) -> f64 {
+        let half = self.len as f64 / 2.0;
+        let x = self.flexible * (i as f64 - half) / half;
+        (self.fmax - self.fmin) * logistic(x) + self.fmin
+    }
+
+    /// Frequency at step index `i` computed as the S-curve article's `CalculateSModelLine`
+    /// does in C: single precision, a correctly rounded `expf`, and a
+    /// double-precision `1.0 / ...`.
+    pub fn freq_at_index_f32(&self, i: u32) -> f32 {
+        let len = self.len as f32;
+        let flexible = self.flexible as f32;
+        let fmin = self.fmin as f32;
+        let delt = self.fmax as f32 - fmin;
+        let melo = flexible * (i as f32 - len / 2.0) / (len / 2.0);
+        // C's `expf` is (nearly always) correctly rounded; `libm::expf` is off
+        // by one ulp for about 1% of inputs, which can flip a truncated
+        // period. `exp` in double precision rounded to float is correctly
+        // rounded but for rare double roundings, and identical on every target.
+        let e = libm::exp(-melo as f64) as f32;
+        let deno = (1.0f64 / (1.0f32 + e) as f64) as f32;
+        delt * deno + fmin
+    }
+
+    /// Ramp duration in time: `len / (fmin + (fmax - fmin) / 2)`, in s.
+    pub fn duration(&self) -> f64 {
+        self.len as f64 / (self.fmin + (self.fmax - self.fmin) / 2.0)
+    }
+}
+
+/// The sigmoid over `[0, T]`, with its closed-form step count.
+pub(crate) struct SigmoidInTime {
+    fmin: f64,
+    delt: f64,
+    flexible: f64,
+    half: f64,
+    duration: f64,
+    len: f64,
+}
+
+impl SigmoidInTime {
+    pub(crate) fn new(s: &Sigmoid) -> Self {
+        let duration = s.duration();
+        SigmoidInTime {
+            fmin: s.fmin,
+            delt: s.fmax - s.fmin,
+            flexible: s.flexible,
+            half: duration / 2.0,
+            duration,
+            len: s.len as f64,
+        }
+    }
+
+    fn arg(&self, t: f64) -> f64 {
+        self.flexible * (t - self.half) / self.half
+    }
+}
+
+impl TimeCurve for SigmoidInTime {
+    fn freq(&self, t: f64) -> f64 {
+        self.fmin + self.delt * logistic(self.arg(t))
+    }
+
+    /// `N(t) = fmin t + (fmax - fmin) (T / 2 flexible) (softplus(s(t)) - softplus(-flexible))`,
+    /// the difference taken as one rise of the softplus over `s(t) + flexible
+    /// = flexible t / (T/2)`, so that a flat curve (small `flexible`) keeps
+    /// its digits.
+    fn steps(&self, t: f64) -> f64 {
+        let rise = softplus_rise(-self.flexible, self.flexible * t / self.half);
+        self.fmin * t + self.delt * (self.half / self.flexible) * rise
+    }
+
+    fn ramp_end(&self) -> (f64, f64) {
+        (self.duration, self.len)
+    }
+
+    fn end_freq(&self) -> f64 {
+        self.fmin + self.delt
+    }
+}
+
+impl CurveKind for Sigmoid {
+    const NAME: &'static str = "sigmoid";
+    const KEYS: &'static [Key] = &[Key::LEN, Key::FMIN, Key::FMAX, Key::FLEXIBLE];
+    const REQUIRED: &'static [Key] = Self::KEYS;
+    const ARITHMETIC: &'static [(Arithmetic, &'static str)] = &[(
+        Arithmetic::F32,
+        "to `curve = sigmoid` with `discretization = index`, as the S-curve article's C function `CalculateSModelLine` computes",
+    )];
+    const INDEX: bool = true;
+    type Time = SigmoidInTime;
+
+    fn time(&self) -> SigmoidInTime {
+        SigmoidInTime::new(self)
+    }
+
+    fn frequencies(&self) -> (f64, f64) {
+        (self.fmin, self.fmax)
+    }
+
+    fn length(&self, _index: bool) -> Length {
+        Length::Given(self.len)
+    }
+
+    fn check(&self, _index: bool) -> Result<(), Error> {
+        len(self.len)?;
+        range(self.fmin, self.fmax)?;
+        positive(Key::FLEXIBLE, self.flexible)?;
+        if self.flexible > MAX_FLEXIBLE {
+            return Err(Error::TooLarge {
+                key: Key::FLEXIBLE,
+                value: self.flexible,
+                max: MAX_FLEXIBLE,
+            });
+        }
+        Ok(())
+    }
+
+    fn check_modes(&self, modes: &Modes) -> Result<(), Error> {
+        if modes.arithmetic == Arithmetic::F32 && modes.discretization != Discretization::Index {
+            return Err(Error::Unsupported {
+                key: Key::ARITHMETIC,
+                value: "f32",
+                applies: Self::ARITHMETIC[0].1,
+            });
+        }
+        Ok(())
+    }
+
+    fn index_entries(
+        &self,
+        modes: &Modes,
+        sink: &mut dyn FnMut(IndexEntry) -> Result<(), Error>,
+    ) -> Result<(), Error> {
+        let scale = modes.scale();
+        for k in 0..self.len {
+            let exact = match modes.arithmetic {
+                Arithmetic::F32 => scale / self.freq_at_index_f32(k) as f64,
+                _ => scale / self.freq_at_index(k),
+            };
+            sink(IndexEntry {
+                exact,
+                rounded: None,
+            })?;
+        }
+        Ok(())
+    }
+
+    fn read(r: &mut dyn Reader) -> Option<Self> {
+        let (len, fmin, fmax) = (r.len(), r.number(Key::FMIN), r.number(Key::FMAX));
+        let flexible = r.number(Key::FLEXIBLE);
+        Some(Sigmoid {
+            fmin: fmin?,
+            fmax: fmax?,
+            flexible: flexible?,
+            len: len?,
+        })
+    }
+
+    fn describe(&self, out: &mut dyn FnMut(Key, Param)) {
+        out(Key::LEN, Param::Count(self.len));
+        out(Key::FMIN, Param::Number(self.fmin));
+        out(Key::FMAX, Param::Number(self.fmax));
+        out(Key::FLEXIBLE, Param::Number(self.flexible));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn step_count_reaches_len_at_the_end() {
+        let s = Sigmoid {
+            fmin: 500.0,
+            fmax: 64_000.0,
+            flexible: 8.0,
+            len: 1000,
+        };
+        let c = SigmoidInTime::new(&s);
+        assert!((c.steps(c.ramp_end().0) - 1000.0).abs() < 1e-9);
+        assert_eq!(c.steps(0.0), 0.0);
+        // In time, 1000 steps at an average of (500 + 64000) / 2 Hz.
+        assert!((c.ramp_end().0 - 1000.0 / 32_250.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn index_curve_matches_the_seed_first_and_last() {
+        let s = Sigmoid {
+            fmin: 500.0,
+            fmax: 64_000.0,
+            flexible: 8.0,
+            len: 1000,
+        };
+        // f[0] = 521.29 Hz: the curve never reaches fmin.
+        assert!((s.freq_at_index(0) - 521.29).abs() < 0.01);
+        assert_eq!((1e7 / s.freq_at_index(0)) as u32, 19183);
+        assert_eq!((1e7 / s.freq_at_index(999)) as u32, 156);
+        assert_eq!((1e7 / s.freq_at_index_f32(0) as f64) as u32, 19183);
+    }
+}

@@ -1,0 +1,211 @@
+//! The one emitter: what a table becomes in Rust (tokens, for the macros
+//! and for build-script files alike) and in C.
+
+use std::format;
+use std::string::{String, ToString};
+use std::vec;
+use std::vec::Vec;
+
+use crate::motor::{Motor, TorqueFigures};
+use crate::pipeline::Compiled;
+use crate::schema::describe;
+use crate::table::owned::Generated;
+
+pub mod c;
+pub mod print;
+pub mod rust;
+
+/// A named table, as declared in `profiles.toml`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Profile {
+    /// The profile's name: a Rust identifier, the module's name.
+    pub name: String,
+    /// Its table.
+    pub table: Generated,
+    /// Where its motor has the least torque to spare, when it names one.
+    pub torque: Option<TorqueFigures>,
+    /// The motor it drives, when it names one: for plots and simulations
+    /// ([`Motor::check_with`](crate::motor::Motor::check_with),
+    /// [`simulate::run`](crate::simulate::run)).
+    pub motor: Option<Motor>,
+}
+
+impl Profile {
+    /// A compiled table under its name.
+    pub fn new(name: String, compiled: Compiled) -> Self {
+        Profile {
+            name,
+            table: compiled.table,
+            torque: compiled.torque,
+            motor: compiled.motor,
+        }
+    }
+}
+
+/// A figure of a table, as a constant of its module and a `#define` in C.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Constant {
+    pub(crate) name: &'static str,
+    pub(crate) value: Number,
+    pub(crate) doc: &'static str,
+}
+
+/// A constant's value and its type.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Number {
+    U8(u8),
+    U32(u32),
+    U64(u64),
+    Usize(u64),
+    /// Always finite: the pipeline refuses a table whose figures are not.
+    F64(f64),
+}
+
+/// The figures of a table: the constants of a profile module and the
+/// `#define`s of a C header.
+pub(crate) fn constants(profile: &Profile) -> Vec<Constant> {
+    let table = &profile.table;
+    let spec = table.spec();
+    let mut c = vec![
+        Constant {
+            name: "TIMER_HZ",
+            value: Number::U32(spec.timer.timer_hz),
+            doc: "Timer tick rate after the prescaler, in Hz.",
+        },
+        Constant {
+            name: "TICKS_PER_STEP",
+            value: Number::U8(spec.timer.ticks_per_step),
+            doc: "Timer reloads per step (2: each entry is a half period).",
+        },
+    ];
+    match table {
+        Generated::Steps(t) => {
+            let f = &t.figures;
+            c.extend([
+                Constant {
+                    name: "LEN",
+                    value: Number::Usize(f.len.into()),
+                    doc: "Entries in `PERIODS`: steps of the ramp.",
+                },
+                Constant {
+                    name: "TOTAL_TICKS",
+                    value: Number::U64(f.total_ticks),
+                    doc: "Sum of `PERIODS`, in ticks.",
+                },
+                Constant {
+                    name: "FIRST_TICKS",
+                    value: Number::U32(f.first_ticks),
+                    doc: "First (slowest) period, in ticks.",
+                },
+                Constant {
+                    name: "LAST_TICKS",
+                    value: Number::U32(f.last_ticks),
+                    doc: "Last (fastest) period, in ticks.",
+                },
+                Constant {
+                    name: "DURATION_S",
+                    value: Number::F64(f.duration_s),
+                    doc: "Ramp duration as played, in s.",
+                },
+                Constant {
+                    name: "START_HZ",
+                    value: Number::F64(f.start_hz),
+                    doc: "Step frequency of the first entry, in Hz.",
+                },
+                Constant {
+                    name: "FINAL_HZ",
+                    value: Number::F64(f.final_hz),
+                    doc: "Step frequency of the last entry, in Hz.",
+                },
+            ]);
+        }
+        Generated::Segments(t) => {
+            let f = &t.figures;
+            c.extend([
+                Constant {
+                    name: "SEGMENT_COUNT",
+                    value: Number::Usize(f.segments.into()),
+                    doc: "Entries in `SEGMENTS`.",
+                },
+                Constant {
+                    name: "LEN",
+                    value: Number::Usize(f.steps.into()),
+                    doc: "Steps of the ramp: the sum of the segments' counts.",
+                },
+                Constant {
+                    name: "TOTAL_TICKS",
+                    value: Number::U64(f.total_ticks),
+                    doc: "Sum of period times count, in ticks.",
+                },
+                Constant {
+                    name: "DURATION_S",
+                    value: Number::F64(f.duration_s),
+                    doc: "Ramp duration as played, in s.",
+                },
+            ]);
+        }
+    }
+    if let Some(t) = &profile.torque {
+        c.extend([
+            Constant {
+                name: "TORQUE_MARGIN_NM",
+                value: Number::F64(t.min_margin_nm),
+                doc: "Smallest torque the motor has to spare over the ramp, in N·m.",
+            },
+            Constant {
+                name: "TORQUE_MARGIN_STEP",
+                value: Number::Usize(t.step.into()),
+                doc: "The step where the torque margin is smallest.",
+            },
+        ]);
+    }
+    c
+}
+
+/// Markdown lines describing a table: parameters and figures.
+pub fn doc_lines(table: &Generated) -> std::vec::Vec<String> {
+    let spec = table.spec();
+    let mut lines = std::vec![
+        "| parameter | value |".to_string(),
+        "| --- | --- |".to_string(),
+    ];
+    for (key, value) in describe(spec) {
+        lines.push(format!("| `{key}` | {value} |"));
+    }
+    lines.push(String::new());
+    match table {
+        Generated::Steps(t) => {
+            let f = &t.figures;
+            lines.push(format!(
+                "{} entries, {} to {} ticks ({:.2} Hz to {:.2} Hz), {} ticks in all ({:.6} s); \
+                 pulse edges within {:.3} tick of the unrounded curve, drift {:.3} tick; \
+                 peak acceleration {:.0} Hz/s.",
+                f.len,
+                f.first_ticks,
+                f.last_ticks,
+                f.start_hz,
+                f.final_hz,
+                f.total_ticks,
+                f.duration_s,
+                f.max_edge_error_ticks,
+                f.total_error_ticks,
+                f.max_accel_hz_s
+            ));
+        }
+        Generated::Segments(t) => {
+            let f = &t.figures;
+            lines.push(format!(
+                "{} segments for {} steps, {} bytes instead of {} per step; {} ticks in all \
+                 ({:.6} s); pulse edges within {:.1} ticks of the curve.",
+                f.segments,
+                f.steps,
+                f.flash_bytes,
+                f.per_step_flash_bytes,
+                f.total_ticks,
+                f.duration_s,
+                f.max_edge_error_ticks
+            ));
+        }
+    }
+    lines
+}

@@ -1,0 +1,153 @@
+//! Rust: a table as an array expression, a profile as a module, as tokens.
+//!
+//! `period_table!` and `include_profiles!` return these tokens; the build
+//! script writes the same tokens as text. Nothing is printed to be parsed
+//! again.
+
+use proc_macro2::{Ident, Literal, Span, TokenStream};
+use quote::quote;
+use std::format;
+use std::string::String;
+use std::vec::Vec;
+
+use super::{Constant, Number, Profile, constants, doc_lines};
+use crate::base::timer::Word;
+use crate::table::owned::Generated;
+
+/// A period as a literal: the first of an array carries the word's suffix,
+/// which gives the array its type.
+fn period(word: Word, ticks: u32, first: bool) -> Literal {
+    match (first, word) {
+        (false, _) => Literal::u32_unsuffixed(ticks),
+        (true, Word::U16) => Literal::u16_suffixed(ticks as u16),
+        (true, Word::U32) => Literal::u32_suffixed(ticks),
+    }
+}
+
+/// The word's type: `u16` or `u32`.
+fn word_type(word: Word) -> Ident {
+    Ident::new(word.name(), Span::call_site())
+}
+
+/// An array expression holding the table: `[19183u16, 18866, ...]`, or
+/// `[(9533u16, 3u16), (4750, 9), ...]` for a segment table.
+pub fn table_expr(table: &Generated) -> TokenStream {
+    let word = table.spec().timer.word;
+    match table {
+        Generated::Steps(t) => {
+            let items = t
+                .periods
+                .iter()
+                .enumerate()
+                .map(|(i, &p)| period(word, p, i == 0));
+            quote!([#(#items),*])
+        }
+        Generated::Segments(t) => {
+            let items = t.pairs.iter().enumerate().map(|(i, &(p, c))| {
+                let (p, c) = (period(word, p, i == 0), period(word, c, i == 0));
+                quote!((#p, #c))
+            });
+            quote!([#(#items),*])
+        }
+    }
+}
+
+/// A constant's value as a literal of its type.
+fn value(value: Number) -> (Ident, Literal) {
+    let (ty, literal) = match value {
+        Number::U8(v) => ("u8", Literal::u8_unsuffixed(v)),
+        Number::U32(v) => ("u32", Literal::u32_unsuffixed(v)),
+        Number::U64(v) => ("u64", Literal::u64_unsuffixed(v)),
+        Number::Usize(v) => ("usize", Literal::u64_unsuffixed(v)),
+        Number::F64(v) => ("f64", Literal::f64_unsuffixed(v)),
+    };
+    (Ident::new(ty, Span::call_site()), literal)
+}
+
+/// A doc attribute's text: a space, as `///` writes it, then the line.
+fn doc(line: &str) -> String {
+    format!(" {line}")
+}
+
+/// A module named after the profile, holding the table and its figures,
+/// documented with its parameters.
+pub fn module(profile: &Profile) -> TokenStream {
+    let spec = profile.table.spec();
+    let word = spec.timer.word;
+    let mut docs = std::vec![
+        doc(&format!(
+            "Profile `{}` ({}).",
+            profile.name,
+            spec.curve.name()
+        )),
+        String::new(),
+    ];
+    docs.extend(doc_lines(&profile.table).iter().map(|l| doc(l)));
+    if let Some(t) = &profile.torque {
+        docs.push(String::new());
+        docs.push(doc(&format!(
+            "Motor: the smallest torque margin is {:.4} N·m at step {} ({:.1} Hz): {:.4} N·m \
+             needed of {:.4} N·m available.",
+            t.min_margin_nm, t.step, t.hz, t.needed_nm, t.available_nm
+        )));
+    }
+    let name = Ident::new(&profile.name, Span::call_site());
+    let ty = word_type(word);
+    let array = table_expr(&profile.table);
+    let table = match &profile.table {
+        Generated::Steps(t) => {
+            let len = Literal::usize_unsuffixed(t.periods.len());
+            quote! {
+                #[doc = " Timer periods, one per step, in ticks of `TIMER_HZ`."]
+                pub static PERIODS: [#ty; #len] = #array;
+            }
+        }
+        Generated::Segments(t) => {
+            let len = Literal::usize_unsuffixed(t.pairs.len());
+            quote! {
+                #[doc = " `(period in ticks, steps)` per equal-time segment."]
+                pub static SEGMENTS: [(#ty, #ty); #len] = #array;
+            }
+        }
+    };
+    let constants = constants(profile).into_iter().map(|c: Constant| {
+        let name = Ident::new(c.name, Span::call_site());
+        let (ty, literal) = value(c.value);
+        let doc = doc(c.doc);
+        quote! {
+            #[doc = #doc]
+            pub const #name: #ty = #literal;
+        }
+    });
+    // Unused figures are no reason for warnings in the user's crate.
+    quote! {
+        #(#[doc = #docs])*
+        #[allow(dead_code)]
+        pub mod #name {
+            #table
+            #(#constants)*
+        }
+    }
+}
+
+/// One module per profile.
+pub fn modules(profiles: &[Profile]) -> TokenStream {
+    let modules: Vec<TokenStream> = profiles.iter().map(module).collect();
+    quote!(#(#modules)*)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn first_literal_is_suffixed() {
+        use std::string::ToString;
+        let lits = |word, ps: &[u32]| -> String {
+            let items = ps.iter().enumerate().map(|(i, &p)| period(word, p, i == 0));
+            quote!([#(#items),*]).to_string()
+        };
+        assert_eq!(lits(Word::U16, &[3, 2, 1]), "[3u16 , 2 , 1]");
+        assert_eq!(lits(Word::U32, &[70000]), "[70000u32]");
+    }
+}

@@ -1,0 +1,72 @@
+//! Saying where a problem is, and what a spec holds, as a user writes it.
+
+use std::format;
+use std::string::{String, ToString};
+use std::vec::Vec;
+
+use super::{Arg, Diagnostic};
+use crate::base::error::Error;
+use crate::base::key::Key;
+use crate::curves::Param;
+use crate::motor::MotorError;
+use crate::table::spec::Spec;
+
+/// The spec's parameters as `(key, value)` pairs, in documentation order, as
+/// a user would write them (defaults included): for docs, headers, reports.
+pub fn describe(spec: &Spec) -> Vec<(Key, String)> {
+    let mut out = std::vec![(Key::CURVE, spec.curve.name().to_string())];
+    spec.curve.describe(&mut |key, value| {
+        out.push((
+            key,
+            match value {
+                Param::Number(v) => format!("{v}"),
+                Param::Count(n) => n.to_string(),
+            },
+        ))
+    });
+    out.extend([
+        (Key::TIMER_HZ, spec.timer.timer_hz.to_string()),
+        (Key::WORD, spec.timer.word.name().to_string()),
+        (Key::TICKS_PER_STEP, spec.timer.ticks_per_step.to_string()),
+        (Key::DISCRETIZATION, spec.discretization.name().to_string()),
+        (Key::ROUNDING, spec.rounding.name().to_string()),
+        (Key::ARITHMETIC, spec.arithmetic.name().to_string()),
+    ]);
+    out
+}
+
+/// Places a motor error: at the value of its key, at `motor` for a table the
+/// motor cannot follow (when no `motor` names it: at `max_start_hz` for a
+/// start too fast, else at `torque_curve`), or on `whole`.
+pub fn locate_motor<L: Clone>(error: &MotorError, args: &[Arg<L>], whole: &L) -> Diagnostic<L> {
+    let find = |k: Key| {
+        args.iter()
+            .find(|a| a.key == k.name())
+            .map(|a| a.value_loc.clone())
+    };
+    let inline = match error {
+        MotorError::Start { .. } => Key::MAX_START_HZ,
+        _ => Key::TORQUE_CURVE,
+    };
+    let loc = find(error.key())
+        .or_else(|| find(inline))
+        .or_else(|| find(Key::TORQUE_CURVE))
+        .unwrap_or_else(|| whole.clone());
+    Diagnostic {
+        loc,
+        message: error.to_string(),
+    }
+}
+
+/// Places a core error at the value of the key it blames (or on `whole`).
+pub fn locate<L: Clone>(error: &Error, args: &[Arg<L>], whole: &L) -> Diagnostic<L> {
+    let loc = error
+        .key()
+        .and_then(|k| args.iter().find(|a| a.key == k.name()))
+        .map(|a| a.value_loc.clone())
+        .unwrap_or_else(|| whole.clone());
+    Diagnostic {
+        loc,
+        message: error.to_string(),
+    }
+}

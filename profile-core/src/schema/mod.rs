@@ -1,0 +1,165 @@
+//! The argument schema shared by `period_table!` and `profiles.toml`.
+//!
+//! Front ends turn their syntax into a list of [`Arg`]s, each carrying a
+//! location of the front end's choice (a `Span` in the macro, a byte range in
+//! TOML). [`read`] checks keys, kinds and names and says what the arguments
+//! ask for; every problem comes back as a [`Diagnostic`] at the location of
+//! the offending key or value. The keys a curve takes come from its room
+//! (`curves/`); this module knows the common keys, the motor's, and how to
+//! say what is wrong.
+
+use std::format;
+use std::string::{String, ToString};
+use std::vec::Vec;
+
+use crate::base::key::Key;
+use crate::curves::{ROOMS, Room};
+
+mod describe;
+mod read;
+mod reader;
+mod suggest;
+
+pub use describe::{describe, locate, locate_motor};
+pub use read::{Request, read};
+pub use suggest::{Hint, did_you_mean, suggest};
+
+/// A value as written by the user.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Value {
+    /// An integer literal (possibly negative).
+    Int(i128),
+    /// A floating-point literal (possibly negative).
+    Float(f64),
+    /// A bare name or a string: `sigmoid`, `"u16"`.
+    Name(String),
+    /// A list of `(x, y)` number pairs: `[(0, 0.4), (1000, 0.3)]`.
+    Points(Vec<(f64, f64)>),
+    /// A value of a kind no key takes, described: `a boolean`, `an array`.
+    Other(String),
+}
+
+impl Value {
+    /// The value as quoted in messages: `` `1000.5` ``, `` `slow` ``, `a boolean`.
+    /// A name that reads as a number says it is a string.
+    pub fn quoted(&self) -> String {
+        match self {
+            Value::Name(n)
+                if n.trim()
+                    .starts_with(|c: char| c.is_ascii_digit() || "+-.".contains(c))
+                    && n.trim().parse::<f64>().is_ok() =>
+            {
+                format!("the string `\"{n}\"` (write numbers without quotes)")
+            }
+            Value::Other(kind) => kind.clone(),
+            Value::Points(_) => "a list of points".to_string(),
+            other => format!("`{other}`"),
+        }
+    }
+}
+
+impl core::fmt::Display for Value {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            Value::Int(v) => write!(f, "{v}"),
+            Value::Float(v) => write!(f, "{v:?}"),
+            Value::Name(v) | Value::Other(v) => f.write_str(v),
+            Value::Points(points) => {
+                f.write_str("[")?;
+                for (i, (x, y)) in points.iter().enumerate() {
+                    let sep = if i == 0 { "" } else { ", " };
+                    write!(f, "{sep}({x}, {y})")?;
+                }
+                f.write_str("]")
+            }
+        }
+    }
+}
+
+/// One `key = value` pair with the locations of its key and its value.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Arg<L> {
+    /// The key as written.
+    pub key: String,
+    /// Where the key is.
+    pub key_loc: L,
+    /// The value.
+    pub value: Value,
+    /// Where the value is.
+    pub value_loc: L,
+}
+
+/// A message about the input and where it belongs.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Diagnostic<L> {
+    /// Where the problem is.
+    pub loc: L,
+    /// What is wrong and what is expected: lowercase, no trailing period.
+    pub message: String,
+}
+
+/// The curves a spec can name, in documentation order.
+pub fn curve_names() -> impl Iterator<Item = &'static str> + Clone {
+    ROOMS.iter().map(|r| r.name)
+}
+
+/// Every key `curve` accepts, in documentation order: its own, the common
+/// ones, the motor's.
+pub fn keys_for(curve: &str) -> Vec<Key> {
+    let own = Room::named(curve).map_or(&[][..], |r| r.keys);
+    Key::all()
+        .filter(|k| *k == Key::CURVE || own.contains(k) || Key::COMMON.contains(k) || k.is_motor())
+        .collect()
+}
+
+/// Keys to list in messages: a curve's and the common ones, not the motor's.
+pub(crate) fn listed(keys: &[Key]) -> impl Iterator<Item = &'static str> + '_ {
+    keys.iter()
+        .filter(|k| !k.is_motor() && **k != Key::MOTOR)
+        .map(|k| k.name())
+}
+
+/// Items in backticks, separated by commas: `` `a`, `b` ``.
+pub fn quoted<I: IntoIterator<Item = S>, S: AsRef<str>>(items: I) -> String {
+    items
+        .into_iter()
+        .map(|s| format!("`{}`", s.as_ref()))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// The most digits a number may be written with: more than any key needs
+/// (an `f64` holds 17 significant digits), few enough that no number is
+/// parsed at length.
+pub const MAX_DIGITS: usize = 40;
+
+/// The message for a number written with more than [`MAX_DIGITS`] digits.
+pub fn too_many_digits(key: &str, digits: usize) -> String {
+    format!(
+        "`{key}` has a number of {digits} digits, more than the {MAX_DIGITS} any key takes: \
+         write it with an exponent, as in `1.5e9`"
+    )
+}
+
+/// The unit a numeric key is given in, for messages.
+pub fn unit(key: Key) -> &'static str {
+    match key {
+        Key::FMIN | Key::FMAX => "Hz (steps/s)",
+        Key::TIMER_HZ => "Hz",
+        Key::ACCEL => "Hz/s",
+        _ => ROOMS
+            .iter()
+            .flat_map(|r| r.units)
+            .find(|(k, _)| *k == key)
+            .map_or("", |(_, unit)| unit),
+    }
+}
+
+/// A table's layout: one entry per step, or equal-time segments.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Layout {
+    /// One period per step: `[u16; len]`.
+    Steps,
+    /// `n` equal-time segments of (period, step count): `[(u16, u16); n]`.
+    Segments(u32),
+}

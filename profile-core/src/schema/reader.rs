@@ -1,0 +1,234 @@
+//! Reading values from arguments: the collector of diagnostics, the reader
+//! curves read their parameters through, and the motor's keys.
+
+use std::format;
+use std::string::{String, ToString};
+use std::vec::Vec;
+
+use super::suggest::{Hint, did_you_mean};
+use super::{Arg, Diagnostic, Value, quoted, unit};
+use crate::base::MAX_LEN;
+use crate::base::error::Error;
+use crate::base::key::Key;
+use crate::curves::Reader;
+use crate::motor::{MAX_CURVE_POINTS, Motor, TorqueCurve};
+
+/// Arguments being read, and what is wrong with them so far.
+pub(crate) struct Collector<'a, L> {
+    pub(crate) args: &'a [Arg<L>],
+    pub(crate) whole: &'a L,
+    /// Diagnostics with the index of the argument they concern, for source order.
+    pub(crate) diagnostics: Vec<(usize, Diagnostic<L>)>,
+}
+
+impl<L: Clone> Collector<'_, L> {
+    pub(crate) fn at_arg(&mut self, index: usize, key: bool, message: String) {
+        let arg = &self.args[index];
+        let loc = if key { &arg.key_loc } else { &arg.value_loc };
+        self.diagnostics.push((
+            index,
+            Diagnostic {
+                loc: loc.clone(),
+                message,
+            },
+        ));
+    }
+
+    pub(crate) fn at_whole(&mut self, message: String) {
+        self.diagnostics.push((
+            usize::MAX,
+            Diagnostic {
+                loc: self.whole.clone(),
+                message,
+            },
+        ));
+    }
+
+    pub(crate) fn find(&self, key: Key) -> Option<(usize, &Arg<L>)> {
+        self.args
+            .iter()
+            .enumerate()
+            .find(|(_, a)| a.key == key.name())
+    }
+
+    pub(crate) fn float(&mut self, key: Key) -> Option<f64> {
+        let (i, arg) = self.find(key)?;
+        match &arg.value {
+            Value::Int(v) => Some(*v as f64),
+            Value::Float(v) => Some(*v),
+            other => {
+                let unit = match unit(key) {
+                    "" => String::new(),
+                    unit => format!(" in {unit}"),
+                };
+                let message = format!("`{key}` expects a number{unit}, got {}", other.quoted());
+                self.at_arg(i, false, message);
+                None
+            }
+        }
+    }
+
+    pub(crate) fn int(&mut self, key: Key, expected: &str) -> Option<i128> {
+        let (i, arg) = self.find(key)?;
+        match &arg.value {
+            Value::Int(v) => Some(*v),
+            other => {
+                let message = format!("`{key}` expects {expected}, got {}", other.quoted());
+                self.at_arg(i, false, message);
+                None
+            }
+        }
+    }
+
+    /// An integer key with a range; `check` says what is wrong with a value.
+    pub(crate) fn ranged<T>(
+        &mut self,
+        key: Key,
+        expected: &str,
+        check: impl Fn(i128) -> Result<T, String>,
+    ) -> Option<T> {
+        let v = self.int(key, expected)?;
+        match check(v) {
+            Ok(t) => Some(t),
+            Err(message) => {
+                let (i, _) = self.find(key)?;
+                self.at_arg(i, false, message);
+                None
+            }
+        }
+    }
+
+    pub(crate) fn name<T: Copy>(&mut self, key: Key, choices: &[(&'static str, T)]) -> Option<T> {
+        let (i, arg) = self.find(key)?;
+        let names = quoted(choices.iter().map(|(n, _)| *n));
+        let message = match &arg.value {
+            Value::Name(n) => match choices.iter().find(|(c, _)| c == n) {
+                Some((_, v)) => return Some(*v),
+                None => {
+                    let hint = did_you_mean(n, choices.iter().map(|(c, _)| *c), Hint::After);
+                    format!("`{key}` must be one of {names} (got `{n}`){hint}")
+                }
+            },
+            other => format!("`{key}` expects one of {names}, got {}", other.quoted()),
+        };
+        self.at_arg(i, false, message);
+        None
+    }
+
+    pub(crate) fn finish(mut self) -> Vec<Diagnostic<L>> {
+        self.diagnostics.sort_by_key(|(i, _)| *i);
+        self.diagnostics.into_iter().map(|(_, d)| d).collect()
+    }
+}
+
+impl<L: Clone> Reader for Collector<'_, L> {
+    fn number(&mut self, key: Key) -> Option<f64> {
+        self.float(key)
+    }
+
+    fn len(&mut self) -> Option<u32> {
+        self.ranged(Key::LEN, "an integer number of entries", len_check)
+    }
+
+    fn has(&self, key: Key) -> bool {
+        self.find(key).is_some()
+    }
+}
+
+fn len_check(len: i128) -> Result<u32, String> {
+    if len < 1 {
+        Err(format!("`len` must be at least 1 (got {len})"))
+    } else if len > MAX_LEN as i128 {
+        Err(Error::LenTooLarge {
+            len: u64::try_from(len).unwrap_or(u64::MAX),
+            max: MAX_LEN,
+        }
+        .to_string())
+    } else {
+        Ok(len as u32)
+    }
+}
+
+/// The motor the arguments describe, if any; problems go to the collector.
+pub(crate) fn motor<L: Clone>(c: &mut Collector<'_, L>) -> Option<Motor> {
+    let described = Key::MOTOR_KEYS.iter().any(|k| c.find(*k).is_some());
+    if !described {
+        if let Some((i, arg)) = c.find(Key::MOTOR) {
+            let message = format!(
+                "`motor = {}` names no motor description: declare `[motors.{}]` in the \
+                 profiles file, or give the motor's keys (`step_angle`, `rotor_inertia`, \
+                 `torque_curve`, ...)",
+                arg.value, arg.value
+            );
+            c.at_arg(i, false, message);
+        }
+        return None;
+    }
+    let required = [Key::STEP_ANGLE, Key::ROTOR_INERTIA, Key::TORQUE_CURVE];
+    let missing: Vec<Key> = required
+        .iter()
+        .copied()
+        .filter(|k| c.find(*k).is_none())
+        .collect();
+    if !missing.is_empty() {
+        c.at_whole(format!(
+            "missing motor {} {}: a motor needs {}",
+            if missing.len() == 1 { "key" } else { "keys" },
+            quoted(missing.iter().map(|k| k.name())),
+            quoted(required.iter().map(|k| k.name()))
+        ));
+    }
+    let step_angle = c.float(Key::STEP_ANGLE);
+    let microsteps = c.ranged(
+        Key::MICROSTEPS,
+        "an integer number of microsteps per full step",
+        |v| {
+            u32::try_from(v)
+                .ok()
+                .filter(|m| (1..=1024).contains(m))
+                .ok_or_else(|| format!("`microsteps` must be from 1 to 1024 (got {v})"))
+        },
+    );
+    let rotor_inertia = c.float(Key::ROTOR_INERTIA);
+    let load_inertia = c.float(Key::LOAD_INERTIA);
+    let friction = c.float(Key::FRICTION);
+    let damping = c.float(Key::DAMPING);
+    let safety = c.float(Key::SAFETY);
+    let max_start_hz = c.float(Key::MAX_START_HZ);
+    let curve = match c.find(Key::TORQUE_CURVE) {
+        None => None,
+        Some((i, arg)) => match &arg.value {
+            Value::Points(points) => match TorqueCurve::new(points) {
+                Some(curve) => Some(curve),
+                None => {
+                    let message = format!(
+                        "`torque_curve` must have from 1 to {MAX_CURVE_POINTS} points (got {})",
+                        points.len()
+                    );
+                    c.at_arg(i, false, message);
+                    None
+                }
+            },
+            other => {
+                let message = format!(
+                    "`torque_curve` expects a list of (step frequency in Hz, torque in N·m) \
+                     points such as `[(0, 0.4), (1000, 0.3)]`, got {}",
+                    other.quoted()
+                );
+                c.at_arg(i, false, message);
+                None
+            }
+        },
+    };
+    Some(Motor {
+        step_angle: step_angle?,
+        microsteps: microsteps.unwrap_or(1),
+        rotor_inertia: rotor_inertia?,
+        load_inertia: load_inertia.unwrap_or(0.0),
+        torque_curve: curve?,
+        friction: friction.unwrap_or(0.0),
+        damping: damping.unwrap_or(0.0),
+        safety: safety.unwrap_or(1.0),
+        max_start_hz,
+    })
+}

@@ -1,0 +1,239 @@
+//! From a checked spec to integer periods, one per step: exact times,
+//! quantization, figures.
+
+use crate::base::error::Error;
+use crate::base::modes::Discretization;
+use crate::base::solve::edge_time;
+use crate::base::timer::TableWord;
+use crate::table::quantize::{Figures, Quantizer};
+use crate::table::spec::{CheckedSpec, Spec};
+
+impl CheckedSpec {
+    /// Computes the table into `out` and returns its figures.
+    ///
+    /// `out` must hold exactly [`len`](CheckedSpec::len) entries of the
+    /// spec's word. No allocation, no panic: the same bits as `period_table!`
+    /// on any target.
+    pub fn generate<W: TableWord>(&self, out: &mut [W]) -> Result<Figures, Error> {
+        if W::WORD != self.word() {
+            return Err(Error::WordMismatch {
+                expected: self.word(),
+                got: W::WORD,
+            });
+        }
+        if out.len() != self.len() as usize {
+            return Err(Error::BufferLength {
+                expected: self.len(),
+                got: out.len(),
+            });
+        }
+        self.for_each_period(|index, ticks| {
+            if let Some(slot) = out.get_mut(index as usize) {
+                *slot = W::from_ticks(ticks);
+            }
+        })
+    }
+
+    /// Computes the table's figures without storing it.
+    pub fn figures(&self) -> Result<Figures, Error> {
+        self.for_each_period(|_, _| {})
+    }
+
+    /// Calls `sink(k, t)` with the exact time `t` (in s) of every pulse edge
+    /// `k = 1..=len` of the continuous curve, before discretization: where
+    /// `N(t) = k` for curves in time; for `discretization = index`, the
+    /// running sum of the unrounded entries (the index curve has no other
+    /// time). Measures how far any table strays from the curve.
+    pub fn for_each_exact_edge<F: FnMut(u32, f64)>(&self, mut sink: F) -> Result<(), Error> {
+        let spec = self.spec();
+        if spec.discretization == Discretization::Index {
+            let modes = self.modes();
+            let scale = modes.scale();
+            let (mut k, mut t) = (0, 0.0);
+            // The f32 and integer modes keep their own arithmetic.
+            return spec.curve.index_entries(&modes, &mut |entry| {
+                k += 1;
+                t += entry.exact / scale;
+                sink(k, t);
+                Ok(())
+            });
+        }
+        let model = spec.curve.time_model();
+        for k in 1..=self.len() {
+            sink(k, edge_time(model.curve(), k)?);
+        }
+        Ok(())
+    }
+
+    /// Computes the table entry by entry, calling `sink(index, ticks)` for
+    /// each, and returns its figures. Stops at the first entry that does not fit.
+    pub fn for_each_period<F: FnMut(u32, u32)>(&self, mut sink: F) -> Result<Figures, Error> {
+        let spec = self.spec();
+        let modes = self.modes();
+        let scale = modes.scale();
+        let mut quantizer = Quantizer::new(spec);
+        if spec.discretization == Discretization::Index {
+            let mut k = 0;
+            spec.curve.index_entries(&modes, &mut |entry| {
+                let ticks = match entry.rounded {
+                    Some(ticks) => quantizer.push_rounded(k, ticks, entry.exact)?,
+                    None => quantizer.push(k, entry.exact, None)?,
+                };
+                sink(k, ticks);
+                k += 1;
+                Ok(())
+            })?;
+            return Ok(quantizer.finish());
+        }
+        let model = spec.curve.time_model();
+        let c = model.curve();
+        quantizer.reachable(c.freq(0.0), c.end_freq())?;
+        let mut t = 0.0;
+        for k in 0..self.len() {
+            let next = edge_time(c, k + 1)?;
+            let ticks = match spec.discretization {
+                Discretization::LeftEndpoint => quantizer.push(k, scale / c.freq(t), None)?,
+                _ => quantizer.push(k, (next - t) * scale, Some(next * scale))?,
+            };
+            sink(k, ticks);
+            t = next;
+        }
+        Ok(quantizer.finish())
+    }
+}
+
+impl Spec {
+    /// Checks the spec, computes the table into `out` and returns its figures
+    /// ([`CheckedSpec::generate`]).
+    ///
+    /// ```
+    /// use profile_core::{Curve, Discretization, Rounding, Arithmetic, Sigmoid, Spec, Timer};
+    ///
+    /// // The S-curve article's orange curve, as its C code computes it.
+    /// let spec = Spec::new(
+    ///     Curve::Sigmoid(Sigmoid { fmin: 500.0, fmax: 64_000.0, flexible: 8.0, len: 1000 }),
+    ///     Timer::new(10_000_000),
+    /// )
+    /// .with_discretization(Discretization::Index)
+    /// .with_rounding(Rounding::Truncate)
+    /// .with_arithmetic(Arithmetic::F32);
+    /// let mut period = [0u16; 1000];
+    /// spec.generate(&mut period)?;
+    /// assert_eq!((period[0], period[999]), (19183, 156));
+    /// # Ok::<(), profile_core::Error>(())
+    /// ```
+    pub fn generate<W: TableWord>(&self, out: &mut [W]) -> Result<Figures, Error> {
+        self.check()?.generate(out)
+    }
+
+    /// Checks the spec and computes the table's figures without storing it.
+    pub fn figures(&self) -> Result<Figures, Error> {
+        self.check()?.figures()
+    }
+
+    /// Checks the spec and calls `sink` with every exact pulse edge
+    /// ([`CheckedSpec::for_each_exact_edge`]).
+    pub fn for_each_exact_edge<F: FnMut(u32, f64)>(&self, sink: F) -> Result<(), Error> {
+        self.check()?.for_each_exact_edge(sink)
+    }
+
+    /// Checks the spec and computes the table entry by entry
+    /// ([`CheckedSpec::for_each_period`]).
+    pub fn for_each_period<F: FnMut(u32, u32)>(&self, sink: F) -> Result<Figures, Error> {
+        self.check()?.for_each_period(sink)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::base::modes::{Arithmetic, Rounding};
+    use crate::base::timer::{Timer, Word};
+    use crate::curves::{Curve, Sigmoid};
+
+    fn orange() -> Spec {
+        Spec::new(
+            Curve::Sigmoid(Sigmoid {
+                fmin: 500.0,
+                fmax: 64_000.0,
+                flexible: 8.0,
+                len: 1000,
+            }),
+            Timer::new(10_000_000),
+        )
+    }
+
+    #[test]
+    fn seed_orange_in_compatibility_mode() {
+        let spec = orange()
+            .with_discretization(Discretization::Index)
+            .with_rounding(Rounding::Truncate)
+            .with_arithmetic(Arithmetic::F32);
+        let fig = spec.figures().unwrap();
+        assert_eq!((fig.first_ticks, fig.last_ticks), (19183, 156));
+        // The seed says "about 1 s"; the table plays in 0.412 s.
+        assert!(
+            (fig.duration_s - 0.412).abs() < 0.0005,
+            "{}",
+            fig.duration_s
+        );
+        // Truncation drifts about -500 ticks over the ramp.
+        assert!(fig.total_error_ticks < -400.0 && fig.total_error_ticks > -600.0);
+    }
+
+    #[test]
+    fn default_mode_edges_within_half_a_tick() {
+        let fig = orange().figures().unwrap();
+        assert!(
+            fig.max_edge_error_ticks <= 0.5,
+            "{}",
+            fig.max_edge_error_ticks
+        );
+        // The exact total is len / mean frequency.
+        let exact = 1e7 * 1000.0 / 32_250.0;
+        assert!((fig.total_ticks as f64 - exact).abs() <= 0.5);
+    }
+
+    #[test]
+    fn overflow_names_the_entry_and_the_lowest_frequency() {
+        let spec = Spec::new(
+            Curve::Sigmoid(Sigmoid {
+                fmin: 100.0,
+                fmax: 1000.0,
+                flexible: 4.0,
+                len: 100,
+            }),
+            Timer::new(10_000_000),
+        )
+        .with_discretization(Discretization::Index);
+        let err = spec.figures().unwrap_err();
+        let Error::PeriodOverflow {
+            index, lowest_hz, ..
+        } = err
+        else {
+            panic!("{err:?}")
+        };
+        assert_eq!(index, 0);
+        assert!((lowest_hz - 152.59).abs() < 0.005);
+    }
+
+    #[test]
+    fn buffer_must_match_len_and_word() {
+        let mut short = [0u16; 10];
+        assert_eq!(
+            orange().generate(&mut short),
+            Err(Error::BufferLength {
+                expected: 1000,
+                got: 10
+            })
+        );
+        let mut wide = [0u32; 1000];
+        assert_eq!(
+            orange().generate(&mut wide),
+            Err(Error::WordMismatch {
+                expected: Word::U16,
+                got: Word::U32
+            })
+        );
+    }
+}

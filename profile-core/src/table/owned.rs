@@ -1,0 +1,101 @@
+//! Owned tables, for hosts: a table in its layout, with its spec and figures.
+
+use std::vec::Vec;
+
+use crate::base::error::Error;
+use crate::table::quantize::Figures;
+use crate::table::segments::SegmentFigures;
+use crate::table::spec::{CheckedSpec, Spec};
+
+/// A generated table with its spec and figures.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Table {
+    /// What the table was computed from.
+    pub spec: Spec,
+    /// The periods, in ticks; each fits `spec.timer.word`.
+    pub periods: Vec<u32>,
+    /// What the table amounts to.
+    pub figures: Figures,
+}
+
+/// A generated segment table (the exponential-ramp article's layout) with
+/// its spec and figures.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SegmentTable {
+    /// What the table was computed from.
+    pub spec: Spec,
+    /// `(period, step count)` per segment, in ticks and steps.
+    pub pairs: Vec<(u32, u32)>,
+    /// What the table amounts to.
+    pub figures: SegmentFigures,
+}
+
+/// A generated table in one of the two layouts.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Generated {
+    /// One period per step.
+    Steps(Table),
+    /// Equal-time segments of `(period, count)`.
+    Segments(SegmentTable),
+}
+
+impl Generated {
+    /// One period per step: the table itself, or the segments expanded. The
+    /// one place a segment table is expanded.
+    pub fn step_periods(&self) -> Vec<u32> {
+        match self {
+            Generated::Steps(t) => t.periods.clone(),
+            Generated::Segments(t) => t
+                .pairs
+                .iter()
+                .flat_map(|&(p, c)| core::iter::repeat_n(p, c as usize))
+                .collect(),
+        }
+    }
+
+    /// The spec the table was computed from.
+    pub fn spec(&self) -> &Spec {
+        match self {
+            Generated::Steps(t) => &t.spec,
+            Generated::Segments(t) => &t.spec,
+        }
+    }
+}
+
+impl CheckedSpec {
+    /// Computes the table into a new vector.
+    pub fn table(&self) -> Result<Table, Error> {
+        let mut periods = Vec::with_capacity(self.len() as usize);
+        let figures = self.for_each_period(|_, ticks| periods.push(ticks))?;
+        Ok(Table {
+            spec: *self.spec(),
+            periods,
+            figures,
+        })
+    }
+
+    /// Computes the ramp as `segments` equal-time segments into a new vector.
+    pub fn segment_table(&self, segments: u32) -> Result<SegmentTable, Error> {
+        self.check_segments(segments)?;
+        let mut pairs = Vec::with_capacity(segments as usize);
+        let figures =
+            self.for_each_segment(segments, |_, period, count| pairs.push((period, count)))?;
+        Ok(SegmentTable {
+            spec: *self.spec(),
+            pairs,
+            figures,
+        })
+    }
+}
+
+impl Spec {
+    /// Checks the spec and computes the table into a new vector.
+    pub fn table(&self) -> Result<Table, Error> {
+        self.check()?.table()
+    }
+
+    /// Checks the spec and computes it as `segments` equal-time segments.
+    pub fn segment_table(&self, segments: u32) -> Result<SegmentTable, Error> {
+        self.check()?.segment_table(segments)
+    }
+}

@@ -1,0 +1,220 @@
+//! The one quantizer: exact periods to integer ticks, checked against the
+//! word, with the figures of what was emitted. Per-step tables and segment
+//! tables round through it.
+
+use crate::base::error::Error;
+use crate::base::modes::Rounding;
+use crate::base::timer::Timer;
+use crate::table::spec::Spec;
+
+/// What a generated table amounts to. Times in seconds, frequencies in Hz
+/// (steps/s), acceleration in Hz/s, jerk in Hz/s².
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Figures {
+    /// Number of entries.
+    pub len: u32,
+    /// First entry, in ticks.
+    pub first_ticks: u32,
+    /// Last entry, in ticks.
+    pub last_ticks: u32,
+    /// Shortest entry, in ticks.
+    pub min_ticks: u32,
+    /// Longest entry, in ticks.
+    pub max_ticks: u32,
+    /// Sum of all entries, in ticks.
+    pub total_ticks: u64,
+    /// Ramp duration as played: `total_ticks * ticks_per_step / timer_hz`.
+    pub duration_s: f64,
+    /// Step frequency of the first entry.
+    pub start_hz: f64,
+    /// Step frequency of the last entry.
+    pub final_hz: f64,
+    /// Largest acceleration between consecutive entries of the integer table.
+    pub max_accel_hz_s: f64,
+    /// Largest jerk between consecutive accelerations of the integer table.
+    pub max_jerk_hz_s2: f64,
+    /// Largest distance of a pulse edge (a prefix sum of the table) from its
+    /// unrounded time under the chosen discretization, in ticks.
+    pub max_edge_error_ticks: f64,
+    /// Last pulse edge minus its unrounded time, in ticks (the drift).
+    pub total_error_ticks: f64,
+    /// Ticks left between the longest entry and the largest value the word holds.
+    pub overflow_margin_ticks: u32,
+}
+
+/// Turns exact periods into integers and keeps the figures.
+pub(crate) struct Quantizer {
+    rounding: Rounding,
+    timer: Timer,
+    scale: f64,
+    exact_edge: f64,
+    emitted: u64,
+    prev_ticks: u32,
+    prev_accel: f64,
+    figures: Figures,
+}
+
+impl Quantizer {
+    pub(crate) fn new(spec: &Spec) -> Self {
+        Quantizer {
+            rounding: spec.rounding,
+            timer: spec.timer,
+            scale: spec.timer.ticks_per_second(),
+            exact_edge: 0.0,
+            emitted: 0,
+            prev_ticks: 0,
+            prev_accel: 0.0,
+            figures: Figures {
+                len: 0,
+                first_ticks: 0,
+                last_ticks: 0,
+                min_ticks: u32::MAX,
+                max_ticks: 0,
+                total_ticks: 0,
+                duration_s: 0.0,
+                start_hz: 0.0,
+                final_hz: 0.0,
+                max_accel_hz_s: 0.0,
+                max_jerk_hz_s2: 0.0,
+                max_edge_error_ticks: 0.0,
+                total_error_ticks: 0.0,
+                overflow_margin_ticks: 0,
+            },
+        }
+    }
+
+    /// Quantizes entry `index`, whose exact length is `entry` ticks and whose
+    /// exact end is `edge` ticks from the start (the running sum of entries when
+    /// `None`), and records it in the figures.
+    pub(crate) fn push(&mut self, index: u32, entry: f64, edge: Option<f64>) -> Result<u32, Error> {
+        let ticks = self.round(index, entry, edge, 1)?;
+        self.record(index, ticks);
+        Ok(ticks)
+    }
+
+    /// Rounds an entry of `entry` exact ticks that is played `repeat` times
+    /// in a row, the last time ending `edge` ticks from the start (the
+    /// running sum of exact entries when `None`), and checks it against the
+    /// word. `diffuse` rounds the running sum: the entry's plays end as near
+    /// their exact end as whole ticks allow.
+    pub(crate) fn round(
+        &mut self,
+        index: u32,
+        entry: f64,
+        edge: Option<f64>,
+        repeat: u32,
+    ) -> Result<u32, Error> {
+        self.exact_edge = match edge {
+            Some(edge) => edge,
+            None => self.exact_edge + entry * repeat as f64,
+        };
+        let rounded = match self.rounding {
+            Rounding::Truncate => libm::trunc(entry),
+            Rounding::Nearest => libm::round(entry),
+            Rounding::Diffuse if repeat == 1 => libm::round(self.exact_edge) - self.emitted as f64,
+            Rounding::Diffuse => {
+                libm::round((self.exact_edge - self.emitted as f64) / repeat as f64)
+            }
+        };
+        let ticks = self.check(index, rounded, entry)?;
+        self.emitted += ticks as u64 * repeat as u64;
+        Ok(ticks)
+    }
+
+    /// Refuses, before any pulse time is solved, a curve whose every period
+    /// (between `1 / f_start` and `1 / f_end`) is too long for the word or
+    /// rounds to 0 ticks: entry 0 is then out of range whatever the curve.
+    pub(crate) fn reachable(&self, f_start: f64, f_end: f64) -> Result<(), Error> {
+        let (shortest, longest) = (self.scale / f_end, self.scale / f_start);
+        if shortest.is_nan() || shortest > self.timer.word.max() as f64 + 1.0 {
+            return Err(Error::PeriodOverflow {
+                index: 0,
+                ticks: longest,
+                word: self.timer.word,
+                timer_hz: self.timer.timer_hz,
+                lowest_hz: self.timer.lowest_frequency(),
+            });
+        }
+        if longest.is_nan() || longest < 0.5 {
+            return Err(Error::PeriodZero {
+                index: 0,
+                highest_hz: self.scale,
+            });
+        }
+        Ok(())
+    }
+
+    /// Records entry `index` already rounded by the curve's own arithmetic.
+    pub(crate) fn push_rounded(
+        &mut self,
+        index: u32,
+        ticks: u64,
+        entry: f64,
+    ) -> Result<u32, Error> {
+        self.exact_edge += entry;
+        let ticks = self.check(index, ticks as f64, entry)?;
+        self.emitted += ticks as u64;
+        self.record(index, ticks);
+        Ok(ticks)
+    }
+
+    /// The word's limits: a period that does not fit, or rounds to 0.
+    fn check(&self, index: u32, rounded: f64, entry: f64) -> Result<u32, Error> {
+        let max = self.timer.word.max();
+        if !rounded.is_finite() || rounded > max as f64 {
+            return Err(Error::PeriodOverflow {
+                index,
+                ticks: entry,
+                word: self.timer.word,
+                timer_hz: self.timer.timer_hz,
+                lowest_hz: self.timer.lowest_frequency(),
+            });
+        }
+        if rounded < 1.0 {
+            return Err(Error::PeriodZero {
+                index,
+                highest_hz: self.scale,
+            });
+        }
+        Ok(rounded as u32)
+    }
+
+    fn record(&mut self, index: u32, ticks: u32) {
+        let fig = &mut self.figures;
+        let error = self.emitted as f64 - self.exact_edge;
+        fig.max_edge_error_ticks = fig.max_edge_error_ticks.max(libm::fabs(error));
+        fig.total_error_ticks = error;
+        fig.min_ticks = fig.min_ticks.min(ticks);
+        fig.max_ticks = fig.max_ticks.max(ticks);
+        if index == 0 {
+            fig.first_ticks = ticks;
+        } else {
+            // Acceleration at the edge between the two entries: frequency change
+            // over the time between the entries' midpoints.
+            let f_prev = self.scale / self.prev_ticks as f64;
+            let f = self.scale / ticks as f64;
+            let dt = (self.prev_ticks as f64 + ticks as f64) / 2.0 / self.scale;
+            let accel = (f - f_prev) / dt;
+            fig.max_accel_hz_s = fig.max_accel_hz_s.max(libm::fabs(accel));
+            if index >= 2 {
+                // Consecutive accelerations sit one entry apart.
+                let jerk = (accel - self.prev_accel) / (self.prev_ticks as f64 / self.scale);
+                fig.max_jerk_hz_s2 = fig.max_jerk_hz_s2.max(libm::fabs(jerk));
+            }
+            self.prev_accel = accel;
+        }
+        self.prev_ticks = ticks;
+        fig.last_ticks = ticks;
+        fig.len = index + 1;
+    }
+
+    pub(crate) fn finish(mut self) -> Figures {
+        let fig = &mut self.figures;
+        fig.total_ticks = self.emitted;
+        fig.duration_s = self.emitted as f64 / self.scale;
+        fig.start_hz = self.scale / fig.first_ticks as f64;
+        fig.final_hz = self.scale / fig.last_ticks as f64;
+        fig.overflow_margin_ticks = self.timer.word.max() - fig.max_ticks;
+        self.figures
+    }
+}
