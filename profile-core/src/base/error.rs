@@ -343,6 +343,16 @@ impl fmt::Display for Error {
                 f,
                 "`{key}` overflows the integer `pulse()` code: `{expression}` is {value}, more than {max}"
             ),
+            _ => self.fmt_table(f),
+        }
+    }
+}
+
+impl Error {
+    /// The messages of the errors about lengths, layouts, the timer and the
+    /// table itself.
+    fn fmt_table(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
             Error::RampTooLong { key, steps, max } => write!(
                 f,
                 "`{key}` makes the ramp {steps:.0} steps long; at most {max} are allowed"
@@ -408,6 +418,8 @@ impl fmt::Display for Error {
                 "the pulse time of step {index} did not converge within {iterations} iterations: \
                  the curve's step count is not a finite number there"
             ),
+            // Written by `fmt`; every variant's message is pinned in the tests.
+            _ => Ok(()),
         }
     }
 }

@@ -1,7 +1,7 @@
 //! The exponential ramp of the exponential-ramp article.
 
 use super::check::{greater, len, positive, range};
-use super::{CurveKind, Length, Param, Reader};
+use super::kind::{CurveKind, Length, Param, Reader};
 use crate::base::error::Error;
 use crate::base::key::Key;
 use crate::base::solve::TimeCurve;

@@ -2,7 +2,7 @@
 //! at `accel`, falls at `jerk` to zero at `fmax`.
 
 use super::check::{positive, range};
-use super::{CurveKind, Length, Param, Reader};
+use super::kind::{CurveKind, Length, Param, Reader};
 use crate::base::error::Error;
 use crate::base::key::Key;
 use crate::base::solve::TimeCurve;

@@ -2,7 +2,7 @@
 //! the index, and in the article's integer arithmetic.
 
 use super::check::{len, positive, range};
-use super::{CurveKind, IndexEntry, Length, Modes, Param, Reader};
+use super::kind::{CurveKind, IndexEntry, Length, Modes, Param, Reader};
 use crate::base::error::Error;
 use crate::base::key::Key;
 use crate::base::modes::{Arithmetic, Discretization, Rounding};

@@ -1,7 +1,7 @@
 //! The sigmoid S-curve of the S-curve articles, over the step index and over time.
 
 use super::check::{len, positive, range};
-use super::{CurveKind, IndexEntry, Length, Modes, Param, Reader};
+use super::kind::{CurveKind, IndexEntry, Length, Modes, Param, Reader};
 use crate::base::error::Error;
 use crate::base::key::Key;
 use crate::base::math::{logistic, softplus_rise};

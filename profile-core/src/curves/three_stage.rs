@@ -1,7 +1,7 @@
 //! The exponential-linear-parabolic curve of Zeng, Hu and Hu.
 
 use super::check::{finite, greater, positive};
-use super::{CurveKind, Length, Param, Reader};
+use super::kind::{CurveKind, Length, Param, Reader};
 use crate::base::error::Error;
 use crate::base::key::Key;
 use crate::base::solve::TimeCurve;

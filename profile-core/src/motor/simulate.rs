@@ -307,6 +307,18 @@ struct Rotor {
 }
 
 impl Rotor {
+    /// Integrates `settle_s` with the command held at `cmd` and the holding
+    /// torque; returns the largest swing past `cmd`, in radians.
+    fn settle(&mut self, cmd: f64, holding: f64, settle_s: f64, dt_s: f64) -> f64 {
+        let n = substeps(settle_s, dt_s);
+        let h = if n > 0.0 { settle_s / n } else { 0.0 };
+        let mut overshoot = 0.0f64;
+        self.advance(cmd, holding, n as u64, h, |_, theta| {
+            overshoot = overshoot.max(theta - cmd);
+        });
+        overshoot
+    }
+
     fn lag(&self, cmd: f64) -> f64 {
         self.poles * (cmd - self.theta)
     }
@@ -346,6 +358,42 @@ impl Rotor {
     }
 }
 
+/// Refuses a run of more than [`MAX_STEPS`] integration steps, saying which
+/// step would fit if a stable one would.
+fn fits(
+    periods: &[u32],
+    per_second: f64,
+    options: &SimOptions,
+    max_dt_s: f64,
+) -> Result<(), SimError> {
+    let SimOptions { dt_s, settle_s } = *options;
+    let mut needed = substeps(settle_s, dt_s);
+    let mut total_s = settle_s;
+    for &p in periods {
+        let duration = p as f64 / per_second;
+        needed += substeps(duration, dt_s);
+        total_s += duration;
+    }
+    if needed > MAX_STEPS as f64 {
+        // Each interval takes at most one step more than its share of the
+        // time: `total / dt + intervals` steps fit when dt is at least this.
+        let intervals = periods.len() as f64 + 1.0;
+        let room = MAX_STEPS as f64 - intervals;
+        let fits = total_s / room;
+        return Err(SimError::TooManySteps {
+            needed: if needed < u64::MAX as f64 {
+                needed as u64
+            } else {
+                u64::MAX
+            },
+            max: MAX_STEPS,
+            fits_with_dt_s: (room > 0.0 && fits <= max_dt_s).then_some(fits),
+        });
+    }
+
+    Ok(())
+}
+
 /// Plays `periods` (a table of `spec`, or any pulse train in its timer's
 /// ticks) to `motor` and reports what the rotor did. See the module
 /// documentation for the model.
@@ -375,29 +423,7 @@ pub fn run(
         return Err(SimError::StepTooLong { dt_s, max_dt_s });
     }
     // Count the steps first: refuse a run that is too long before it starts.
-    let mut needed = substeps(settle_s, dt_s);
-    let mut total_s = settle_s;
-    for &p in periods {
-        let duration = p as f64 / per_second;
-        needed += substeps(duration, dt_s);
-        total_s += duration;
-    }
-    if needed > MAX_STEPS as f64 {
-        // Each interval takes at most one step more than its share of the
-        // time: `total / dt + intervals` steps fit when dt is at least this.
-        let intervals = periods.len() as f64 + 1.0;
-        let room = MAX_STEPS as f64 - intervals;
-        let fits = total_s / room;
-        return Err(SimError::TooManySteps {
-            needed: if needed < u64::MAX as f64 {
-                needed as u64
-            } else {
-                u64::MAX
-            },
-            max: MAX_STEPS,
-            fits_with_dt_s: (room > 0.0 && fits <= max_dt_s).then_some(fits),
-        });
-    }
+    fits(periods, per_second, options, max_dt_s)?;
 
     let step = motor.step_radians();
     // Electrical radians to table steps.
@@ -441,12 +467,7 @@ pub fn run(
     // Settle with the command fixed; the motor holds (0 Hz on the curve).
     let cmd = periods.len() as f64 * step;
     let holding = motor.torque_curve.torque(0.0);
-    let n = substeps(settle_s, dt_s);
-    let h = if n > 0.0 { settle_s / n } else { 0.0 };
-    let mut overshoot = 0.0f64;
-    rotor.advance(cmd, holding, n as u64, h, |_, theta| {
-        overshoot = overshoot.max(theta - cmd);
-    });
+    let overshoot = rotor.settle(cmd, holding, settle_s, dt_s);
     // Trapped: kinetic plus potential energy within the well below the
     // barrier at ±180° electrical, 2 T / poles above its bottom.
     let lag = rotor.lag(cmd);
@@ -455,13 +476,12 @@ pub fn run(
         0.5 * rotor.inertia * rotor.omega * rotor.omega + holding / poles * (1.0 - libm::cos(rel));
     let settled = energy < 2.0 * holding / poles;
     let turns = libm::round(lag / TAU);
-    let diverged = SimError::Diverged {
-        pulse: rotor.pulses,
-    };
     if !(rotor.theta.is_finite() && rotor.omega.is_finite() && max_lag.is_finite())
         || libm::fabs(turns) > (i64::MAX / 4 / 1024) as f64
     {
-        return Err(diverged);
+        return Err(SimError::Diverged {
+            pulse: rotor.pulses,
+        });
     }
     Ok(SimResult {
         lost_steps: turns as i64 * 4 * motor.microsteps as i64,

@@ -1,0 +1,153 @@
+//! The contract of a curve's module, and what it deals in.
+
+use super::Curve;
+use crate::base::error::Error;
+use crate::base::key::Key;
+use crate::base::modes::{Arithmetic, Discretization, Rounding};
+use crate::base::solve::TimeCurve;
+use crate::base::timer::Timer;
+
+/// How long a ramp is.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Length {
+    /// `len` entries, as given.
+    Given(u32),
+    /// The steps the curve takes to reach `fmax` (a real number), set by
+    /// `key`, and `extra` entries after them (one at `fmax` over the index
+    /// of a linear ramp).
+    Derived { steps: f64, key: Key, extra: u32 },
+}
+
+impl Length {
+    /// Entries of the table: `len`, or the steps rounded up plus `extra`.
+    /// Rounding forgives a relative 1e-9, so a ramp of 120.000000001 steps
+    /// is 120 entries. 0 for a non-finite or non-positive count.
+    pub(crate) fn entries(self) -> u32 {
+        let (steps, extra) = match self {
+            Length::Given(len) => return len,
+            Length::Derived { steps, extra, .. } => (steps, extra),
+        };
+        if !(steps.is_finite() && steps > 0.0) {
+            return 0;
+        }
+        let whole = libm::ceil(steps - 1e-9 * steps.max(1.0)).max(1.0) + extra as f64;
+        if whole > u32::MAX as f64 {
+            u32::MAX
+        } else {
+            whole as u32
+        }
+    }
+}
+
+/// What a curve's own checks may depend on besides its parameters.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Modes {
+    pub(crate) discretization: Discretization,
+    pub(crate) rounding: Rounding,
+    pub(crate) arithmetic: Arithmetic,
+    pub(crate) timer: Timer,
+    /// Entries of the table.
+    pub(crate) len: u32,
+}
+
+impl Modes {
+    /// Ticks per second of step period.
+    pub(crate) fn scale(&self) -> f64 {
+        self.timer.ticks_per_second()
+    }
+}
+
+/// An entry over the step index, in ticks: its unrounded value and, where
+/// the curve's arithmetic rounds by itself (an article's integer code), the
+/// rounded one.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct IndexEntry {
+    pub(crate) exact: f64,
+    pub(crate) rounded: Option<u64>,
+}
+
+/// A parameter's value as a curve describes it.
+#[cfg_attr(not(feature = "codegen"), allow(dead_code))]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Param {
+    /// A real number, written as Rust writes an `f64` (`64000`, `0.5`).
+    Number(f64),
+    /// A whole count (`len`).
+    Count(u32),
+}
+
+/// Where a curve reads its parameters from: the schema's arguments. Each
+/// call reports a wrong kind of value itself and returns `None` for it.
+#[cfg_attr(not(feature = "codegen"), allow(dead_code))]
+pub(crate) trait Reader {
+    /// A number, in the key's unit.
+    fn number(&mut self, key: Key) -> Option<f64>;
+    /// `len`, from 1 to `MAX_LEN`.
+    fn len(&mut self) -> Option<u32>;
+    /// Whether the key is given.
+    fn has(&self, key: Key) -> bool;
+}
+
+/// What every curve provides: the contract of its module.
+pub(crate) trait CurveKind: Copy {
+    /// The name in `curve = NAME`.
+    const NAME: &'static str;
+    /// The keys this curve takes besides the common ones, in documentation order.
+    const KEYS: &'static [Key];
+    /// Those it requires (the common `timer_hz` aside).
+    const REQUIRED: &'static [Key];
+    /// Two keys of which exactly one is given: each sets the ramp's length.
+    const ONE_OF: Option<[Key; 2]> = None;
+    /// Units of the keys this curve alone takes, for messages.
+    const UNITS: &'static [(Key, &'static str)] = &[];
+    /// Arithmetic besides `f64` the curve computes in, each with where it
+    /// applies, as messages say it.
+    const ARITHMETIC: &'static [(Arithmetic, &'static str)] = &[];
+    /// Whether the curve is defined over the step index (`discretization = index`).
+    const INDEX: bool = false;
+    /// The curve's model in time, for `exact` and `left_endpoint`.
+    type Time: TimeCurve;
+
+    /// The model in time of a checked curve.
+    fn time(&self) -> Self::Time;
+    /// The start and end frequencies, in Hz.
+    fn frequencies(&self) -> (f64, f64);
+    /// How long the ramp is, over the index or in time.
+    fn length(&self, index: bool) -> Length;
+    /// Checks the parameters, in the order messages should come.
+    fn check(&self, index: bool) -> Result<(), Error>;
+    /// Checks what the curve's own arithmetic needs, once the common keys
+    /// and the combination of modes are known to be right.
+    fn check_modes(&self, _modes: &Modes) -> Result<(), Error> {
+        Ok(())
+    }
+    /// Calls `sink` with every entry over the step index (only called where
+    /// [`CurveKind::INDEX`] holds).
+    fn index_entries(
+        &self,
+        _modes: &Modes,
+        _sink: &mut dyn FnMut(IndexEntry) -> Result<(), Error>,
+    ) -> Result<(), Error> {
+        Ok(())
+    }
+    /// Reads the parameters; `None` when one is missing or wrong (the
+    /// reader has said why).
+    #[cfg_attr(not(feature = "codegen"), allow(dead_code))]
+    fn read(r: &mut dyn Reader) -> Option<Self>;
+    /// The parameters as a user writes them, in documentation order.
+    #[cfg_attr(not(feature = "codegen"), allow(dead_code))]
+    fn describe(&self, out: &mut dyn FnMut(Key, Param));
+}
+
+/// A curve as the schema sees it: its name, keys and how to read it.
+#[cfg_attr(not(feature = "codegen"), allow(dead_code))]
+pub(crate) struct Room {
+    pub(crate) name: &'static str,
+    pub(crate) keys: &'static [Key],
+    pub(crate) required: &'static [Key],
+    pub(crate) one_of: Option<[Key; 2]>,
+    pub(crate) units: &'static [(Key, &'static str)],
+    pub(crate) arithmetic: &'static [(Arithmetic, &'static str)],
+    pub(crate) index: bool,
+    pub(crate) read: fn(&mut dyn Reader) -> Option<Curve>,
+}
