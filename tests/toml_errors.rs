@@ -11,9 +11,12 @@
 //!
 //! and review `git diff tests/toml_errors`.
 
+mod common;
+
 use std::fs;
 use std::path::{Path, PathBuf};
 
+use common::golden;
 use profile_core::build::Profiles;
 
 /// Cases the issue asks for; the directory may hold more.
@@ -77,10 +80,6 @@ fn dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/toml_errors")
 }
 
-fn update() -> bool {
-    std::env::var_os("UPDATE_GOLDEN").is_some_and(|v| v == "1")
-}
-
 /// Every case: its name and the message it produces.
 fn cases() -> Vec<(String, String)> {
     let mut names: Vec<String> = fs::read_dir(dir())
@@ -122,20 +121,8 @@ fn messages_match_their_golden_files() {
     let mut failures = Vec::new();
     for (name, actual) in &cases {
         let path = dir().join(format!("{name}.txt"));
-        if update() {
-            fs::write(&path, actual).unwrap();
-            continue;
-        }
-        match fs::read_to_string(&path) {
-            Ok(expected) if expected.replace("\r\n", "\n") == *actual => {}
-            Ok(expected) => failures.push(format!(
-                "--- {name}: expected ({})\n{expected}--- {name}: actual\n{actual}",
-                path.display()
-            )),
-            Err(_) => failures.push(format!(
-                "--- {name}: no golden file {}; actual\n{actual}",
-                path.display()
-            )),
+        if let Err(difference) = golden::text(&path, name, actual) {
+            failures.push(difference);
         }
     }
     // No stale expectation without its input.

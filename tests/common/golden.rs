@@ -1,4 +1,5 @@
-//! Golden files of tables: reading, writing (`UPDATE_GOLDEN=1`) and comparing.
+//! Golden files: the one bless mechanism (`UPDATE_GOLDEN=1` writes, otherwise
+//! compare) for every golden file of the tests, and the format of tables.
 //!
 //! A golden file starts with `# key = value` lines (a table's parameters, then
 //! its figures) followed by its entries: periods in ticks, right-aligned, ten
@@ -8,9 +9,46 @@
 
 use std::fmt::Write as _;
 use std::fs;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use stepper_profiles::{Curve, ExponentialExtent, Figures, LinearExtent, Spec};
+
+/// Whether golden files are being blessed: `UPDATE_GOLDEN=1`.
+pub fn blessing() -> bool {
+    std::env::var_os("UPDATE_GOLDEN").is_some_and(|v| v == "1")
+}
+
+/// Writes a golden file, its folder created: beside, then renamed, so that
+/// tests reading the file meanwhile see the old text or the new, never half.
+pub fn write(path: &Path, text: &str) {
+    fs::create_dir_all(path.parent().expect("a golden directory"))
+        .unwrap_or_else(|e| panic!("cannot create the folder of {}: {e}", path.display()));
+    let partial = path.with_extension("partial");
+    fs::write(&partial, text)
+        .and_then(|()| fs::rename(&partial, path))
+        .unwrap_or_else(|e| panic!("cannot write {}: {e}", path.display()));
+}
+
+/// A golden text file: with `UPDATE_GOLDEN=1` written with `actual`;
+/// otherwise compared with it, a difference described as the expected and
+/// the actual text.
+pub fn text(path: &Path, name: &str, actual: &str) -> Result<(), String> {
+    if blessing() {
+        write(path, actual);
+        return Ok(());
+    }
+    match fs::read_to_string(path) {
+        Ok(expected) if expected.replace("\r\n", "\n") == actual => Ok(()),
+        Ok(expected) => Err(format!(
+            "--- {name}: expected ({})\n{expected}--- {name}: actual\n{actual}",
+            path.display()
+        )),
+        Err(_) => Err(format!(
+            "--- {name}: no golden file {}; actual\n{actual}",
+            path.display()
+        )),
+    }
+}
 
 /// Most mismatching entries listed per file.
 const SHOWN_PER_FILE: usize = 20;
@@ -60,19 +98,11 @@ impl Folder {
         &self,
         tables: impl IntoIterator<Item = (&'a str, Header, Body)>,
     ) -> Vec<String> {
-        let update = std::env::var_os("UPDATE_GOLDEN").is_some_and(|v| v == "1");
         let mut problems = Vec::new();
         for (file, header, body) in tables {
             let path = self.path(file);
-            if update {
-                fs::create_dir_all(path.parent().expect("a golden directory"))
-                    .unwrap_or_else(|e| panic!("can create {}: {e:?}", self.dir));
-                // Write beside, then rename: tests reading the file meanwhile see
-                // the old table or the new one, never half of one.
-                let partial = path.with_extension("txt.partial");
-                fs::write(&partial, render(&header, &body))
-                    .and_then(|()| fs::rename(&partial, &path))
-                    .unwrap_or_else(|e| panic!("cannot write {}: {e}", path.display()));
+            if blessing() {
+                write(&path, &render(&header, &body));
                 continue;
             }
             let text = match fs::read_to_string(&path) {

@@ -95,6 +95,15 @@ impl Report {
     pub fn equal(&mut self, what: &str, got: u64, want: u64) {
         self.check(got == want, what, got, want);
     }
+
+    /// Records `ok` for one figure of `what`; prints both when it fails.
+    pub fn figure(&mut self, ok: bool, what: &str, figure: &str, got: u64, want: u64) {
+        self.checks += 1;
+        if !ok {
+            self.failures += 1;
+            hprintln!("FAIL {} ({}): got {}, expected {}", what, figure, got, want);
+        }
+    }
 }
 
 #[entry]

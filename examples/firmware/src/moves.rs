@@ -279,302 +279,302 @@ fn floored(periods: &[u16], floor: u16) -> u64 {
     periods.iter().map(|&p| u64::from(p.max(floor))).sum()
 }
 
-/// Plays every move and checks the figures.
-pub fn run(timer: &mut SYST, report: &mut Report) {
-    hprintln!("moves (ticks of each table's timer):");
+/// What a move must amount to.
+struct Expect {
+    /// Steps played, at least and at most.
+    steps: (u32, u32),
+    /// Sum of the periods, when it follows from the emitted figures.
+    ticks: Option<u64>,
+    /// The top speed's period, when it is known.
+    top: Option<u16>,
+    /// The period the move ends at: the deceleration ramp's slowest entry.
+    end: u16,
+    /// Whether the move stops, and so must enter the ramp as the contract says.
+    stops: bool,
+}
 
+/// A move and what it must amount to.
+struct Scenario<'a> {
+    play: Move<'a>,
+    expect: Expect,
+}
+
+impl Expect {
+    /// Exactly `steps` steps of `ticks` ticks, ending at rest at `end`.
+    fn exact(steps: u32, ticks: u64, end: u16) -> Self {
+        Expect {
+            steps: (steps, steps),
+            ticks: Some(ticks),
+            top: None,
+            end,
+            stops: false,
+        }
+    }
+}
+
+/// Every move the firmware plays, with what it must amount to: a
+/// trapezoid, a triangle, stops, a held ramp, the diffused default table,
+/// an asymmetric move, cruise changes and a segment table.
+fn scenarios() -> [Scenario<'static>; 11] {
     // Monotone tables first: the C-compatible orange S-curve (truncated, so
-    // its periods never rise) played as a trapezoid and as a triangle.
-    let o = &sigmoid_orange::PERIODS;
-    let len = sigmoid_orange::LEN as u32;
-    let top = sigmoid_orange::LAST_TICKS as u16;
-    let rest = sigmoid_orange::FIRST_TICKS as u16;
+    // its periods never rise).
+    let o: &'static [u16] = &sigmoid_orange::PERIODS;
+    let (len, top, rest) = (
+        sigmoid_orange::LEN as u32,
+        sigmoid_orange::LAST_TICKS as u16,
+        sigmoid_orange::FIRST_TICKS as u16,
+    );
     let orange = Table::Steps(o, 1);
-    let cruise = 3000;
-    let p = play(
-        &Move {
-            name: "trapezoid (sigmoid_orange)",
-            accel: orange,
-            decel: orange,
-            steps: 2 * len + cruise,
-            events: &[],
-        },
-        timer,
-        report,
-    );
-    report.equal("trapezoid steps", p.steps.into(), (2 * len + cruise).into());
-    report.equal(
-        "trapezoid ticks = 2 TOTAL_TICKS + cruise LAST_TICKS",
-        p.ticks,
-        2 * sigmoid_orange::TOTAL_TICKS + u64::from(cruise) * u64::from(top),
-    );
-    report.equal("trapezoid top speed", p.min.into(), top.into());
-    report.equal("trapezoid ends at rest", p.last.into(), rest.into());
-
-    // Triangle: too short to reach the top; the ramps cross in the middle.
-    let half = 300;
-    let p = play(
-        &Move {
-            name: "triangle (sigmoid_orange)",
-            accel: orange,
-            decel: orange,
-            steps: 2 * half + 1,
-            events: &[],
-        },
-        timer,
-        report,
-    );
-    report.equal("triangle steps", p.steps.into(), (2 * half + 1).into());
-    report.equal(
-        "triangle ticks",
-        p.ticks,
-        2 * sum(&o[..half as usize]) + u64::from(o[half as usize]),
-    );
-    report.equal("triangle top speed", p.min.into(), o[half as usize].into());
-    report.equal("triangle ends at rest", p.last.into(), rest.into());
-
-    // Stop while accelerating: down the ramp from the speed reached.
-    let at = 300;
-    let p = play(
-        &Move {
-            name: "stop while accelerating (orange)",
-            accel: orange,
-            decel: orange,
-            steps: 100_000,
-            events: &[(at, Event::Stop)],
-        },
-        timer,
-        report,
-    );
-    let reached = o[at as usize - 1];
-    let down = o.iter().rposition(|&x| x >= reached).unwrap_or(0) as u32 + 1;
-    report.equal("stop: steps", p.steps.into(), (at + down).into());
-    report.equal(
-        "stop: ticks",
-        p.ticks,
-        sum(&o[..at as usize]) + sum(&o[..down as usize]),
-    );
-    report.equal("stop ends at rest", p.last.into(), rest.into());
-    report.equal("stop enters the ramp", p.stop_ok.into(), 1);
-
-    // Held ramp: every entry of the orange table for 4 steps (a divider).
-    let hold = 4;
-    let held = Table::Steps(o, hold);
-    let cruise = 1000;
-    let ramp = len * hold;
-    let p = play(
-        &Move {
-            name: "held x4 (sigmoid_orange)",
-            accel: held,
-            decel: held,
-            steps: 2 * ramp + cruise,
-            events: &[],
-        },
-        timer,
-        report,
-    );
-    report.equal("held steps", p.steps.into(), (2 * ramp + cruise).into());
-    report.equal(
-        "held ticks = 2 hold TOTAL_TICKS + cruise LAST_TICKS",
-        p.ticks,
-        2 * u64::from(hold) * sigmoid_orange::TOTAL_TICKS + u64::from(cruise) * u64::from(top),
-    );
-    report.equal("held ends at rest", p.last.into(), rest.into());
-
+    let mv = |name, accel, decel, steps, events| Move {
+        name,
+        accel,
+        decel,
+        steps,
+        events,
+    };
     // The default mode: diffused rounding keeps every pulse edge within half
     // a tick, so the table is not monotone near the top (156, 157, 156, ...);
     // the player still plays it exactly as written.
-    let a = &sigmoid_exact::PERIODS;
-    let len = sigmoid_exact::LEN as u32;
-    let top = sigmoid_exact::LAST_TICKS as u16;
-    let rest = sigmoid_exact::FIRST_TICKS as u16;
+    let a: &'static [u16] = &sigmoid_exact::PERIODS;
+    let (a_len, a_top, a_rest) = (
+        sigmoid_exact::LEN as u32,
+        sigmoid_exact::LAST_TICKS as u16,
+        sigmoid_exact::FIRST_TICKS as u16,
+    );
+    let a_ticks = sigmoid_exact::TOTAL_TICKS;
     let exact = Table::Steps(a, 1);
-    let ramp_ticks = sigmoid_exact::TOTAL_TICKS;
-    report.equal("sigmoid_exact ramp = TOTAL_TICKS", sum(a), ramp_ticks);
-    let cruise = 3000;
-    let p = play(
-        &Move {
-            name: "trapezoid (sigmoid_exact)",
-            accel: exact,
-            decel: exact,
-            steps: 2 * len + cruise,
-            events: &[],
-        },
-        timer,
-        report,
-    );
-    report.equal("trapezoid steps", p.steps.into(), (2 * len + cruise).into());
-    report.equal(
-        "trapezoid ticks = 2 TOTAL_TICKS + cruise LAST_TICKS",
-        p.ticks,
-        2 * ramp_ticks + u64::from(cruise) * u64::from(top),
-    );
-    report.equal("trapezoid ends at rest", p.last.into(), rest.into());
-
-    // Asymmetric: S-curve up, constant deceleration (DECEL) down.
-    let steps = 2000;
-    let d_top = DECEL[DECEL.len() - 1];
-    let p = play(
-        &Move {
-            name: "asymmetric (sigmoid_exact, DECEL)",
-            accel: exact,
-            decel: Table::Steps(&DECEL, 1),
-            steps,
-            events: &[],
-        },
-        timer,
-        report,
-    );
-    // Up the S-curve no faster than DECEL's fastest entry, cruise, then
-    // DECEL backwards.
-    let d_min = DECEL.iter().copied().min().unwrap_or(0);
-    let d_len = DECEL.len() as u32;
-    let expected = match a.iter().position(|&x| x < d_min) {
+    // Stop while accelerating the orange ramp: down from the speed reached.
+    let (at, half, hold) = (300u32, 300u32, 4u32);
+    let reached = o[at as usize - 1];
+    let down = o.iter().rposition(|&x| x >= reached).unwrap_or(0) as u32 + 1;
+    // Asymmetric: up the S-curve no faster than DECEL's fastest entry, cruise,
+    // then DECEL backwards.
+    let (d_min, d_len) = (DECEL.iter().copied().min().unwrap_or(0), DECEL.len() as u32);
+    let asymmetric = match a.iter().position(|&x| x < d_min) {
         Some(cap) => {
-            sum(&a[..cap]) + u64::from(steps - cap as u32 - d_len) * u64::from(d_top) + sum(&DECEL)
+            sum(&a[..cap])
+                + u64::from(2000 - cap as u32 - d_len) * u64::from(DECEL[DECEL.len() - 1])
+                + sum(&DECEL)
         }
-        None => sum(a) + u64::from(steps - len - d_len) * u64::from(top) + floored(&DECEL, top),
+        None => {
+            sum(a) + u64::from(2000 - a_len - d_len) * u64::from(a_top) + floored(&DECEL, a_top)
+        }
     };
-    report.equal("asymmetric steps", p.steps.into(), steps.into());
-    report.equal("asymmetric ticks", p.ticks, expected);
-    report.equal("asymmetric ends at rest", p.last.into(), DECEL[0].into());
-
-    // Stop while cruising: down the whole ramp from the top.
-    let at = 2500;
-    let p = play(
-        &Move {
-            name: "stop while cruising (exact)",
-            accel: exact,
-            decel: exact,
-            steps: 100_000,
-            events: &[(at, Event::Stop)],
-        },
-        timer,
-        report,
-    );
-    report.equal(
-        "stop while cruising: steps",
-        p.steps.into(),
-        (at + len).into(),
-    );
-    report.equal(
-        "stop while cruising: ticks",
-        p.ticks,
-        2 * ramp_ticks + u64::from(at - len) * u64::from(top),
-    );
-    report.equal(
-        "stop while cruising ends at rest",
-        p.last.into(),
-        rest.into(),
-    );
-    report.equal("stop while cruising enters the ramp", p.stop_ok.into(), 1);
-
-    // Stop while accelerating, where the table is not monotone: the player
-    // may enter the ramp at any entry that qualifies (the model checks it).
-    let at = 400;
-    let p = play(
-        &Move {
-            name: "stop while accelerating (exact)",
-            accel: exact,
-            decel: exact,
-            steps: 100_000,
-            events: &[(at, Event::Stop)],
-        },
-        timer,
-        report,
-    );
-    report.check(
-        p.steps > at && p.steps <= at + len,
-        "stop while accelerating: steps",
-        p.steps.into(),
-        (at + len).into(),
-    );
-    report.equal(
-        "stop while accelerating ends at rest",
-        p.last.into(),
-        rest.into(),
-    );
-    report.equal(
-        "stop while accelerating enters the ramp",
-        p.stop_ok.into(),
-        1,
-    );
-
-    // Cruise changes: slow down to entry 500 while cruising, then back up.
+    // Cruise changes: slow down to entry 500 while cruising, then back up:
+    // up, top, walk down 500 entries, cruise at entry 500, walk up, top, down.
     let (slow, at_slow, at_fast, steps) = (500u32, 1500u32, 3000u32, 6000u32);
-    let p = play(
-        &Move {
-            name: "cruise changes (999 -> 500 -> 999)",
-            accel: exact,
-            decel: exact,
-            steps,
-            events: &[
-                (at_slow, Event::Cruise(slow)),
-                (at_fast, Event::Cruise(len - 1)),
-            ],
-        },
-        timer,
-        report,
-    );
-    // Up, top, walk down 500 entries, cruise at entry 500, walk up, top, down.
-    let walk = len - slow;
+    let walk = a_len - slow;
     let at_500 = at_fast - at_slow - walk;
-    let at_top = steps - 2 * len - 2 * walk - at_500;
-    report.equal("cruise changes: steps", p.steps.into(), steps.into());
-    report.equal(
-        "cruise changes: ticks",
-        p.ticks,
-        2 * ramp_ticks
-            + 2 * sum(&a[slow as usize..])
-            + u64::from(at_500) * u64::from(a[slow as usize])
-            + u64::from(at_top) * u64::from(top),
-    );
-    report.equal("cruise changes end at rest", p.last.into(), rest.into());
-
+    let at_top = steps - 2 * a_len - 2 * walk - at_500;
+    let cruises = 2 * a_ticks
+        + 2 * sum(&a[slow as usize..])
+        + u64::from(at_500) * u64::from(a[slow as usize])
+        + u64::from(at_top) * u64::from(a_top);
     // Segment table: 8 (period, count) pairs for the 120-step exponential ramp.
-    let pairs = &exponential_segments::SEGMENTS;
+    let pairs: &'static [(u16, u16)] = &exponential_segments::SEGMENTS;
     let segments = Table::Segments(pairs);
-    let ramp = exponential_segments::LEN as u32;
-    let cruise = 200;
-    let p = play(
-        &Move {
-            name: "segments (exponential_segments)",
-            accel: segments,
-            decel: segments,
-            steps: 2 * ramp + cruise,
-            events: &[],
+    let s_len = exponential_segments::LEN as u32;
+    let fastest = pairs[exponential_segments::SEGMENT_COUNT - 1].0;
+    [
+        Scenario {
+            play: mv(
+                "trapezoid (sigmoid_orange)",
+                orange,
+                orange,
+                2 * len + 3000,
+                &[],
+            ),
+            expect: Expect {
+                top: Some(top),
+                ..Expect::exact(
+                    2 * len + 3000,
+                    2 * sigmoid_orange::TOTAL_TICKS + 3000 * u64::from(top),
+                    rest,
+                )
+            },
         },
-        timer,
-        report,
-    );
-    let fastest = u64::from(pairs[exponential_segments::SEGMENT_COUNT - 1].0);
-    report.equal("segments steps", p.steps.into(), (2 * ramp + cruise).into());
-    report.equal(
-        "segments ticks = 2 TOTAL_TICKS + cruise last period",
-        p.ticks,
-        2 * exponential_segments::TOTAL_TICKS + u64::from(cruise) * fastest,
-    );
-    report.equal("segments ends at rest", p.last.into(), pairs[0].0.into());
-
-    // Segment table, stopped while accelerating.
-    let p = play(
-        &Move {
-            name: "segments, stop while accelerating",
-            accel: segments,
-            decel: segments,
-            steps: 10_000,
-            events: &[(60, Event::Stop)],
+        // Too short to reach the top: the ramps cross in the middle.
+        Scenario {
+            play: mv(
+                "triangle (sigmoid_orange)",
+                orange,
+                orange,
+                2 * half + 1,
+                &[],
+            ),
+            expect: Expect {
+                top: Some(o[half as usize]),
+                ..Expect::exact(
+                    2 * half + 1,
+                    2 * sum(&o[..half as usize]) + u64::from(o[half as usize]),
+                    rest,
+                )
+            },
         },
-        timer,
-        report,
-    );
-    report.equal(
-        "segments stop ends at rest",
-        p.last.into(),
-        pairs[0].0.into(),
-    );
-    report.equal("segments stop enters the ramp", p.stop_ok.into(), 1);
+        Scenario {
+            play: mv(
+                "stop while accelerating (orange)",
+                orange,
+                orange,
+                100_000,
+                &[(300, Event::Stop)],
+            ),
+            expect: Expect {
+                stops: true,
+                ..Expect::exact(
+                    at + down,
+                    sum(&o[..at as usize]) + sum(&o[..down as usize]),
+                    rest,
+                )
+            },
+        },
+        // Every entry of the orange table held for 4 steps (a divider).
+        Scenario {
+            play: mv(
+                "held x4 (sigmoid_orange)",
+                Table::Steps(o, hold),
+                Table::Steps(o, hold),
+                2 * len * hold + 1000,
+                &[],
+            ),
+            expect: Expect::exact(
+                2 * len * hold + 1000,
+                2 * u64::from(hold) * sigmoid_orange::TOTAL_TICKS + 1000 * u64::from(top),
+                rest,
+            ),
+        },
+        Scenario {
+            play: mv(
+                "trapezoid (sigmoid_exact)",
+                exact,
+                exact,
+                2 * a_len + 3000,
+                &[],
+            ),
+            expect: Expect::exact(
+                2 * a_len + 3000,
+                2 * a_ticks + 3000 * u64::from(a_top),
+                a_rest,
+            ),
+        },
+        // S-curve up, constant deceleration (DECEL) down.
+        Scenario {
+            play: mv(
+                "asymmetric (sigmoid_exact, DECEL)",
+                exact,
+                Table::Steps(&DECEL, 1),
+                2000,
+                &[],
+            ),
+            expect: Expect::exact(2000, asymmetric, DECEL[0]),
+        },
+        // Stop while cruising: down the whole ramp from the top.
+        Scenario {
+            play: mv(
+                "stop while cruising (exact)",
+                exact,
+                exact,
+                100_000,
+                &[(2500, Event::Stop)],
+            ),
+            expect: Expect {
+                stops: true,
+                ..Expect::exact(
+                    2500 + a_len,
+                    2 * a_ticks + u64::from(2500 - a_len) * u64::from(a_top),
+                    a_rest,
+                )
+            },
+        },
+        // Stop while accelerating, where the table is not monotone: the player
+        // may enter the ramp at any entry that qualifies (the model checks it).
+        Scenario {
+            play: mv(
+                "stop while accelerating (exact)",
+                exact,
+                exact,
+                100_000,
+                &[(400, Event::Stop)],
+            ),
+            expect: Expect {
+                steps: (401, 400 + a_len),
+                ticks: None,
+                top: None,
+                end: a_rest,
+                stops: true,
+            },
+        },
+        Scenario {
+            play: mv(
+                "cruise changes (999 -> 500 -> 999)",
+                exact,
+                exact,
+                steps,
+                &[(1500, Event::Cruise(500)), (3000, Event::Cruise(999))],
+            ),
+            expect: Expect::exact(steps, cruises, a_rest),
+        },
+        Scenario {
+            play: mv(
+                "segments (exponential_segments)",
+                segments,
+                segments,
+                2 * s_len + 200,
+                &[],
+            ),
+            expect: Expect::exact(
+                2 * s_len + 200,
+                2 * exponential_segments::TOTAL_TICKS + 200 * u64::from(fastest),
+                pairs[0].0,
+            ),
+        },
+        Scenario {
+            play: mv(
+                "segments, stop while accelerating",
+                segments,
+                segments,
+                10_000,
+                &[(60, Event::Stop)],
+            ),
+            expect: Expect {
+                steps: (61, 10_000),
+                ticks: None,
+                top: None,
+                end: pairs[0].0,
+                stops: true,
+            },
+        },
+    ]
+}
 
+/// Plays every move and checks what it amounts to.
+pub fn run(timer: &mut SYST, report: &mut Report) {
+    hprintln!("moves (ticks of each table's timer):");
+    report.equal(
+        "sigmoid_exact ramp = TOTAL_TICKS",
+        sum(&sigmoid_exact::PERIODS),
+        sigmoid_exact::TOTAL_TICKS,
+    );
+    for Scenario { play: m, expect } in scenarios() {
+        let p = play(&m, timer, report);
+        let (lo, hi) = expect.steps;
+        report.check(
+            (lo..=hi).contains(&p.steps),
+            m.name,
+            p.steps.into(),
+            hi.into(),
+        );
+        if let Some(ticks) = expect.ticks {
+            report.equal(m.name, p.ticks, ticks);
+        }
+        if let Some(top) = expect.top {
+            report.equal(m.name, p.min.into(), top.into());
+        }
+        report.equal(m.name, p.last.into(), expect.end.into());
+        if expect.stops {
+            report.equal(m.name, p.stop_ok.into(), 1);
+        }
+    }
     // Tables from both front ends agree.
     report.equal(
         "period_table! == include_profiles! (sigmoid_orange)",
