@@ -4,7 +4,7 @@
 //! whole `-500` (a `Span` cannot be joined on stable Rust).
 
 use proc_macro2::TokenStream;
-use profile_core::schema::{self as params, Arg, MAX_DIGITS, Value};
+use profile_core::schema::{self, Arg, MAX_DIGITS, Value};
 use quote::ToTokens;
 use syn::parse::{Parse, ParseStream, Parser};
 use syn::punctuated::Punctuated;
@@ -103,7 +103,7 @@ fn digits(key: &Ident, text: &str, loc: &Loc) -> syn::Result<()> {
     if count > MAX_DIGITS {
         Err(syn::Error::new_spanned(
             loc,
-            params::too_many_digits(&key.to_string(), count),
+            schema::too_many_digits(&key.to_string(), count),
         ))
     } else {
         Ok(())
