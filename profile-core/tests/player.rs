@@ -260,3 +260,205 @@ fn diffused_tables_play_exactly() {
         2 * figures.total_ticks + cruise as u64 * table[999] as u64
     );
 }
+
+mod common;
+
+use common::reference::Reference;
+use profile_core::TableWord;
+
+/// What a random operation sequence does to a player.
+#[derive(Clone, Debug)]
+enum Op {
+    Start(u32),
+    Play(u32),
+    Stop,
+    Cruise(u32),
+}
+
+/// A table of any shape: falling with ties (as generated), or arbitrary.
+fn any_table(max_len: usize) -> impl Strategy<Value = Vec<u32>> {
+    prop_oneof![
+        3 => (1usize..max_len, 2u32..5000).prop_flat_map(|(len, start)| {
+            proptest::collection::vec(0u32..3, len).prop_map(move |drops| {
+                let mut p = start;
+                drops.iter().map(|d| { let v = p; p = p.saturating_sub(*d).max(1); v }).collect()
+            })
+        }),
+        1 => proptest::collection::vec(1u32..400, 1..max_len),
+        1 => proptest::collection::vec(1u32..4, 1..4),
+    ]
+}
+
+/// A ramp description: a per-step table held `hold` steps per entry, or
+/// segments with counts from 0 (empty segments included).
+#[derive(Clone, Debug)]
+enum Shape {
+    Steps(Vec<u32>, u32),
+    Segments(Vec<(u32, u32)>),
+}
+
+fn shape() -> impl Strategy<Value = Shape> {
+    prop_oneof![
+        4 => (any_table(80), prop_oneof![4 => Just(1u32), 1 => 0u32..6])
+            .prop_map(|(t, hold)| Shape::Steps(t, hold)),
+        1 => (any_table(12), proptest::collection::vec(0u32..6, 12)).prop_map(|(t, counts)| {
+            Shape::Segments(t.iter().zip(counts).map(|(&p, c)| (p, c)).collect())
+        }),
+    ]
+}
+
+fn ops() -> impl Strategy<Value = Vec<Op>> {
+    let op = prop_oneof![
+        3 => prop_oneof![8 => 0u32..400, 1 => Just(0u32), 1 => Just(u32::MAX)].prop_map(Op::Start),
+        6 => (0u32..200).prop_map(Op::Play),
+        2 => Just(Op::Stop),
+        2 => (0u32..120).prop_map(Op::Cruise),
+    ];
+    proptest::collection::vec(op, 1..12)
+}
+
+/// Plays `ops` on the planned player and on the reference model with the
+/// same ramps, `W` wide; the periods played and the steps remaining must be
+/// the same after every operation. Returns the steps compared.
+fn compare<W: TableWord + core::fmt::Debug + PartialEq>(
+    accel: &Shape,
+    decel: &Shape,
+    ops: &[Op],
+) -> Result<u64, TestCaseError> {
+    let words = |t: &[u32]| -> Vec<W> { t.iter().map(|&p| W::from_ticks(p)).collect() };
+    let pairs = |t: &[(u32, u32)]| -> Vec<(W, W)> {
+        t.iter()
+            .map(|&(p, c)| (W::from_ticks(p), W::from_ticks(c)))
+            .collect()
+    };
+    let (a_steps, a_pairs, d_steps, d_pairs) = match (accel, decel) {
+        (Shape::Steps(a, _), Shape::Steps(d, _)) => (words(a), vec![], words(d), vec![]),
+        (Shape::Steps(a, _), Shape::Segments(d)) => (words(a), vec![], vec![], pairs(d)),
+        (Shape::Segments(a), Shape::Steps(d, _)) => (vec![], pairs(a), words(d), vec![]),
+        (Shape::Segments(a), Shape::Segments(d)) => (vec![], pairs(a), vec![], pairs(d)),
+    };
+    fn ramp<'t, W: TableWord>(shape: &Shape, steps: &'t [W], pairs: &'t [(W, W)]) -> Ramp<'t, W> {
+        match shape {
+            Shape::Steps(_, hold) => Ramp::held(steps, *hold),
+            Shape::Segments(_) => Ramp::segments(pairs),
+        }
+    }
+    let (ra, rd) = (
+        ramp(accel, &a_steps, &a_pairs),
+        ramp(decel, &d_steps, &d_pairs),
+    );
+    let mut planned = Player::with_decel(ra, rd);
+    let mut model = Reference::with_decel(ra, rd);
+    let mut steps = 0u64;
+    for (i, op) in ops.iter().enumerate() {
+        match *op {
+            Op::Start(n) => {
+                planned.start(n);
+                model.start(n);
+            }
+            Op::Stop => {
+                planned.stop();
+                model.stop();
+            }
+            Op::Cruise(pos) => {
+                planned.set_cruise(pos);
+                model.set_cruise(pos);
+            }
+            Op::Play(n) => {
+                for k in 0..n {
+                    let (got, want) = (planned.next_period(), model.next_period());
+                    prop_assert_eq!(got, want, "op {} ({:?}), step {}", i, op, k);
+                    steps += 1;
+                    if want.is_none() {
+                        break;
+                    }
+                }
+            }
+        }
+        prop_assert_eq!(
+            planned.remaining(),
+            model.remaining(),
+            "after op {} ({:?})",
+            i,
+            op
+        );
+    }
+    Ok(steps)
+}
+
+/// The planned player plays every move exactly as the per-step model does:
+/// random tables (falling with ties, arbitrary, one entry, held, segments
+/// with empty ones), u16 and u32, random operations (starts of 0 and
+/// `u32::MAX` steps, stops, twice too, cruise changes mid-ramp). Prints the
+/// sequences and steps compared (`-- --nocapture`); `PROPTEST_CASES` times 8
+/// sequences.
+#[test]
+fn plays_exactly_as_the_per_step_model() {
+    use proptest::test_runner::{Config, TestRunner};
+    let mut runner = TestRunner::new(Config {
+        cases: cases() * 8,
+        failure_persistence: None,
+        ..Config::default()
+    });
+    let strategy = (
+        shape(),
+        prop_oneof![1 => Just(None), 1 => shape().prop_map(Some)],
+        ops(),
+        any::<bool>(),
+    );
+    let (sequences, steps) = (std::cell::Cell::new(0u64), std::cell::Cell::new(0u64));
+    runner
+        .run(&strategy, |(accel, decel, ops, wide)| {
+            let decel = decel.unwrap_or_else(|| accel.clone());
+            let n = if wide {
+                compare::<u32>(&accel, &decel, &ops)?
+            } else {
+                compare::<u16>(&accel, &decel, &ops)?
+            };
+            sequences.set(sequences.get() + 1);
+            steps.set(steps.get() + n);
+            Ok(())
+        })
+        .unwrap_or_else(|e| panic!("{e}"));
+    println!(
+        "planned player == per-step model: {} random operation sequences, {} steps compared",
+        sequences.get(),
+        steps.get()
+    );
+}
+
+/// The two faults of the per-step player, pinned.
+#[test]
+fn a_slower_cruise_is_followed_while_the_deceleration_ramp_caps_the_speed() {
+    static ACCEL: [u16; 4] = [4000, 3000, 2000, 1000];
+    static DECEL: [u16; 2] = [4000, 2500];
+    let mut player = Player::with_decel(Ramp::steps(&ACCEL), Ramp::steps(&DECEL));
+    player.start(40);
+    let mut played = Vec::new();
+    for step in 0..40 {
+        if step == 10 {
+            player.set_cruise(0);
+        }
+        played.extend(player.next_period());
+    }
+    // Up to the cap (2500, the deceleration ramp's fastest), then down to
+    // 4000 and cruising there; the move ends on the deceleration ramp.
+    assert_eq!(&played[..5], [4000, 3000, 2500, 2500, 2500]);
+    assert_eq!(&played[10..13], [2500, 3000, 4000]);
+    assert!(played[13..38].iter().all(|&p| p == 4000), "{played:?}");
+    assert_eq!(&played[38..], [4000, 4000]);
+}
+
+/// Empty segments are passed when the move is planned and at the few
+/// refills, never walked step by step: a table of 20 000 empty segments
+/// between two real ones plays as its expansion.
+#[test]
+fn empty_segments_play_as_their_expansion() {
+    let mut pairs = vec![(900u16, 3u16)];
+    pairs.extend(std::iter::repeat_n((500u16, 0u16), 20_000));
+    pairs.push((300, 2));
+    let mut player = Player::new(Ramp::segments(&pairs));
+    player.start(9);
+    let played: Vec<u16> = std::iter::from_fn(|| player.next_period()).collect();
+    assert_eq!(played, [900, 900, 900, 300, 300, 300, 900, 900, 900]);
+}

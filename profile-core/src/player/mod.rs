@@ -1,7 +1,7 @@
 //! Playing tables in firmware: a move of `S` steps from an acceleration
 //! table and a deceleration table, one call per step.
 //!
-//! The period of each step is the slower of two candidates:
+//! A move follows two sides:
 //!
 //! - the acceleration side: a cursor on the acceleration ramp that walks one
 //!   step per step towards the cruise position (up at the start, up or down
@@ -10,15 +10,22 @@
 //!   the steps that remain, so the last step of the move is always the
 //!   deceleration ramp's slowest entry.
 //!
-//! Taking the slower of the two gives the full trapezoid for long moves and
-//! the triangle for short ones, with the switch point exactly where the two
-//! ramps cross, for symmetric and asymmetric tables alike; the move ends at
-//! exactly `S` steps, at rest. Consecutive periods never differ by more than
-//! consecutive entries of the tables do.
+//! The acceleration side plays, no faster than the deceleration ramp's
+//! fastest entry while that ramp is out of reach, until the deceleration
+//! side, read at the steps that remain, is not faster; from then on the
+//! deceleration ramp plays to the end. That gives the full trapezoid for long
+//! moves and the triangle for short ones, with the switch point exactly where
+//! the two ramps cross, for symmetric and asymmetric tables alike; the move
+//! ends at exactly `S` steps, at rest, and every table plays exactly as it is
+//! written (a diffused table's one-tick ties included).
 //!
-//! [`Player::next_period`] is O(1), with no division, no floating point and no
-//! panic on any input. [`Player::stop`] searches the deceleration ramp once
-//! (O(log n) for a per-step table, O(segments) for a segment table).
+//! [`Player::start`], [`Player::stop`] and [`Player::set_cruise`] plan: they
+//! find where the move changes from one stretch of a table to another (at
+//! most a few per move), searching the tables once. [`Player::next_period`]
+//! plays: a countdown, a load and an index step, with a short refill at the
+//! few places the plan changes stretch (or a held or segment table changes
+//! entry). No division, no floating point and no panic in playing, on any
+//! input.
 //!
 //! ```
 //! use profile_core::player::{Player, Ramp};
@@ -34,203 +41,15 @@
 //! assert_eq!(periods, [4000, 2500, 2000, 1800, 1800, 1800, 1800, 2000, 2500, 4000]);
 //! ```
 
+mod plan;
+mod ramp;
+
+use core::slice;
+
 use crate::base::timer::TableWord;
-
-/// A ramp to play: a table ordered from slow (rest) to fast.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Ramp<'a, W> {
-    /// One period per table entry, each held for `hold` steps (seed 000's
-    /// `CountForAcc` divider; 1 plays every entry once).
-    Steps {
-        /// Periods in ticks, slowest first.
-        periods: &'a [W],
-        /// Steps per entry; 0 is taken as 1.
-        hold: u32,
-    },
-    /// Seed 001's layout: `(period, steps)` per segment, slowest first.
-    Segments(&'a [(W, W)]),
-}
-
-impl<'a, W: TableWord> Ramp<'a, W> {
-    /// A per-step table, each entry played once.
-    pub const fn steps(periods: &'a [W]) -> Self {
-        Ramp::Steps { periods, hold: 1 }
-    }
-
-    /// A per-step table, each entry held for `hold` steps.
-    pub const fn held(periods: &'a [W], hold: u32) -> Self {
-        Ramp::Steps { periods, hold }
-    }
-
-    /// A segment table.
-    pub const fn segments(pairs: &'a [(W, W)]) -> Self {
-        Ramp::Segments(pairs)
-    }
-
-    /// Steps the ramp takes from rest to its top speed.
-    pub fn len_steps(&self) -> u32 {
-        match *self {
-            Ramp::Steps { periods, hold } => {
-                (periods.len() as u64 * hold.max(1) as u64).min(u32::MAX as u64) as u32
-            }
-            Ramp::Segments(pairs) => pairs
-                .iter()
-                .fold(0u32, |n, &(_, c)| n.saturating_add(c.into_ticks())),
-        }
-    }
-
-    /// Period of the step at `pos` along the ramp (0 = slowest).
-    pub fn period_at(&self, pos: u32) -> Option<W> {
-        let c = Cursor::at(self, pos)?;
-        Some(c.period(self))
-    }
-}
-
-/// A position along a ramp, kept as (entry, step within entry) so that
-/// moving by one step needs no division.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-struct Cursor {
-    pos: u32,
-    entry: u32,
-    within: u32,
-}
-
-impl Cursor {
-    const ZERO: Cursor = Cursor {
-        pos: 0,
-        entry: 0,
-        within: 0,
-    };
-
-    /// The cursor at step `pos`, or `None` past the end or on an empty ramp.
-    fn at<W: TableWord>(ramp: &Ramp<'_, W>, pos: u32) -> Option<Cursor> {
-        match *ramp {
-            Ramp::Steps { periods, hold } => {
-                let hold = hold.max(1);
-                let entry = pos / hold;
-                ((entry as usize) < periods.len()).then_some(Cursor {
-                    pos,
-                    entry,
-                    within: pos % hold,
-                })
-            }
-            Ramp::Segments(pairs) => {
-                let mut start = 0u32;
-                for (i, &(_, count)) in pairs.iter().enumerate() {
-                    let count = count.into_ticks();
-                    if pos - start < count {
-                        return Some(Cursor {
-                            pos,
-                            entry: i as u32,
-                            within: pos - start,
-                        });
-                    }
-                    start = start.saturating_add(count);
-                    if start > pos {
-                        return None;
-                    }
-                }
-                None
-            }
-        }
-    }
-
-    #[inline(always)]
-    fn period<W: TableWord>(&self, ramp: &Ramp<'_, W>) -> W {
-        let found = match *ramp {
-            Ramp::Steps { periods, .. } => periods.get(self.entry as usize).copied(),
-            Ramp::Segments(pairs) => pairs.get(self.entry as usize).map(|p| p.0),
-        };
-        found.unwrap_or(W::from_ticks(0))
-    }
-
-    /// One step towards the fast end; stays put at the last step. Returns
-    /// the new entry's period when the step enters another entry.
-    #[inline(always)]
-    fn forward<W: TableWord>(&mut self, ramp: &Ramp<'_, W>, last: u32) -> Option<W> {
-        if self.pos >= last {
-            return None;
-        }
-        self.pos += 1;
-        self.within += 1;
-        match *ramp {
-            Ramp::Steps { periods, hold } => {
-                // `hold` 0 counts as 1: `within` is at least 1 here.
-                if self.within < hold {
-                    return None;
-                }
-                self.within = 0;
-                self.entry += 1;
-                periods.get(self.entry as usize).copied()
-            }
-            Ramp::Segments(pairs) => {
-                // Past empty segments to the next that holds a step.
-                while self.within
-                    >= pairs
-                        .get(self.entry as usize)
-                        .map_or(0, |p| p.1.into_ticks())
-                {
-                    self.within = 0;
-                    self.entry += 1;
-                    if self.entry as usize >= pairs.len() {
-                        return None;
-                    }
-                }
-                (self.within == 0)
-                    .then(|| pairs.get(self.entry as usize).map(|p| p.0))
-                    .flatten()
-            }
-        }
-    }
-
-    /// One step towards the slow end; stays put at step 0. Returns the new
-    /// entry's period when the step enters another entry.
-    #[inline(always)]
-    fn backward<W: TableWord>(&mut self, ramp: &Ramp<'_, W>) -> Option<W> {
-        if self.pos == 0 {
-            return None;
-        }
-        self.pos -= 1;
-        if self.within > 0 {
-            self.within -= 1;
-            return None;
-        }
-        match *ramp {
-            Ramp::Steps { periods, hold } => {
-                // `pos > 0` with `within == 0`: there is an entry before.
-                self.entry = self.entry.saturating_sub(1);
-                self.within = hold.max(1) - 1;
-                periods.get(self.entry as usize).copied()
-            }
-            Ramp::Segments(pairs) => {
-                // The previous segment that holds a step.
-                while self.entry > 0 {
-                    self.entry -= 1;
-                    if let Some(&(period, count)) = pairs.get(self.entry as usize) {
-                        if count.into_ticks() > 0 {
-                            self.within = count.into_ticks() - 1;
-                            return Some(period);
-                        }
-                    }
-                }
-                None
-            }
-        }
-    }
-}
-
-/// The shortest period of a ramp (O(n), once per player).
-fn fastest<W: TableWord>(ramp: &Ramp<'_, W>) -> u32 {
-    match *ramp {
-        Ramp::Steps { periods, .. } => periods.iter().map(|p| p.into_ticks()).min(),
-        Ramp::Segments(pairs) => pairs
-            .iter()
-            .filter(|p| p.1.into_ticks() > 0)
-            .map(|p| p.0.into_ticks())
-            .min(),
-    }
-    .unwrap_or(0)
-}
+use plan::{Plan, Sides};
+use ramp::Cursor;
+pub use ramp::Ramp;
 
 /// Plays moves from an acceleration ramp and a deceleration ramp.
 #[derive(Clone, Debug)]
@@ -239,23 +58,25 @@ pub struct Player<'a, W> {
     decel: Ramp<'a, W>,
     accel_last: u32,
     decel_last: u32,
-    /// Where the acceleration side is, and where it is heading.
-    acc: Cursor,
-    cruise: u32,
-    /// The deceleration side, at `min(remaining - 1, decel_last)`.
-    dec: Cursor,
-    remaining: u32,
-    last_period: u32,
-    /// The deceleration side has taken over: it plays to the end.
-    decelerating: bool,
-    /// The deceleration ramp's shortest period: no move runs faster.
+    /// The deceleration ramp's shortest period: no move runs faster while
+    /// that ramp is out of reach.
     decel_fastest: u32,
-    /// The periods under the two cursors, read when a cursor moves.
-    acc_period: W,
-    dec_period: W,
-    /// Steps ahead that repeat the last one (cruising, the deceleration side
-    /// out of reach): played with no decision at all.
-    coast: u32,
+    /// The first acceleration step faster than `decel_fastest`.
+    cap: u32,
+    cruise: u32,
+    /// The run being played: `left` periods read from `table` at `index`,
+    /// `index` moving by `stride` (wrapping: 1, 0 or -1) per step.
+    table: &'a [W],
+    index: u32,
+    stride: u32,
+    left: u32,
+    /// Steps in the run when it began.
+    run_len: u32,
+    /// The period played before the run began, in ticks (0 at rest).
+    before: u32,
+    /// Steps of the plan after the run.
+    rest: u32,
+    plan: Plan,
 }
 
 impl<'a, W: TableWord> Player<'a, W> {
@@ -268,45 +89,58 @@ impl<'a, W: TableWord> Player<'a, W> {
     /// for asymmetric moves.
     pub fn with_decel(accel: Ramp<'a, W>, decel: Ramp<'a, W>) -> Self {
         let accel_last = accel.len_steps().saturating_sub(1);
-        let decel_last = decel.len_steps().saturating_sub(1);
+        let decel_fastest = decel.fastest();
         Player {
             accel,
             decel,
             accel_last,
-            decel_last,
-            acc: Cursor::ZERO,
+            decel_last: decel.len_steps().saturating_sub(1),
+            decel_fastest,
+            cap: accel.first_faster_than(decel_fastest),
             cruise: accel_last,
-            dec: Cursor::ZERO,
-            remaining: 0,
-            last_period: 0,
-            decelerating: false,
-            decel_fastest: fastest(&decel),
-            acc_period: W::from_ticks(0),
-            dec_period: W::from_ticks(0),
-            coast: 0,
+            table: &[],
+            index: 0,
+            stride: 0,
+            left: 0,
+            run_len: 0,
+            before: 0,
+            rest: 0,
+            plan: Plan::EMPTY,
         }
+    }
+
+    fn sides(&self) -> Sides<'_, 'a, W> {
+        Sides {
+            accel: &self.accel,
+            decel: &self.decel,
+            accel_last: self.accel_last,
+            decel_last: self.decel_last,
+            decel_fastest: self.decel_fastest,
+            cap: self.cap,
+            cruise: self.cruise,
+        }
+    }
+
+    /// Follows `plan` from its start: nothing played of it yet.
+    fn follow(&mut self, plan: Plan, before: u32) {
+        self.rest = plan.steps();
+        self.plan = plan;
+        self.left = 0;
+        self.run_len = 0;
+        self.before = before;
     }
 
     /// Starts a move of `steps` steps from rest, cruising at the top of the
     /// acceleration ramp. A move on an empty ramp has no steps.
     pub fn start(&mut self, steps: u32) {
         self.cruise = self.accel_last;
-        self.remaining = 0;
-        self.coast = 0;
-        // A move on an empty ramp has no steps.
-        let (Some(acc), Some(dec)) = (
-            Cursor::at(&self.accel, 0),
-            Cursor::at(&self.decel, steps.saturating_sub(1).min(self.decel_last)),
-        ) else {
-            return;
+        let empty = self.accel.period_at(0).is_none() || self.decel.period_at(0).is_none();
+        let plan = if empty || steps == 0 {
+            Plan::EMPTY
+        } else {
+            self.sides().plan(0, steps)
         };
-        self.acc = acc;
-        self.dec = dec;
-        self.acc_period = acc.period(&self.accel);
-        self.dec_period = dec.period(&self.decel);
-        self.remaining = steps;
-        self.last_period = 0;
-        self.decelerating = false;
+        self.follow(plan, 0);
     }
 
     /// Cruises at step `pos` of the acceleration ramp (the entry index for a
@@ -314,7 +148,13 @@ impl<'a, W: TableWord> Player<'a, W> {
     /// ramp up or down one step per step. Clamped to the ramp.
     pub fn set_cruise(&mut self, pos: u32) {
         self.cruise = pos.min(self.accel_last);
-        self.coast = 0;
+        let (acc, decelerating) = self.state();
+        let remaining = self.remaining();
+        if remaining > 0 && !decelerating {
+            let last = self.last_period();
+            let plan = self.sides().plan(acc, remaining);
+            self.follow(plan, last);
+        }
     }
 
     /// Decelerates from the current speed to rest: the deceleration ramp is
@@ -323,23 +163,41 @@ impl<'a, W: TableWord> Player<'a, W> {
     /// when the motor already runs slower than that entry). A stop never
     /// lengthens a move.
     pub fn stop(&mut self) {
-        self.coast = 0;
-        if self.remaining == 0 {
+        let remaining = self.remaining();
+        if remaining == 0 {
             return;
         }
-        if self.last_period == 0 {
-            // Not moving yet: nothing to stop.
-            self.remaining = 0;
+        let current = self.last_period();
+        // Not moving yet, or already slower than the ramp's slowest entry:
+        // at rest now.
+        if current == 0 || self.period_dec(0) < current {
+            self.follow(Plan::EMPTY, current);
             return;
         }
-        // Largest position whose period is not faster than the current one:
-        // periods fall along the ramp, so search for the boundary.
-        let current = self.last_period;
-        if self.period_dec(0) < current {
-            // Already slower than the ramp's slowest entry: at rest now.
-            self.remaining = 0;
-            return;
+        let needed = self.entry_point(current) + 1;
+        if needed < remaining {
+            let mut plan = Plan::EMPTY;
+            let (acc, _) = self.state();
+            plan.stretches[0] = plan::Stretch {
+                decel: true,
+                at: Cursor::at(&self.decel, needed - 1).unwrap_or(Cursor::ZERO),
+                dir: -1,
+                count: needed,
+                total: needed,
+                acc,
+                acc_dir: 0,
+                decelerating: true,
+            };
+            plan.len = 1;
+            self.follow(plan, current);
         }
+    }
+
+    /// The largest position of the deceleration ramp whose period is not
+    /// faster than `current`: periods fall along the ramp, so a binary
+    /// search, then a bounded look past the boundary for the ties of
+    /// diffused tables.
+    fn entry_point(&self, current: u32) -> u32 {
         let (mut lo, mut hi) = (0u32, self.decel_last);
         if self.period_dec(hi) >= current {
             lo = hi;
@@ -353,118 +211,142 @@ impl<'a, W: TableWord> Player<'a, W> {
                 }
             }
         }
-        // Tables rounded by diffusion may tie by a tick: take the last entry
-        // of the run that still qualifies (a bounded look past the boundary).
-        let mut probe = lo;
         for _ in 0..16 {
-            if probe >= self.decel_last || self.period_dec(probe + 1) < current {
+            if lo >= self.decel_last || self.period_dec(lo + 1) < current {
                 break;
             }
-            probe += 1;
+            lo += 1;
         }
-        let lo = probe;
-        let needed = lo + 1;
-        if needed < self.remaining {
-            self.remaining = needed;
-            if let Some(dec) = Cursor::at(&self.decel, lo) {
-                self.dec = dec;
-                self.dec_period = dec.period(&self.decel);
-                self.decelerating = true;
-            } else {
-                self.remaining = 0;
-            }
-        }
+        lo
     }
 
     fn period_dec(&self, pos: u32) -> u32 {
         self.decel.period_at(pos).map_or(0, |w| w.into_ticks())
     }
 
+    /// Where the acceleration side stands after the steps played, and
+    /// whether the deceleration ramp has taken over.
+    fn state(&self) -> (u32, bool) {
+        let Some(s) = self
+            .plan
+            .stretches
+            .get(self.plan.at)
+            .filter(|_| self.plan.at < self.plan.len)
+        else {
+            return (0, false);
+        };
+        let played = s.total - s.count - self.left;
+        (s.acc_after(played), s.decelerating)
+    }
+
+    /// The period of the last step played, in ticks (0 at rest).
+    fn last_period(&self) -> u32 {
+        if self.left < self.run_len {
+            let last = self.index.wrapping_sub(self.stride);
+            self.table.get(last as usize).map_or(0, |w| w.into_ticks())
+        } else {
+            self.before
+        }
+    }
+
     /// Steps left in the move.
     pub fn remaining(&self) -> u32 {
-        self.remaining
+        self.left + self.rest
     }
 
     /// `true` when the move has played all its steps.
     pub fn is_done(&self) -> bool {
-        self.remaining == 0
+        self.remaining() == 0
     }
 
     /// The period of the next step, in ticks, or `None` when the move is done.
-    ///
-    /// Until the deceleration side is within reach (the steps left fit its
-    /// ramp), the acceleration side plays alone, exactly as its table reads.
-    /// From then on each step compares the two; as soon as the deceleration
-    /// side is the slower, it takes over and plays its ramp to the end,
-    /// again exactly as its table reads.
+    #[inline]
     pub fn next_period(&mut self) -> Option<W> {
-        if self.coast > 0 {
-            // `coast < remaining`, and nothing changes but the count.
-            self.coast -= 1;
-            self.remaining -= 1;
-            return W::from_ticks(self.last_period).into();
+        if self.left == 0 {
+            return self.refill();
         }
-        if self.remaining == 0 {
+        self.left -= 1;
+        let period = self.table.get(self.index as usize).copied();
+        self.index = self.index.wrapping_add(self.stride);
+        period
+    }
+
+    /// Begins the plan's next run and plays its first step.
+    #[cold]
+    #[inline(never)]
+    fn refill(&mut self) -> Option<W> {
+        self.before = self.last_period();
+        let n = self.next_run()?;
+        self.rest -= n;
+        self.left = n - 1;
+        let period = self.table.get(self.index as usize).copied();
+        self.index = self.index.wrapping_add(self.stride);
+        period
+    }
+
+    /// Sets up the next run from the plan; its length, or `None` when the
+    /// plan is played.
+    fn next_run(&mut self) -> Option<u32> {
+        while self.plan.at < self.plan.len {
+            let at = self.plan.at;
+            if self.plan.stretches[at].count > 0 {
+                break;
+            }
+            // The next stretch: nothing of it played yet.
+            if at + 1 >= self.plan.len {
+                return None;
+            }
+            self.plan.at += 1;
+        }
+        let s = self.plan.stretches.get_mut(self.plan.at)?;
+        if s.count == 0 {
             return None;
         }
-        // Steps after this one; the deceleration side stands at
-        // `min(after, decel_last)`.
-        let after = self.remaining - 1;
-        self.remaining = after;
-        if self.decelerating {
-            // The deceleration side plays to the end; its cursor stands at
-            // exactly `after`, one entry lower each step.
-            let period = self.dec_period;
-            if after > 0 {
-                if let Some(p) = self.dec.backward(&self.decel) {
-                    self.dec_period = p;
-                }
+        let ramp = if s.decel { self.decel } else { self.accel };
+        let forward = s.dir > 0;
+        let n = match ramp {
+            Ramp::Steps { periods, hold } if hold <= 1 => {
+                // The whole stretch is one run over the table itself.
+                self.table = periods;
+                self.index = s.at.pos;
+                self.stride = s.dir as i32 as u32;
+                s.count
             }
-            self.last_period = period.into_ticks();
-            return Some(period);
-        }
-        // Whether this step left both sides as they were, so that the steps
-        // after it repeat it until the deceleration side comes within reach.
-        let mut still = false;
-        let period = {
-            let pa = self.acc_period;
-            let take_decel = if after <= self.decel_last {
-                self.decelerating = self.dec_period.into_ticks() >= pa.into_ticks();
-                self.decelerating
-            } else {
-                // The deceleration ramp cannot start from a faster speed than
-                // its top: go no faster (its entries may tie by a tick near
-                // the top, so compare with its fastest entry).
-                still = self.decel_fastest > pa.into_ticks();
-                still
-            };
-            if take_decel {
-                self.dec_period
-            } else {
-                if self.acc.pos == self.cruise {
-                    still = true;
+            _ => {
+                let n = if s.dir == 0 {
+                    s.count
                 } else {
-                    let moved = if self.acc.pos < self.cruise {
-                        self.acc.forward(&self.accel, self.accel_last)
+                    s.at.left_in_entry(&ramp, forward).min(s.count)
+                };
+                self.table = match ramp {
+                    Ramp::Steps { periods, .. } => periods,
+                    Ramp::Segments(pairs) => pairs
+                        .get(s.at.entry as usize)
+                        .map_or(&[][..], |p| slice::from_ref(&p.0)),
+                };
+                self.index = match ramp {
+                    Ramp::Steps { .. } => s.at.entry,
+                    Ramp::Segments(_) => 0,
+                };
+                self.stride = 0;
+                // On to the next entry in the stretch's direction: to this
+                // entry's last step that way, then one more.
+                if s.dir != 0 && n < s.count {
+                    if forward {
+                        s.at.pos += n - 1;
+                        s.at.within += n - 1;
+                        s.at.forward(&ramp, u32::MAX);
                     } else {
-                        self.acc.backward(&self.accel)
-                    };
-                    if let Some(p) = moved {
-                        self.acc_period = p;
+                        s.at.pos -= n - 1;
+                        s.at.within -= n - 1;
+                        s.at.backward(&ramp);
                     }
                 }
-                pa
+                n
             }
         };
-        if after > 0 && after - 1 < self.dec.pos {
-            if let Some(p) = self.dec.backward(&self.decel) {
-                self.dec_period = p;
-            }
-        }
-        self.last_period = period.into_ticks();
-        if still {
-            self.coast = self.remaining.saturating_sub(self.decel_last + 1);
-        }
-        Some(period)
+        s.count -= n;
+        self.run_len = n;
+        Some(n)
     }
 }

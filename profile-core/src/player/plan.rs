@@ -1,0 +1,237 @@
+//! Planning a move: the stretches of steps it is made of, found once when the
+//! move starts, stops or changes its cruise speed.
+//!
+//! A move is the acceleration side walking one step per step towards the
+//! cruise position, no faster than the deceleration ramp's fastest entry
+//! while that ramp is out of reach, until the deceleration ramp read
+//! backwards by the steps that remain is not faster than it; from then on
+//! the deceleration ramp plays to the end. The planner finds where each of
+//! these changes happens, so that playing is a countdown and a load.
+
+use super::ramp::{Cursor, Ramp};
+use crate::base::timer::TableWord;
+
+/// The most stretches a plan holds: a move is at most a capped walk down, a
+/// walk, a cruise (out of reach of the deceleration ramp), then a walk, a
+/// cruise and the deceleration (within reach).
+pub(crate) const MAX_STRETCHES: usize = 8;
+
+/// Steps that read one ramp at positions moving the same way.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Stretch {
+    /// Reads the deceleration ramp (else the acceleration ramp).
+    pub(crate) decel: bool,
+    /// Where it reads next.
+    pub(crate) at: Cursor,
+    /// Positions per step: -1, 0 or 1.
+    pub(crate) dir: i8,
+    /// Steps not yet handed to a run.
+    pub(crate) count: u32,
+    /// Steps in all.
+    pub(crate) total: u32,
+    /// Where the acceleration side stands when the stretch begins.
+    pub(crate) acc: u32,
+    /// How the acceleration side moves per step: -1, 0 or 1.
+    pub(crate) acc_dir: i8,
+    /// The deceleration ramp has taken over.
+    pub(crate) decelerating: bool,
+}
+
+impl Stretch {
+    /// Where the acceleration side stands after `played` of its steps.
+    pub(crate) fn acc_after(&self, played: u32) -> u32 {
+        match self.acc_dir {
+            1 => self.acc + played,
+            -1 => self.acc - played,
+            _ => self.acc,
+        }
+    }
+}
+
+/// A move's stretches, in order.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Plan {
+    pub(crate) stretches: [Stretch; MAX_STRETCHES],
+    pub(crate) len: usize,
+    /// The stretch being played.
+    pub(crate) at: usize,
+}
+
+impl Plan {
+    pub(crate) const EMPTY: Plan = Plan {
+        stretches: [Stretch {
+            decel: false,
+            at: Cursor::ZERO,
+            dir: 0,
+            count: 0,
+            total: 0,
+            acc: 0,
+            acc_dir: 0,
+            decelerating: false,
+        }; MAX_STRETCHES],
+        len: 0,
+        at: 0,
+    };
+
+    fn push(&mut self, stretch: Stretch) {
+        if let Some(slot) = self.stretches.get_mut(self.len) {
+            *slot = stretch;
+            self.len += 1;
+        }
+    }
+
+    /// Steps of the plan not yet handed to a run.
+    pub(crate) fn steps(&self) -> u32 {
+        self.stretches[..self.len].iter().map(|s| s.count).sum()
+    }
+}
+
+/// What the planner knows of a player.
+pub(crate) struct Sides<'p, 'a, W> {
+    pub(crate) accel: &'p Ramp<'a, W>,
+    pub(crate) decel: &'p Ramp<'a, W>,
+    pub(crate) accel_last: u32,
+    pub(crate) decel_last: u32,
+    pub(crate) decel_fastest: u32,
+    /// The first acceleration step faster than `decel_fastest`.
+    pub(crate) cap: u32,
+    pub(crate) cruise: u32,
+}
+
+impl<W: TableWord> Sides<'_, '_, W> {
+    fn a(&self, pos: u32) -> u32 {
+        self.accel.period_at(pos).map_or(0, |w| w.into_ticks())
+    }
+
+    /// One step of the acceleration side towards the cruise position.
+    fn toward(&self, p: u32) -> (u32, i8) {
+        match p.cmp(&self.cruise) {
+            core::cmp::Ordering::Less => (p + 1, 1),
+            core::cmp::Ordering::Greater => (p - 1, -1),
+            core::cmp::Ordering::Equal => (p, 0),
+        }
+    }
+
+    fn stretch(
+        &self,
+        decel: bool,
+        pos: u32,
+        dir: i8,
+        count: u32,
+        acc: u32,
+        acc_dir: i8,
+    ) -> Stretch {
+        let ramp = if decel { self.decel } else { self.accel };
+        Stretch {
+            decel,
+            at: Cursor::at(ramp, pos).unwrap_or(Cursor::ZERO),
+            dir,
+            count,
+            total: count,
+            acc,
+            acc_dir,
+            decelerating: decel && dir == -1,
+        }
+    }
+
+    /// The acceleration side walking from `p` for `n` steps (towards the
+    /// cruise position, reaching it at most), then holding.
+    fn walk(&self, plan: &mut Plan, p: u32, n: u32) -> u32 {
+        let distance = p.abs_diff(self.cruise);
+        let walked = n.min(distance);
+        let dir = self.toward(p).1;
+        if walked > 0 {
+            plan.push(self.stretch(false, p, dir, walked, p, dir));
+        }
+        let p = if dir > 0 { p + walked } else { p - walked };
+        if n > walked {
+            plan.push(self.stretch(false, p, 0, n - walked, p, 0));
+        }
+        p
+    }
+
+    /// Plans `r` steps of a move that is not decelerating, the acceleration
+    /// side at `p`.
+    pub(crate) fn plan(&self, mut p: u32, mut r: u32) -> Plan {
+        let mut plan = Plan::EMPTY;
+        let l = self.decel_last;
+        while r > 0 && r - 1 > l {
+            // The deceleration ramp is out of reach for `far` more steps.
+            let far = r - (l + 1);
+            let n = if self.a(p) < self.decel_fastest {
+                // No faster than the deceleration ramp's fastest entry: its
+                // top plays; the acceleration side only walks down.
+                let n = if self.cruise < p {
+                    self.capped_walk(p, far)
+                } else {
+                    far
+                };
+                let acc_dir = if self.cruise < p { -1 } else { 0 };
+                plan.push(self.stretch(true, l, 0, n, p, acc_dir));
+                if acc_dir < 0 {
+                    p -= n;
+                }
+                n
+            } else if p < self.cruise {
+                // Up to the cruise position or the first capped step.
+                let n = far
+                    .min(self.cruise - p)
+                    .min(self.cap.saturating_sub(p).max(1));
+                p = self.walk(&mut plan, p, n);
+                n
+            } else {
+                p = self.walk(&mut plan, p, far);
+                far
+            };
+            r -= n;
+        }
+        if r > 0 {
+            self.within_reach(&mut plan, p, r);
+        }
+        plan
+    }
+
+    /// Steps in a row, from `p` walking down to the cruise position, whose
+    /// acceleration period is faster than the deceleration ramp's fastest.
+    fn capped_walk(&self, p: u32, far: u32) -> u32 {
+        let mut c = Cursor::at(self.accel, p).unwrap_or(Cursor::ZERO);
+        let mut n = 0;
+        while n < far
+            && c.pos > self.cruise
+            && c.period(self.accel).into_ticks() < self.decel_fastest
+        {
+            n += 1;
+            c.backward(self.accel);
+        }
+        n.max(1)
+    }
+
+    /// The last `r` steps, the deceleration ramp within reach: the
+    /// acceleration side plays until the deceleration ramp, read at the steps
+    /// that remain, is not faster; then the deceleration ramp plays to the end.
+    fn within_reach(&self, plan: &mut Plan, p: u32, r: u32) {
+        let mut d = Cursor::at(self.decel, r - 1).unwrap_or(Cursor::ZERO);
+        let mut a = Cursor::at(self.accel, p).unwrap_or(Cursor::ZERO);
+        let mut j = 0;
+        while j < r {
+            if d.period(self.decel).into_ticks() >= a.period(self.accel).into_ticks() {
+                let p = self.walk(plan, p, j);
+                let after = r - 1 - j;
+                plan.push(self.stretch(true, after, -1, after + 1, p, 0));
+                return;
+            }
+            j += 1;
+            d.backward(self.decel);
+            match self.toward(a.pos).1 {
+                1 => {
+                    a.forward(self.accel, self.accel_last);
+                }
+                -1 => {
+                    a.backward(self.accel);
+                }
+                _ => {}
+            }
+        }
+        self.walk(plan, p, r);
+    }
+}

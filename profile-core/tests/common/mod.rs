@@ -1,0 +1,3 @@
+//! Support for the player's tests: the reference model.
+
+pub mod reference;
