@@ -44,16 +44,21 @@
 mod plan;
 mod ramp;
 
-use core::slice;
-
 use crate::base::timer::TableWord;
-use plan::{Plan, Sides};
-use ramp::Cursor;
+use plan::{Plan, Run, Sides};
 pub use ramp::Ramp;
 
 /// Plays moves from an acceleration ramp and a deceleration ramp.
+// The run's fields come first, at the smallest offsets, for the step path.
 #[derive(Clone, Debug)]
+#[repr(C)]
 pub struct Player<'a, W> {
+    /// The run being played: what is left of it.
+    run: Run<'a, W>,
+    /// The move's stretches, and the one being played.
+    plan: Plan<'a, W>,
+    /// The period played before the plan began, in ticks (0 at rest).
+    before: u32,
     accel: Ramp<'a, W>,
     decel: Ramp<'a, W>,
     accel_last: u32,
@@ -64,19 +69,6 @@ pub struct Player<'a, W> {
     /// The first acceleration step faster than `decel_fastest`.
     cap: u32,
     cruise: u32,
-    /// The run being played: `left` periods read from `table` at `index`,
-    /// `index` moving by `stride` (wrapping: 1, 0 or -1) per step.
-    table: &'a [W],
-    index: u32,
-    stride: u32,
-    left: u32,
-    /// Steps in the run when it began.
-    run_len: u32,
-    /// The period played before the run began, in ticks (0 at rest).
-    before: u32,
-    /// Steps of the plan after the run.
-    rest: u32,
-    plan: Plan,
 }
 
 impl<'a, W: TableWord> Player<'a, W> {
@@ -98,13 +90,8 @@ impl<'a, W: TableWord> Player<'a, W> {
             decel_fastest,
             cap: accel.first_faster_than(decel_fastest),
             cruise: accel_last,
-            table: &[],
-            index: 0,
-            stride: 0,
-            left: 0,
-            run_len: 0,
+            run: Run::empty(),
             before: 0,
-            rest: 0,
             plan: Plan::EMPTY,
         }
     }
@@ -122,12 +109,14 @@ impl<'a, W: TableWord> Player<'a, W> {
     }
 
     /// Follows `plan` from its start: nothing played of it yet.
-    fn follow(&mut self, plan: Plan, before: u32) {
-        self.rest = plan.steps();
+    fn follow(&mut self, plan: Plan<'a, W>, before: u32) {
         self.plan = plan;
-        self.left = 0;
-        self.run_len = 0;
+        self.run = Run::empty();
         self.before = before;
+        // The first run now, so that the first step plays at once.
+        if let Some(run) = self.next_run() {
+            self.run = run;
+        }
     }
 
     /// Starts a move of `steps` steps from rest, cruising at the top of the
@@ -176,19 +165,8 @@ impl<'a, W: TableWord> Player<'a, W> {
         }
         let needed = self.entry_point(current) + 1;
         if needed < remaining {
-            let mut plan = Plan::EMPTY;
             let (acc, _) = self.state();
-            plan.stretches[0] = plan::Stretch {
-                decel: true,
-                at: Cursor::at(&self.decel, needed - 1).unwrap_or(Cursor::ZERO),
-                dir: -1,
-                count: needed,
-                total: needed,
-                acc,
-                acc_dir: 0,
-                decelerating: true,
-            };
-            plan.len = 1;
+            let plan = Plan::one(self.sides().decelerate(needed - 1, acc));
             self.follow(plan, current);
         }
     }
@@ -235,23 +213,33 @@ impl<'a, W: TableWord> Player<'a, W> {
         else {
             return (0, false);
         };
-        let played = s.total - s.count - self.left;
+        let played = s.total - s.count - self.run.left();
         (s.acc_after(played), s.decelerating)
     }
 
-    /// The period of the last step played, in ticks (0 at rest).
+    /// The period of the last step played, in ticks (0 at rest): read off
+    /// the plan, where the stretch being played (or the one before it) read it.
     fn last_period(&self) -> u32 {
-        if self.left < self.run_len {
-            let last = self.index.wrapping_sub(self.stride);
-            self.table.get(last as usize).map_or(0, |w| w.into_ticks())
-        } else {
-            self.before
-        }
+        let stretches = &self.plan.stretches[..self.plan.len];
+        let Some(s) = stretches.get(self.plan.at) else {
+            return self.before;
+        };
+        let played = s.total - s.count - self.run.left();
+        let (s, k) = match played {
+            0 => match self.plan.at.checked_sub(1).and_then(|i| stretches.get(i)) {
+                Some(prev) => (prev, prev.total),
+                None => return self.before,
+            },
+            _ => (s, played),
+        };
+        let ramp = if s.decel { &self.decel } else { &self.accel };
+        ramp.period_at(s.read_at(k - 1))
+            .map_or(0, |w| w.into_ticks())
     }
 
     /// Steps left in the move.
     pub fn remaining(&self) -> u32 {
-        self.left + self.rest
+        self.run.left() + self.plan.steps()
     }
 
     /// `true` when the move has played all its steps.
@@ -262,91 +250,129 @@ impl<'a, W: TableWord> Player<'a, W> {
     /// The period of the next step, in ticks, or `None` when the move is done.
     #[inline]
     pub fn next_period(&mut self) -> Option<W> {
-        if self.left == 0 {
-            return self.refill();
-        }
-        self.left -= 1;
-        let period = self.table.get(self.index as usize).copied();
-        self.index = self.index.wrapping_add(self.stride);
+        let mut period = None;
+        self.step(|p| period = Some(p));
         period
     }
 
-    /// Begins the plan's next run and plays its first step.
+    /// Plays the next step: hands its period to `write` (a step interrupt
+    /// writes it to its timer's reload register) and returns `true`, or
+    /// returns `false` when the move is done. [`Player::next_period`] in the
+    /// form that costs least in an interrupt: each kind of run writes from
+    /// its own path.
+    ///
+    /// ```
+    /// use profile_core::player::{Player, Ramp};
+    ///
+    /// static RAMP: [u16; 3] = [3000, 2000, 1500];
+    /// let mut player = Player::new(Ramp::steps(&RAMP));
+    /// player.start(4);
+    /// let mut reload = 0;
+    /// while player.step(|period| reload = period) {}
+    /// assert_eq!(reload, 3000);
+    /// ```
+    #[inline]
+    pub fn step(&mut self, write: impl FnOnce(W)) -> bool {
+        // `refill` hands the player back, so that the step path keeps no
+        // register across its call.
+        let mut this = self;
+        loop {
+            match &mut this.run {
+                Run::Down(periods) => {
+                    if let Some(&p) = periods.next_back() {
+                        write(p);
+                        return true;
+                    }
+                }
+                Run::Hold(p, n) => {
+                    if *n > 0 {
+                        *n -= 1;
+                        write(**p);
+                        return true;
+                    }
+                }
+                Run::Up(periods) => {
+                    if let Some(&p) = periods.next() {
+                        write(p);
+                        return true;
+                    }
+                }
+            }
+            match this.refill() {
+                Some(player) => this = player,
+                None => return false,
+            }
+        }
+    }
+
+    /// Begins the plan's next run; `None` when the plan is played.
     #[cold]
     #[inline(never)]
-    fn refill(&mut self) -> Option<W> {
-        self.before = self.last_period();
-        let n = self.next_run()?;
-        self.rest -= n;
-        self.left = n - 1;
-        let period = self.table.get(self.index as usize).copied();
-        self.index = self.index.wrapping_add(self.stride);
-        period
+    fn refill(&mut self) -> Option<&mut Self> {
+        // Most stretches are a whole run, made when the move was planned.
+        let next = self.plan.next;
+        if next < self.plan.len {
+            if let Some(s) = self.plan.stretches.get_mut(next) {
+                if let Some(run) = s.run.take() {
+                    s.count = 0;
+                    self.plan.at = next;
+                    self.plan.next = next + 1;
+                    self.run = run;
+                    return Some(self);
+                }
+            }
+        }
+        self.run = self.next_run()?;
+        Some(self)
     }
 
-    /// Sets up the next run from the plan; its length, or `None` when the
-    /// plan is played.
-    fn next_run(&mut self) -> Option<u32> {
-        while self.plan.at < self.plan.len {
-            let at = self.plan.at;
-            if self.plan.stretches[at].count > 0 {
-                break;
-            }
-            // The next stretch: nothing of it played yet.
-            if at + 1 >= self.plan.len {
+    /// The plan's next run, or `None` when the plan is played.
+    fn next_run(&mut self) -> Option<Run<'a, W>> {
+        // The next stretch with steps not yet handed out.
+        loop {
+            let next = self.plan.next;
+            if next >= self.plan.len {
                 return None;
             }
-            self.plan.at += 1;
+            if self.plan.stretches.get(next)?.count > 0 {
+                break;
+            }
+            self.plan.next = next + 1;
         }
-        let s = self.plan.stretches.get_mut(self.plan.at)?;
-        if s.count == 0 {
-            return None;
+        let next = self.plan.next;
+        self.plan.at = next;
+        let s = self.plan.stretches.get_mut(next)?;
+        if let Some(run) = s.run.take() {
+            s.count = 0;
+            self.plan.next = next + 1;
+            return Some(run);
         }
         let ramp = if s.decel { self.decel } else { self.accel };
         let forward = s.dir > 0;
-        let n = match ramp {
-            Ramp::Steps { periods, hold } if hold <= 1 => {
-                // The whole stretch is one run over the table itself.
-                self.table = periods;
-                self.index = s.at.pos;
-                self.stride = s.dir as i32 as u32;
-                s.count
-            }
-            _ => {
-                let n = if s.dir == 0 {
-                    s.count
-                } else {
-                    s.at.left_in_entry(&ramp, forward).min(s.count)
-                };
-                self.table = match ramp {
-                    Ramp::Steps { periods, .. } => periods,
-                    Ramp::Segments(pairs) => pairs
-                        .get(s.at.entry as usize)
-                        .map_or(&[][..], |p| slice::from_ref(&p.0)),
-                };
-                self.index = match ramp {
-                    Ramp::Steps { .. } => s.at.entry,
-                    Ramp::Segments(_) => 0,
-                };
-                self.stride = 0;
-                // On to the next entry in the stretch's direction: to this
-                // entry's last step that way, then one more.
-                if s.dir != 0 && n < s.count {
-                    if forward {
-                        s.at.pos += n - 1;
-                        s.at.within += n - 1;
-                        s.at.forward(&ramp, u32::MAX);
-                    } else {
-                        s.at.pos -= n - 1;
-                        s.at.within -= n - 1;
-                        s.at.backward(&ramp);
-                    }
-                }
-                n
-            }
+        // A held or segment table: one entry at a time.
+        let n = if s.dir == 0 {
+            s.count
+        } else {
+            s.at.left_in_entry(&ramp, forward).min(s.count)
         };
+        let period = match ramp {
+            Ramp::Steps { periods, .. } => periods.get(s.at.entry as usize),
+            Ramp::Segments(pairs) => pairs.get(s.at.entry as usize).map(|p| &p.0),
+        };
+        // On to the next entry in the stretch's direction: to this entry's
+        // last step that way, then one more.
+        if s.dir != 0 && n < s.count {
+            if forward {
+                s.at.pos += n - 1;
+                s.at.within += n - 1;
+                s.at.forward(&ramp, u32::MAX);
+            } else {
+                s.at.pos -= n - 1;
+                s.at.within -= n - 1;
+                s.at.backward(&ramp);
+            }
+        }
         s.count -= n;
-        self.run_len = n;
-        Some(n)
+        Some(Run::Hold(period?, n))
     }
 }

@@ -8,8 +8,46 @@
 //! the deceleration ramp plays to the end. The planner finds where each of
 //! these changes happens, so that playing is a countdown and a load.
 
+use core::slice;
+
 use super::ramp::{Cursor, Ramp};
 use crate::base::timer::TableWord;
+
+/// A run of steps, as the step path plays it.
+#[derive(Clone, Debug)]
+pub(crate) enum Run<'a, W> {
+    /// Periods played last to first.
+    Down(slice::Iter<'a, W>),
+    /// One period, played `n` more times.
+    Hold(&'a W, u32),
+    /// Periods played first to last.
+    Up(slice::Iter<'a, W>),
+}
+
+impl<'a, W: TableWord> Run<'a, W> {
+    /// A run with nothing to play.
+    pub(crate) fn empty() -> Self {
+        Run::Up([].iter())
+    }
+
+    /// Steps left in the run.
+    pub(crate) fn left(&self) -> u32 {
+        match self {
+            Run::Up(s) | Run::Down(s) => s.len() as u32,
+            Run::Hold(_, n) => *n,
+        }
+    }
+
+    /// The run of a stretch of a per-step table, whole.
+    fn over(periods: &'a [W], pos: u32, dir: i8, count: u32) -> Option<Self> {
+        let (pos, n) = (pos as usize, count as usize);
+        Some(match dir {
+            1 => Run::Up(periods.get(pos..pos + n)?.iter()),
+            -1 => Run::Down(periods.get((pos + 1).checked_sub(n)?..=pos)?.iter()),
+            _ => Run::Hold(periods.get(pos)?, count),
+        })
+    }
+}
 
 /// The most stretches a plan holds: a move is at most a capped walk down, a
 /// walk, a cruise (out of reach of the deceleration ramp), then a walk, a
@@ -17,16 +55,22 @@ use crate::base::timer::TableWord;
 pub(crate) const MAX_STRETCHES: usize = 8;
 
 /// Steps that read one ramp at positions moving the same way.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) struct Stretch {
+#[derive(Clone, Debug)]
+#[repr(C)]
+pub(crate) struct Stretch<'a, W> {
+    /// The stretch as one run, made when the move is planned, for a
+    /// per-step table (a held or segment table plays entry by entry).
+    pub(crate) run: Option<Run<'a, W>>,
+    /// Steps not yet handed to a run.
+    pub(crate) count: u32,
     /// Reads the deceleration ramp (else the acceleration ramp).
     pub(crate) decel: bool,
+    /// The position it reads first.
+    pub(crate) start: u32,
     /// Where it reads next.
     pub(crate) at: Cursor,
     /// Positions per step: -1, 0 or 1.
     pub(crate) dir: i8,
-    /// Steps not yet handed to a run.
-    pub(crate) count: u32,
     /// Steps in all.
     pub(crate) total: u32,
     /// Where the acceleration side stands when the stretch begins.
@@ -37,7 +81,16 @@ pub(crate) struct Stretch {
     pub(crate) decelerating: bool,
 }
 
-impl Stretch {
+impl<W: TableWord> Stretch<'_, W> {
+    /// The position read by its step `k` (from 0).
+    pub(crate) fn read_at(&self, k: u32) -> u32 {
+        match self.dir {
+            1 => self.start + k,
+            -1 => self.start - k,
+            _ => self.start,
+        }
+    }
+
     /// Where the acceleration side stands after `played` of its steps.
     pub(crate) fn acc_after(&self, played: u32) -> u32 {
         match self.acc_dir {
@@ -49,31 +102,40 @@ impl Stretch {
 }
 
 /// A move's stretches, in order.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct Plan {
-    pub(crate) stretches: [Stretch; MAX_STRETCHES],
-    pub(crate) len: usize,
+// The fields a refill reads come first.
+#[derive(Clone, Debug)]
+#[repr(C)]
+pub(crate) struct Plan<'a, W> {
+    /// The next stretch to hand steps out of.
+    pub(crate) next: usize,
     /// The stretch being played.
     pub(crate) at: usize,
+    pub(crate) len: usize,
+    pub(crate) stretches: [Stretch<'a, W>; MAX_STRETCHES],
 }
 
-impl Plan {
-    pub(crate) const EMPTY: Plan = Plan {
-        stretches: [Stretch {
-            decel: false,
-            at: Cursor::ZERO,
-            dir: 0,
-            count: 0,
-            total: 0,
-            acc: 0,
-            acc_dir: 0,
-            decelerating: false,
-        }; MAX_STRETCHES],
-        len: 0,
+impl<'a, W: TableWord> Plan<'a, W> {
+    pub(crate) const EMPTY: Self = Plan {
+        next: 0,
         at: 0,
+        len: 0,
+        stretches: [const {
+            Stretch {
+                run: None,
+                decel: false,
+                start: 0,
+                at: Cursor::ZERO,
+                dir: 0,
+                count: 0,
+                total: 0,
+                acc: 0,
+                acc_dir: 0,
+                decelerating: false,
+            }
+        }; MAX_STRETCHES],
     };
 
-    fn push(&mut self, stretch: Stretch) {
+    fn push(&mut self, stretch: Stretch<'a, W>) {
         if let Some(slot) = self.stretches.get_mut(self.len) {
             *slot = stretch;
             self.len += 1;
@@ -83,6 +145,13 @@ impl Plan {
     /// Steps of the plan not yet handed to a run.
     pub(crate) fn steps(&self) -> u32 {
         self.stretches[..self.len].iter().map(|s| s.count).sum()
+    }
+
+    /// A plan of one stretch.
+    pub(crate) fn one(stretch: Stretch<'a, W>) -> Self {
+        let mut plan = Self::EMPTY;
+        plan.push(stretch);
+        plan
     }
 }
 
@@ -98,7 +167,7 @@ pub(crate) struct Sides<'p, 'a, W> {
     pub(crate) cruise: u32,
 }
 
-impl<W: TableWord> Sides<'_, '_, W> {
+impl<'a, W: TableWord> Sides<'_, 'a, W> {
     fn a(&self, pos: u32) -> u32 {
         self.accel.period_at(pos).map_or(0, |w| w.into_ticks())
     }
@@ -112,6 +181,12 @@ impl<W: TableWord> Sides<'_, '_, W> {
         }
     }
 
+    /// The deceleration ramp from `pos` down to rest, the acceleration side
+    /// standing at `acc`.
+    pub(crate) fn decelerate(&self, pos: u32, acc: u32) -> Stretch<'a, W> {
+        self.stretch(true, pos, -1, pos + 1, acc, 0)
+    }
+
     fn stretch(
         &self,
         decel: bool,
@@ -120,10 +195,16 @@ impl<W: TableWord> Sides<'_, '_, W> {
         count: u32,
         acc: u32,
         acc_dir: i8,
-    ) -> Stretch {
+    ) -> Stretch<'a, W> {
         let ramp = if decel { self.decel } else { self.accel };
+        let run = match *ramp {
+            Ramp::Steps { periods, hold } if hold <= 1 => Run::over(periods, pos, dir, count),
+            _ => None,
+        };
         Stretch {
+            run,
             decel,
+            start: pos,
             at: Cursor::at(ramp, pos).unwrap_or(Cursor::ZERO),
             dir,
             count,
@@ -136,7 +217,7 @@ impl<W: TableWord> Sides<'_, '_, W> {
 
     /// The acceleration side walking from `p` for `n` steps (towards the
     /// cruise position, reaching it at most), then holding.
-    fn walk(&self, plan: &mut Plan, p: u32, n: u32) -> u32 {
+    fn walk(&self, plan: &mut Plan<'a, W>, p: u32, n: u32) -> u32 {
         let distance = p.abs_diff(self.cruise);
         let walked = n.min(distance);
         let dir = self.toward(p).1;
@@ -152,7 +233,7 @@ impl<W: TableWord> Sides<'_, '_, W> {
 
     /// Plans `r` steps of a move that is not decelerating, the acceleration
     /// side at `p`.
-    pub(crate) fn plan(&self, mut p: u32, mut r: u32) -> Plan {
+    pub(crate) fn plan(&self, mut p: u32, mut r: u32) -> Plan<'a, W> {
         let mut plan = Plan::EMPTY;
         let l = self.decel_last;
         while r > 0 && r - 1 > l {
@@ -209,7 +290,7 @@ impl<W: TableWord> Sides<'_, '_, W> {
     /// The last `r` steps, the deceleration ramp within reach: the
     /// acceleration side plays until the deceleration ramp, read at the steps
     /// that remain, is not faster; then the deceleration ramp plays to the end.
-    fn within_reach(&self, plan: &mut Plan, p: u32, r: u32) {
+    fn within_reach(&self, plan: &mut Plan<'a, W>, p: u32, r: u32) {
         let mut d = Cursor::at(self.decel, r - 1).unwrap_or(Cursor::ZERO);
         let mut a = Cursor::at(self.accel, p).unwrap_or(Cursor::ZERO);
         let mut j = 0;

@@ -1,0 +1,107 @@
+#!/usr/bin/env bash
+# Instructions per step of a step interrupt's work on three cores, counted in
+# QEMU's instruction trace (deterministic), with the player's flash:
+#   Cortex-M0  (thumbv6m-none-eabi,     QEMU microbit)
+#   Cortex-M3  (thumbv7m-none-eabi,     QEMU lm3s6965evb)
+#   Cortex-M4F (thumbv7em-none-eabihf,  QEMU mps2-an386)
+# Fails (exit 1) when the player's mean in any phase of the per-step table is
+# more than the bare load + 4 on any core.
+# Needs: the three rustup targets, rustup component llvm-tools,
+# qemu-system-arm. Usage: bash measure.sh   (KEEP_LOG=1 keeps the traces)
+set -euo pipefail
+cd "$(dirname "$0")"
+
+host=$(rustc -vV | sed -n 's/^host: //p')
+tools="$(rustc --print sysroot)/lib/rustlib/$host/bin"
+[ -x "$tools/llvm-nm" ] || rustup component add llvm-tools
+nm="$tools/llvm-nm"
+out=target/measure
+mkdir -p "$out"
+
+# One translation block per instruction: -singlestep up to QEMU 8.0,
+# -accel tcg,one-insn-per-tb=on from 8.1.
+version=$(qemu-system-arm --version | sed -n 's/.*version \([0-9]*\)\.\([0-9]*\).*/\1 \2/p')
+read -r major minor <<<"$version"
+if [ "$major" -gt 8 ] || { [ "$major" -eq 8 ] && [ "$minor" -ge 1 ]; }; then
+    one_insn=(-accel tcg,one-insn-per-tb=on)
+else
+    one_insn=(-singlestep)
+fi
+
+cores=(M0 M3 M4F)
+declare -A target=([M0]=thumbv6m-none-eabi [M3]=thumbv7m-none-eabi [M4F]=thumbv7em-none-eabihf)
+declare -A machine=([M0]="-cpu cortex-m0 -machine microbit" [M3]="-cpu cortex-m3 -machine lm3s6965evb"
+    [M4F]="-cpu cortex-m4 -machine mps2-an386")
+
+for core in "${cores[@]}"; do
+    t=${target[$core]}
+    cargo build --release --quiet --target "$t"
+    elf=target/$t/release/stepper-profiles-measure
+    # Entry addresses of the measured functions, as the trace prints them.
+    entries=$("$nm" "$elf" | awk '$3 ~ /^(bare|iter|player|stepgen|axis)_[a-z_]+$/ { printf "%s ", $1 }')
+    # shellcheck disable=SC2086
+    timeout 600 qemu-system-arm ${machine[$core]} -nographic -semihosting-config enable=on,target=native \
+        "${one_insn[@]}" -d exec,nochain -D "$out/$core.log" -kernel "$elf" >"$out/$core.txt" 2>"$out/$core.err"
+    grep -q '^ok' "$out/$core.txt" || { cat "$out/$core.txt"; exit 1; }
+    sed -n 's/^measure: \(.*\): [0-9]* \(steps\|call\)$/\1/p' "$out/$core.txt" >"$out/$core.labels"
+    # One `Trace` line per instruction: `Trace 0: HOST [../PC/../..] SYMBOL`.
+    # Between the markers, a call runs from one entry of a measured function
+    # to the next; lines of the calling loop's own function are not counted.
+    awk -v entries="$entries" '
+        function close_call() {
+            if (cur >= 0) { if (cur < lo) lo = cur; if (cur > hi) hi = cur }
+            cur = -1
+        }
+        /^Trace/ {
+            split($4, f, "/"); pc = f[2]; sym = $5
+            if (sym ~ /^measure_begin/) { inside = 1; body = 0; calls = 0; caller = "";
+                                          cur = -1; lo = 1e18; hi = 0; next }
+            if (!inside) next
+            if (sym ~ /^measure_end/) { close_call(); inside = 0; print body, calls, lo, hi; next }
+            if (caller == "") caller = sym
+            if (index(" " entries, " " pc " ")) { close_call(); cur = 0; calls++ }
+            if (sym != caller) { body++; if (cur >= 0) cur++ }
+        }' "$out/$core.log" >"$out/$core.counts"
+    [ "${KEEP_LOG:-0}" = 1 ] || rm -f "$out/$core.log"
+    paste -d'|' "$out/$core.labels" "$out/$core.counts" >"$out/$core.rows"
+    # The player's code: its functions and the step functions that call it.
+    "$nm" -S -C --radix=d "$elf" | awk '$3 ~ /^[tT]$/ && /profile_core::player|player_(step|start|stop|set_cruise)$/ { s += $2 }
+        END { print s }' >"$out/$core.flash"
+done
+
+echo "instructions per step (mean, max in parentheses), step function and callees"
+printf "%-58s" "step function"
+for core in "${cores[@]}"; do printf " %16s" "$core"; done
+echo
+status=0
+while IFS='|' read -r label _; do
+    printf "%-58s" "$label"
+    for core in "${cores[@]}"; do
+        awk -F'|' -v l="$label" '$1 == l { split($2, c, " ");
+            printf " %16s", sprintf("%.2f (%d)", c[1] / c[2], c[4]) }' "$out/$core.rows"
+    done
+    echo
+done <"$out/M3.rows"
+echo
+printf "%-58s" "player's flash (code of Player and its calls), bytes"
+for core in "${cores[@]}"; do printf " %16s" "$(cat "$out/$core.flash")"; done
+echo
+
+# The goal: the player's mean in every phase of the per-step table within
+# the bare load + 4.
+for core in "${cores[@]}"; do
+    awk -F'|' -v core="$core" '
+        { split($2, c, " "); mean[$1] = c[1] / c[2] }
+        END {
+            bare = mean["bare load, PERIODS[i] (sigmoid_exact)"]
+            for (l in mean) if (l ~ /^player, per-step table/) {
+                if (mean[l] > bare + 4) {
+                    printf "FAIL %s: %s %.2f instructions per step, more than the bare load %.2f + 4\n", core, l, mean[l], bare
+                    bad = 1
+                }
+            }
+            exit bad
+        }' "$out/$core.rows" || status=1
+done
+[ "$status" = 0 ] && echo "ok: on every core the player's per-step mean is within the bare load + 4"
+exit "$status"

@@ -1,0 +1,218 @@
+//! The figures of the README's performance table, on the core this is built
+//! for: instructions per step of a step interrupt's work, counted in QEMU's
+//! instruction trace between two marker functions (`measure.sh`).
+//!
+//! Each step function does what a step interrupt does (the next period into
+//! the timer's reload register, here SysTick's) and is neither inlined nor
+//! mangled, so that the trace names it. The loops that call them stand in
+//! for the interrupt's entry and exit, which are not counted.
+#![no_std]
+#![no_main]
+
+use cortex_m::asm;
+use cortex_m::peripheral::SYST;
+use cortex_m_rt::entry;
+use cortex_m_semihosting::{debug, hprintln};
+use panic_semihosting as _;
+use stepgen::Stepgen;
+use stepper_profiles::player::{Player, Ramp};
+
+/// The tables of the root `profiles.toml`.
+mod profiles {
+    stepper_profiles::include_profiles!("../../profiles.toml");
+}
+
+use profiles::{exponential_segments, sigmoid_exact, sigmoid_orange};
+
+/// Steps of the measured move: up the ramp, cruise, down the ramp.
+const UP: u32 = sigmoid_exact::LEN as u32;
+const CRUISE: u32 = 3000;
+
+/// Marks the start of a measured stretch in the instruction trace.
+#[inline(never)]
+#[unsafe(no_mangle)]
+pub extern "C" fn measure_begin() {
+    asm::nop();
+}
+
+/// Marks its end (another body, so that the two are not merged).
+#[inline(never)]
+#[unsafe(no_mangle)]
+pub extern "C" fn measure_end() {
+    asm::nop();
+    asm::nop();
+}
+
+/// The baseline: `reload = PERIODS[i]; i += 1`, the index checked against
+/// the table's length as safe Rust does.
+#[inline(never)]
+#[unsafe(no_mangle)]
+pub fn bare_step(next: &mut usize, timer: &mut SYST) {
+    if let Some(&period) = sigmoid_exact::PERIODS.get(*next) {
+        timer.set_reload(u32::from(period));
+        *next += 1;
+    }
+}
+
+/// The same load through a slice iterator.
+#[inline(never)]
+#[unsafe(no_mangle)]
+pub fn iter_step(periods: &mut core::slice::Iter<'_, u16>, timer: &mut SYST) {
+    if let Some(&period) = periods.next() {
+        timer.set_reload(u32::from(period));
+    }
+}
+
+/// The player's next period into the reload register.
+#[inline(never)]
+#[unsafe(no_mangle)]
+pub fn player_step(player: &mut Player<'_, u16>, timer: &mut SYST) {
+    player.step(|period| timer.set_reload(u32::from(period)));
+}
+
+/// The peer: stepgen computes each delay (16.8 fixed point, rounded).
+#[inline(never)]
+#[unsafe(no_mangle)]
+pub fn stepgen_step(stepgen: &mut Stepgen, timer: &mut SYST) {
+    if let Some(delay) = stepgen.next() {
+        timer.set_reload((delay + 128) >> 8);
+    }
+}
+
+/// Planning a move, stopping it, changing its cruise speed.
+#[inline(never)]
+#[unsafe(no_mangle)]
+pub fn player_start(player: &mut Player<'_, u16>, steps: u32) {
+    player.start(steps);
+}
+
+#[inline(never)]
+#[unsafe(no_mangle)]
+pub fn player_stop(player: &mut Player<'_, u16>) {
+    player.stop();
+}
+
+#[inline(never)]
+#[unsafe(no_mangle)]
+pub fn player_set_cruise(player: &mut Player<'_, u16>, pos: u32) {
+    player.set_cruise(pos);
+}
+
+/// Runs `steps` calls of a step function between the markers.
+fn steps(label: &str, phase: &str, n: u32, mut step: impl FnMut()) {
+    hprintln!("measure: {} {}: {} steps", label, phase, n);
+    measure_begin();
+    for _ in 0..n {
+        step();
+    }
+    measure_end();
+}
+
+/// A move of the player on `ramp`, phase by phase.
+fn player_move(label: &str, ramp: Ramp<'_, u16>, (up, cruise): (u32, u32), timer: &mut SYST) {
+    let mut player = Player::new(ramp);
+    player.start(2 * up + cruise);
+    for (phase, n) in [
+        ("accelerating", up),
+        ("cruising", cruise),
+        ("decelerating", up),
+    ] {
+        steps(label, phase, n, || player_step(&mut player, timer));
+    }
+    check(player.is_done(), label);
+}
+
+/// One call, between the markers.
+fn once(label: &str, call: impl FnOnce()) {
+    hprintln!("measure: {}: 1 call", label);
+    measure_begin();
+    call();
+    measure_end();
+}
+
+fn check(ok: bool, what: &str) {
+    if !ok {
+        hprintln!("FAIL {}", what);
+        debug::exit(debug::EXIT_FAILURE);
+    }
+}
+
+#[entry]
+fn main() -> ! {
+    let mut timer = cortex_m::Peripherals::take()
+        .expect("peripherals are taken once")
+        .SYST;
+    let timer = &mut timer;
+
+    let mut next = 0;
+    steps("bare load, PERIODS[i]", "(sigmoid_exact)", UP, || {
+        bare_step(&mut next, timer)
+    });
+    check(next == UP as usize, "bare load");
+    let mut periods = sigmoid_exact::PERIODS.iter();
+    steps("bare load, slice iterator", "(sigmoid_exact)", UP, || {
+        iter_step(&mut periods, timer)
+    });
+
+    player_move(
+        "player, per-step table (sigmoid_exact)",
+        Ramp::steps(&sigmoid_exact::PERIODS),
+        (UP, CRUISE),
+        timer,
+    );
+    player_move(
+        "player, held x4 (sigmoid_orange)",
+        Ramp::held(&sigmoid_orange::PERIODS, 4),
+        (4 * sigmoid_orange::LEN as u32, 1000),
+        timer,
+    );
+    player_move(
+        "player, segments (exponential_segments)",
+        Ramp::segments(&exponential_segments::SEGMENTS),
+        (exponential_segments::LEN as u32, 60),
+        timer,
+    );
+
+    // The peer on a move of the same shape: 1000 steps to 64 kHz (the top of
+    // sigmoid_exact, 156 ticks of 10 MHz) at constant acceleration, 3000 at
+    // the top, 1000 down.
+    let top = sigmoid_exact::FINAL_HZ as u32;
+    let mut stepgen = Stepgen::new(sigmoid_exact::TIMER_HZ);
+    let accel = top * top / (2 * UP);
+    let set = stepgen.set_acceleration(accel << 8).is_ok()
+        && stepgen.set_target_speed(top << 8).is_ok()
+        && stepgen.set_target_step(2 * UP + CRUISE).is_ok();
+    check(set, "stepgen settings");
+    for (phase, n) in [
+        ("accelerating", UP),
+        ("cruising", CRUISE),
+        ("decelerating", UP),
+    ] {
+        steps("stepgen 0.1.3", phase, n, || {
+            stepgen_step(&mut stepgen, timer)
+        });
+    }
+
+    // Planning: a move starts, changes its cruise speed, stops.
+    let mut player = Player::new(Ramp::steps(&sigmoid_exact::PERIODS));
+    once("player, start (a 5000-step move)", || {
+        player_start(&mut player, 2 * UP + CRUISE)
+    });
+    for _ in 0..UP + 100 {
+        player_step(&mut player, timer);
+    }
+    once("player, set_cruise (while cruising, to entry 500)", || {
+        player_set_cruise(&mut player, 500)
+    });
+    for _ in 0..200 {
+        player_step(&mut player, timer);
+    }
+    once("player, stop (at entry 500)", || player_stop(&mut player));
+    while player.next_period().is_some() {}
+
+    hprintln!("ok");
+    debug::exit(debug::EXIT_SUCCESS);
+    loop {
+        asm::wfi();
+    }
+}
