@@ -47,17 +47,20 @@ for core in "${cores[@]}"; do
     # One `Trace` line per instruction: `Trace 0: HOST [../PC/../..] SYMBOL`.
     # Between the markers, a call runs from one entry of a measured function
     # to the next; lines of the calling loop's own function are not counted.
+    # The first stretch is the bare load: a call above its cost + 8 is slow.
     awk -v entries="$entries" '
         function close_call() {
-            if (cur >= 0) { if (cur < lo) lo = cur; if (cur > hi) hi = cur }
+            if (cur >= 0) { if (cur < lo) lo = cur; if (cur > hi) hi = cur
+                            if (bare && cur > bare + 8) slow++ }
             cur = -1
         }
         /^Trace/ {
             split($4, f, "/"); pc = f[2]; sym = $5
             if (sym ~ /^measure_begin/) { inside = 1; body = 0; calls = 0; caller = "";
-                                          cur = -1; lo = 1e18; hi = 0; next }
+                                          cur = -1; lo = 1e18; hi = 0; slow = 0; next }
             if (!inside) next
-            if (sym ~ /^measure_end/) { close_call(); inside = 0; print body, calls, lo, hi; next }
+            if (sym ~ /^measure_end/) { close_call(); inside = 0; if (!bare) bare = hi
+                                        print body, calls, lo, hi, slow; next }
             if (caller == "") caller = sym
             if (index(" " entries, " " pc " ")) { close_call(); cur = 0; calls++ }
             if (sym != caller) { body++; if (cur >= 0) cur++ }
@@ -69,22 +72,22 @@ for core in "${cores[@]}"; do
         END { print s }' >"$out/$core.flash"
 done
 
-echo "instructions per step (mean, max in parentheses), step function and callees"
+echo "instructions per step: mean (max) [steps above the bare load + 8], step function and callees"
 printf "%-58s" "step function"
-for core in "${cores[@]}"; do printf " %16s" "$core"; done
+for core in "${cores[@]}"; do printf " %20s" "$core"; done
 echo
 status=0
 while IFS='|' read -r label _; do
     printf "%-58s" "$label"
     for core in "${cores[@]}"; do
         awk -F'|' -v l="$label" '$1 == l { split($2, c, " ");
-            printf " %16s", sprintf("%.2f (%d)", c[1] / c[2], c[4]) }' "$out/$core.rows"
+            printf " %20s", sprintf("%.2f (%d) [%d]", c[1] / c[2], c[4], c[5]) }' "$out/$core.rows"
     done
     echo
 done <"$out/M3.rows"
 echo
 printf "%-58s" "player's flash (code of Player and its calls), bytes"
-for core in "${cores[@]}"; do printf " %16s" "$(cat "$out/$core.flash")"; done
+for core in "${cores[@]}"; do printf " %20s" "$(cat "$out/$core.flash")"; done
 echo
 
 # The goal: the player's mean in every phase of the per-step table within

@@ -462,3 +462,45 @@ fn empty_segments_play_as_their_expansion() {
     let played: Vec<u16> = std::iter::from_fn(|| player.next_period()).collect();
     assert_eq!(played, [900, 900, 900, 300, 300, 300, 900, 900, 900]);
 }
+
+/// The axis: positions after random moves, stops and cruise changes are the
+/// sum of the steps played, signed by the direction each move reported.
+#[test]
+fn the_axis_knows_where_the_motor_is() {
+    use profile_core::player::{Axis, Direction};
+    use proptest::test_runner::{Config, TestRunner};
+    let mut runner = TestRunner::new(Config {
+        cases: cases(),
+        failure_persistence: None,
+        ..Config::default()
+    });
+    let moves = proptest::collection::vec((-500i64..500, 0u32..600, any::<bool>()), 1..8);
+    runner
+        .run(&(table(), moves), |(table, moves)| {
+            let mut axis = Axis::new(Player::new(Ramp::steps(&table)), 7);
+            let mut position = 7i64;
+            for (delta, stop_at, stop) in moves {
+                let direction = axis.move_by(delta).expect("at rest");
+                prop_assert_eq!(direction == Direction::Backward, delta < 0);
+                // A move is refused while another plays.
+                if axis.remaining() > 0 {
+                    prop_assert!(axis.move_to(0).is_err());
+                }
+                let mut k = 0;
+                while axis.step(|_| {}) {
+                    position += direction.sign();
+                    k += 1;
+                    prop_assert_eq!(axis.position(), position);
+                    if stop && k == stop_at {
+                        axis.stop();
+                    }
+                }
+                prop_assert_eq!(axis.position(), position);
+            }
+            axis.move_to(-3).expect("at rest");
+            while axis.step(|_| {}) {}
+            prop_assert_eq!(axis.position(), -3);
+            Ok(())
+        })
+        .unwrap_or_else(|e| panic!("{e}"));
+}

@@ -1,9 +1,10 @@
 //! Plays the period tables of the root `profiles.toml` on a Cortex-M3 (QEMU's
 //! `lm3s6965evb`) and checks every step.
 //!
-//! A loop stands in for the step interrupt: each call of [`step_interrupt`]
-//! asks the [`Player`] for the next period and writes it to the SysTick
-//! reload register, as a step timer's interrupt writes its reload register.
+//! The moves play from a real step interrupt: SysTick's exception handler
+//! (`step.rs`) takes each period from a [`Player`](stepper_profiles::player::Player)
+//! held in a `critical_section::Mutex`, writes it to the reload register and
+//! toggles a GPIO step pin; the main program starts each move and waits.
 //! The moves cover a trapezoid, a triangle, an asymmetric ramp pair, stops,
 //! cruise changes, a held (divider) ramp and a segment table; each is compared
 //! step by step with a plain reference reading of the tables and with the
@@ -12,22 +13,20 @@
 //! for bit with the ones the macros put in flash.
 //!
 //! `cargo run --release` prints a summary over semihosting and exits QEMU with
-//! status 0, or 1 on any mismatch or panic. With `--features measure` only the
-//! measured step loops run (see `measure.sh`).
+//! status 0, or 1 on any mismatch or panic. Instructions per step are
+//! measured on three cores by `examples/measure`.
 #![no_std]
 #![no_main]
 
-mod measure;
 mod moves;
 mod regen;
 mod stack;
+mod step;
 
-use cortex_m::peripheral::SYST;
 use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprintln};
 use panic_semihosting as _;
 use stepper_profiles::period_table;
-use stepper_profiles::player::Player;
 
 /// Every profile of the root `profiles.toml`, compiled into flash: one module
 /// per profile with `PERIODS` (or `SEGMENTS`), `LEN`, `TIMER_HZ`,
@@ -60,17 +59,6 @@ pub static SEED: [u16; 1000] = period_table!(
     rounding = truncate,
     arithmetic = f32,
 );
-
-/// The step interrupt's work: the next period into the timer's reload
-/// register (here SysTick's), `None` when the move is over. Not inlined and
-/// not mangled, so that `measure.sh` finds it in QEMU's instruction trace.
-#[inline(never)]
-#[unsafe(no_mangle)]
-pub fn step_interrupt(player: &mut Player<'_, u16>, timer: &mut SYST) -> Option<u16> {
-    let period = player.next_period()?;
-    timer.set_reload(u32::from(period));
-    Some(period)
-}
 
 /// Counts failed checks and prints each one.
 #[derive(Default)]
@@ -109,24 +97,19 @@ impl Report {
 #[entry]
 fn main() -> ! {
     stack::paint();
-    let mut timer = cortex_m::Peripherals::take()
+    let timer = cortex_m::Peripherals::take()
         .expect("peripherals are taken once")
         .SYST;
     let mut report = Report::default();
 
-    if cfg!(feature = "measure") {
-        measure::run(&mut timer, &mut report);
-    } else {
-        hprintln!("stepper-profiles firmware: Cortex-M3, tables from profiles.toml");
-        moves::run(&mut timer, &mut report);
-        regen::run(&mut report);
-        measure::run(&mut timer, &mut report);
-        hprintln!(
-            "stack: {} bytes at most, of {} free",
-            stack::peak(),
-            stack::size()
-        );
-    }
+    hprintln!("stepper-profiles firmware: Cortex-M3, tables from profiles.toml");
+    moves::run(timer, &mut report);
+    regen::run(&mut report);
+    hprintln!(
+        "stack: {} bytes at most, of {} free",
+        stack::peak(),
+        stack::size()
+    );
 
     if report.failures == 0 {
         hprintln!("ok: {} checks passed", report.checks);

@@ -7,7 +7,8 @@ use cortex_m_semihosting::hprintln;
 use stepper_profiles::player::{Player, Ramp};
 
 use crate::profiles::{exponential_segments, sigmoid_exact, sigmoid_orange};
-use crate::{DECEL, Report, step_interrupt};
+use crate::step::{self, Stepper};
+use crate::{DECEL, Report};
 
 /// A ramp as the reference model reads it.
 #[derive(Clone, Copy)]
@@ -183,7 +184,7 @@ pub struct Move<'a> {
     /// Steps asked of `Player::start`.
     pub steps: u32,
     /// Events before given steps.
-    pub events: &'a [(u32, Event)],
+    pub events: &'static [(u32, Event)],
 }
 
 /// What a move amounted to.
@@ -205,35 +206,43 @@ pub struct Played {
     pub stop_ok: bool,
 }
 
-/// Plays `m` through the step interrupt and compares every step with the model.
-pub fn play(m: &Move<'_>, timer: &mut SYST, report: &mut Report) -> Played {
+/// Plays `m` from the step interrupt and compares every step with the model.
+pub fn play(
+    m: &Move<'static>,
+    timer: SYST,
+    log: &'static mut [u16; step::MAX_STEPS],
+    report: &mut Report,
+) -> (Played, SYST, &'static mut [u16; step::MAX_STEPS]) {
     let mut player = Player::with_decel(m.accel.ramp(), m.decel.ramp());
-    let mut model = Model::new(m.accel, m.decel, m.steps);
     player.start(m.steps);
+    let s = step::run(Stepper {
+        player,
+        timer,
+        events: m.events,
+        log,
+        steps: 0,
+        after_events: [0; 4],
+        toggles: 0,
+        finished: false,
+    });
+    // The model, step by step, with the events where the handler applied them.
+    let mut model = Model::new(m.accel, m.decel, m.steps);
     let mut out = Played {
         min: u16::MAX,
         stop_ok: true,
         ..Played::default()
     };
     let mut stopped = false;
-    let mut k = 0u32;
-    loop {
-        for &(_, event) in m.events.iter().filter(|&&(at, _)| at == k) {
-            match event {
-                Event::Cruise(pos) => player.set_cruise(pos),
-                Event::Stop => {
-                    player.stop();
-                    stopped = true;
-                }
-            }
-            out.stop_ok &= model.apply(event, player.remaining());
+    for (k, &got) in s.log[..s.steps.min(step::MAX_STEPS)].iter().enumerate() {
+        for (i, &(_, event)) in m.events.iter().enumerate().filter(|(_, e)| e.0 == k as u32) {
+            out.stop_ok &= model.apply(event, s.after_events[i]);
+            stopped |= matches!(event, Event::Stop);
         }
-        let got = step_interrupt(&mut player, timer);
         let want = model.next();
-        if got != want {
+        if Some(got) != want {
             if out.mismatches == 0 {
                 hprintln!(
-                    "FAIL {}: step {}: player {:?}, model {:?}",
+                    "FAIL {}: step {}: player {}, model {:?}",
                     m.name,
                     k,
                     got,
@@ -242,22 +251,29 @@ pub fn play(m: &Move<'_>, timer: &mut SYST, report: &mut Report) -> Played {
             }
             out.mismatches += 1;
         }
-        let Some(period) = got else { break };
-        if stopped && out.steps > 0 && period < out.last {
+        if stopped && out.steps > 0 && got < out.last {
             out.stop_ok = false;
         }
         stopped = false;
         out.steps += 1;
-        out.ticks += u64::from(period);
-        out.last = period;
-        out.min = out.min.min(period);
-        k += 1;
-        if k > m.steps {
-            break;
-        }
+        out.ticks += u64::from(got);
+        out.last = got;
+        out.min = out.min.min(got);
+    }
+    if model.next().is_some() {
+        out.mismatches += 1;
     }
     report.equal(m.name, u64::from(out.mismatches), 0);
-    report.equal("player done after the move", u64::from(player.is_done()), 1);
+    report.equal(
+        "player done after the move",
+        u64::from(s.player.is_done()),
+        1,
+    );
+    report.equal(
+        "a step pin toggle per step",
+        u64::from(s.toggles),
+        u64::from(out.steps),
+    );
     hprintln!(
         "  {:<34} {:>6} steps {:>9} ticks  top {:>5}  end {:>5}",
         m.name,
@@ -266,7 +282,7 @@ pub fn play(m: &Move<'_>, timer: &mut SYST, report: &mut Report) -> Played {
         out.min,
         out.last
     );
-    out
+    (out, s.timer, s.log)
 }
 
 fn sum(periods: &[u16]) -> u64 {
@@ -547,16 +563,20 @@ fn scenarios() -> [Scenario<'static>; 11] {
     ]
 }
 
-/// Plays every move and checks what it amounts to.
-pub fn run(timer: &mut SYST, report: &mut Report) {
+/// Plays every move from the step interrupt and checks what it amounts to.
+pub fn run(mut timer: SYST, report: &mut Report) -> SYST {
     hprintln!("moves (ticks of each table's timer):");
     report.equal(
         "sigmoid_exact ramp = TOTAL_TICKS",
         sum(&sigmoid_exact::PERIODS),
         sigmoid_exact::TOTAL_TICKS,
     );
+    step::init_step_pin();
+    let mut log = cortex_m::singleton!(: [u16; step::MAX_STEPS] = [0; step::MAX_STEPS])
+        .expect("the log is taken once");
     for Scenario { play: m, expect } in scenarios() {
-        let p = play(&m, timer, report);
+        let (p, t, l) = play(&m, timer, log, report);
+        (timer, log) = (t, l);
         let (lo, hi) = expect.steps;
         report.check(
             (lo..=hi).contains(&p.steps),
@@ -581,4 +601,5 @@ pub fn run(timer: &mut SYST, report: &mut Report) {
         u64::from(*core::hint::black_box(&crate::SEED) == sigmoid_orange::PERIODS),
         1,
     );
+    timer
 }

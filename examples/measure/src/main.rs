@@ -15,7 +15,7 @@ use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprintln};
 use panic_semihosting as _;
 use stepgen::Stepgen;
-use stepper_profiles::player::{Player, Ramp};
+use stepper_profiles::player::{Axis, Player, Ramp};
 
 /// The tables of the root `profiles.toml`.
 mod profiles {
@@ -68,6 +68,14 @@ pub fn iter_step(periods: &mut core::slice::Iter<'_, u16>, timer: &mut SYST) {
 #[unsafe(no_mangle)]
 pub fn player_step(player: &mut Player<'_, u16>, timer: &mut SYST) {
     player.step(|period| timer.set_reload(u32::from(period)));
+}
+
+/// The axis's next step into the reload register: the player's, with the
+/// position kept.
+#[inline(never)]
+#[unsafe(no_mangle)]
+pub fn axis_step(axis: &mut Axis<'_, u16>, timer: &mut SYST) {
+    axis.step(|period| timer.set_reload(u32::from(period)));
 }
 
 /// The peer: stepgen computes each delay (16.8 fixed point, rounded).
@@ -171,6 +179,26 @@ fn main() -> ! {
         Ramp::segments(&exponential_segments::SEGMENTS),
         (exponential_segments::LEN as u32, 60),
         timer,
+    );
+
+    // The axis on the same move as the per-step player, backwards.
+    let mut axis = Axis::new(Player::new(Ramp::steps(&sigmoid_exact::PERIODS)), 0);
+    check(
+        axis.move_by(-i64::from(2 * UP + CRUISE)).is_ok(),
+        "axis move",
+    );
+    for (phase, n) in [
+        ("accelerating", UP),
+        ("cruising", CRUISE),
+        ("decelerating", UP),
+    ] {
+        steps("axis, per-step table (sigmoid_exact)", phase, n, || {
+            axis_step(&mut axis, timer)
+        });
+    }
+    check(
+        axis.position() == -i64::from(2 * UP + CRUISE),
+        "axis position",
     );
 
     // The peer on a move of the same shape: 1000 steps to 64 kHz (the top of

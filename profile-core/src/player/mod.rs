@@ -41,10 +41,12 @@
 //! assert_eq!(periods, [4000, 2500, 2000, 1800, 1800, 1800, 1800, 2000, 2500, 4000]);
 //! ```
 
+mod axis;
 mod plan;
 mod ramp;
 
 use crate::base::timer::TableWord;
+pub use axis::{Axis, Direction, Moving};
 use plan::{Plan, Run, Sides};
 pub use ramp::Ramp;
 

@@ -291,15 +291,49 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
     /// acceleration side plays until the deceleration ramp, read at the steps
     /// that remain, is not faster; then the deceleration ramp plays to the end.
     fn within_reach(&self, plan: &mut Plan<'a, W>, p: u32, r: u32) {
+        let j = self.crossing(p, r);
+        let p = self.walk(plan, p, j);
+        if j < r {
+            let after = r - 1 - j;
+            plan.push(self.stretch(true, after, -1, after + 1, p, 0));
+        }
+    }
+
+    /// The first of the last `r` steps at which the deceleration ramp, read
+    /// at the steps that remain, is not faster than the acceleration side
+    /// (walking from `p` towards the cruise position); `r` if none is.
+    fn crossing(&self, p: u32, r: u32) -> u32 {
+        if let (
+            Ramp::Steps {
+                periods: a,
+                hold: 0..=1,
+            },
+            Ramp::Steps {
+                periods: d,
+                hold: 0..=1,
+            },
+        ) = (*self.accel, *self.decel)
+        {
+            // Per-step tables: read them directly.
+            let (mut pa, mut di) = (p as usize, r as usize - 1);
+            for j in 0..r {
+                let (Some(da), Some(aa)) = (d.get(di), a.get(pa)) else {
+                    break;
+                };
+                if da.into_ticks() >= aa.into_ticks() {
+                    return j;
+                }
+                di = di.wrapping_sub(1);
+                pa = self.toward(pa as u32).0 as usize;
+            }
+            return r;
+        }
         let mut d = Cursor::at(self.decel, r - 1).unwrap_or(Cursor::ZERO);
         let mut a = Cursor::at(self.accel, p).unwrap_or(Cursor::ZERO);
         let mut j = 0;
         while j < r {
             if d.period(self.decel).into_ticks() >= a.period(self.accel).into_ticks() {
-                let p = self.walk(plan, p, j);
-                let after = r - 1 - j;
-                plan.push(self.stretch(true, after, -1, after + 1, p, 0));
-                return;
+                return j;
             }
             j += 1;
             d.backward(self.decel);
@@ -313,6 +347,6 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
                 _ => {}
             }
         }
-        self.walk(plan, p, r);
+        r
     }
 }

@@ -102,13 +102,13 @@ impl Cursor {
     pub(crate) fn at<W: TableWord>(ramp: &Ramp<'_, W>, pos: u32) -> Option<Cursor> {
         match *ramp {
             Ramp::Steps { periods, hold } => {
-                let hold = hold.max(1);
-                let entry = pos / hold;
-                ((entry as usize) < periods.len()).then_some(Cursor {
-                    pos,
-                    entry,
-                    within: pos % hold,
-                })
+                // No division for a table played entry by entry.
+                let (entry, within) = if hold <= 1 {
+                    (pos, 0)
+                } else {
+                    (pos / hold, pos % hold)
+                };
+                ((entry as usize) < periods.len()).then_some(Cursor { pos, entry, within })
             }
             Ramp::Segments(pairs) => {
                 let mut start = 0u32;
