@@ -4,7 +4,7 @@
 //! whole `-500` (a `Span` cannot be joined on stable Rust).
 
 use proc_macro2::TokenStream;
-use profile_core::schema::{self, Arg, MAX_DIGITS, Value};
+use profile_core::schema::{self, Arg, MAX_DIGITS, Value, units};
 use quote::ToTokens;
 use syn::parse::{Parse, ParseStream, Parser};
 use syn::punctuated::Punctuated;
@@ -63,37 +63,40 @@ fn parse_value(input: ParseStream, key: &Ident) -> syn::Result<(Value, Loc)> {
     let mut loc = minus.to_token_stream();
     lit.to_tokens(&mut loc);
     let negative = minus.is_some();
-    let value = match Lit::new(lit) {
-        Lit::Int(i) => {
-            number_suffix(key, i.suffix(), &loc)?;
-            digits(key, i.base10_digits(), &loc)?;
-            match i.base10_parse::<i128>() {
-                Ok(v) => Value::Int(if negative { -v } else { v }),
-                Err(_) => Value::Float(float(key, i.base10_digits(), negative, &loc)?),
-            }
-        }
-        Lit::Float(f) => {
-            number_suffix(key, f.suffix(), &loc)?;
-            digits(key, f.base10_digits(), &loc)?;
-            Value::Float(float(key, f.base10_digits(), negative, &loc)?)
-        }
-        Lit::Str(s) if !negative => Value::Name(s.value()),
+    let (text, suffix) = match Lit::new(lit) {
+        Lit::Int(i) => (i.base10_digits().to_string(), i.suffix().to_string()),
+        Lit::Float(f) => (f.base10_digits().to_string(), f.suffix().to_string()),
+        Lit::Str(s) if !negative => return Ok((Value::Name(s.value()), loc)),
         _ => return Err(syn::Error::new_spanned(loc, expected())),
+    };
+    digits(key, &text, &loc)?;
+    let number = if negative {
+        format!("-{text}")
+    } else {
+        text.clone()
+    };
+    if !suffix.is_empty() {
+        return Ok((quantity(number, &suffix), loc));
+    }
+    // A unit after a space, `64 kHz`, reads as `64kHz`.
+    if input.peek(Ident) {
+        let unit: Ident = input.parse()?;
+        unit.to_tokens(&mut loc);
+        return Ok((quantity(number, &unit.to_string()), loc));
+    }
+    let integer = text.bytes().all(|b| b.is_ascii_digit());
+    let value = match text.parse::<i128>() {
+        Ok(v) if integer => Value::Int(if negative { -v } else { v }),
+        _ => Value::Float(float(key, &text, negative, &loc)?),
     };
     Ok((value, loc))
 }
 
-/// Refuses a suffix on a number: `200u8` would otherwise read as 200.
-fn number_suffix(key: &Ident, suffix: &str, loc: &Loc) -> syn::Result<()> {
-    if suffix.is_empty() {
-        Ok(())
-    } else {
-        Err(syn::Error::new_spanned(
-            loc,
-            format!(
-                "`{key}` takes a plain number: the suffix `{suffix}` is not a unit this key accepts"
-            ),
-        ))
+/// A number with a unit or a suffix, which the schema reads for its key.
+fn quantity(number: String, unit: &str) -> Value {
+    Value::Quantity {
+        number,
+        unit: unit.to_string(),
     }
 }
 
@@ -135,9 +138,9 @@ fn parse_points(input: ParseStream, key: &Ident) -> syn::Result<(Value, Loc)> {
         while !content.is_empty() {
             let inner;
             syn::parenthesized!(inner in content);
-            let x = number(&inner)?;
+            let x = number(&inner, true)?;
             inner.parse::<Token![,]>()?;
-            let y = number(&inner)?;
+            let y = number(&inner, false)?;
             let _: Option<Token![,]> = inner.parse()?;
             if !inner.is_empty() {
                 return Err(inner.error("expected a pair"));
@@ -150,30 +153,38 @@ fn parse_points(input: ParseStream, key: &Ident) -> syn::Result<(Value, Loc)> {
         }
         Ok(points)
     };
-    let points = pairs
-        .parse2(group.stream())
-        .map_err(|_| syn::Error::new_spanned(&loc, expected()))?;
+    let points = pairs.parse2(group.stream()).map_err(|e| {
+        // A frequency's unit error names the key and stands at the
+        // literal; any other mistake is the list's.
+        if e.to_string().starts_with("`torque_curve`") {
+            e
+        } else {
+            syn::Error::new_spanned(&loc, expected())
+        }
+    })?;
     Ok((Value::Points(points), loc))
 }
 
-/// A number literal, possibly negative, as `f64`.
-fn number(input: ParseStream) -> syn::Result<f64> {
+/// A number literal, possibly negative, as `f64`; a frequency (`frequency`)
+/// may carry a unit, `1kHz`.
+fn number(input: ParseStream, frequency: bool) -> syn::Result<f64> {
     let minus: Option<Token![-]> = input.parse()?;
-    let sign = if minus.is_some() { -1.0 } else { 1.0 };
+    let sign = if minus.is_some() { "-" } else { "" };
     let lit = input.step(|cursor| match cursor.literal() {
         Some((lit, rest)) => Ok((lit, rest)),
         None => Err(cursor.error("expected a number")),
     })?;
-    let value = match Lit::new(lit) {
-        Lit::Int(i) if i.suffix().is_empty() && i.base10_digits().len() <= MAX_DIGITS => {
-            i.base10_parse::<f64>()?
-        }
-        Lit::Float(f) if f.suffix().is_empty() && f.base10_digits().len() <= MAX_DIGITS => {
-            f.base10_parse::<f64>()?
-        }
-        other => return Err(syn::Error::new(other.span(), "expected a number")),
+    let span = lit.span();
+    let (text, suffix) = match Lit::new(lit) {
+        Lit::Int(i) => (i.base10_digits().to_string(), i.suffix().to_string()),
+        Lit::Float(f) => (f.base10_digits().to_string(), f.suffix().to_string()),
+        _ => return Err(syn::Error::new(span, "expected a number")),
     };
-    Ok(sign * value)
+    if text.len() > MAX_DIGITS || !suffix.is_empty() && !frequency {
+        return Err(syn::Error::new(span, "expected a number"));
+    }
+    let unit = if suffix.is_empty() { "Hz" } else { &suffix };
+    units::frequency(&format!("{sign}{text}"), unit).map_err(|m| syn::Error::new(span, m))
 }
 
 /// Parses the macro's input into arguments, or a syntax error.
@@ -215,6 +226,33 @@ mod tests {
             Value::Points(vec![(0.0, 0.4), (1000.0, -10.0)])
         );
         assert!(parse(quote::quote!(torque_curve = [(0, 0.4, 1)])).is_err());
+        let curve = parse(quote::quote!(torque_curve = [(0.5kHz, 0.4), (2 MHz, 0.1)]));
+        assert!(
+            curve.is_err(),
+            "a unit after a space is not a literal in a list"
+        );
+        let curve = parse(quote::quote!(torque_curve = [(0.5kHz, 0.4), (2MHz, 0.1)])).unwrap();
+        assert_eq!(
+            curve[0].value,
+            Value::Points(vec![(500.0, 0.4), (2e6, 0.1)])
+        );
+        let units =
+            parse(quote::quote!(fmax = 64kHz, tau = 5 ms, fmin = -1.5e3Hz, len = 10u32)).unwrap();
+        let quantity = |n: &str, u: &str| Value::Quantity {
+            number: n.into(),
+            unit: u.into(),
+        };
+        let values: Vec<_> = units.iter().map(|a| a.value.clone()).collect();
+        assert_eq!(
+            values,
+            vec![
+                quantity("64", "kHz"),
+                quantity("5", "ms"),
+                quantity("-1.5e3", "Hz"),
+                quantity("10", "u32"),
+            ]
+        );
+        assert_eq!(units[1].value_loc.to_string(), "5 ms");
         assert!(parse(quote::quote!(torque_curve = [0, 0.4])).is_err());
     }
 
@@ -236,8 +274,13 @@ mod tests {
             ),
             ("fmin = --500", "`fmin` expects a number after `-`"),
             (
-                "fmin = 200u8",
-                "`fmin` takes a plain number: the suffix `u8` is not a unit this key accepts",
+                "torque_curve = [(1kHz2, 0.4)]",
+                "`torque_curve` frequencies accept the units `Hz`, `kHz`, `MHz` (got `1kHz2`); \
+                 did you mean `kHz`?",
+            ),
+            (
+                "torque_curve = [(1, 0.4Nm)]",
+                "`torque_curve` expects a list of number pairs, such as `[(0, 0.4), (1000, 0.3)]`",
             ),
             (
                 "fmax = 1e999",

@@ -45,8 +45,13 @@ mod include;
 /// | `rounding` | `truncate`, `nearest`, `diffuse` | `diffuse` |
 /// | `arithmetic` | `f64`, `f32` (seed 000's C code, with `index`) | `f64` |
 ///
-/// Integer literals are accepted where a number is expected. Every mistake is
-/// a compile error at the offending key or value, saying what is expected.
+/// Integer literals are accepted where a number is expected. A frequency may
+/// carry a unit, `Hz`, `kHz` or `MHz`, and a time `s`, `ms` or `us`, with or
+/// without a space (`fmax = 64kHz`, `timer_hz = 10 MHz`, `tau = 5ms`): the
+/// number is scaled in decimal, so `64kHz` gives the table of `64_000`. Any
+/// other suffix, a type suffix such as `500u32` included, is an error. Every
+/// mistake is a compile error at the offending key or value, saying what is
+/// expected.
 #[proc_macro]
 pub fn period_table(input: proc_macro::TokenStream) -> proc_macro::TokenStream {
     expand::period_table(input.into()).into()

@@ -11,7 +11,7 @@ use serde::Deserialize;
 use toml::Spanned;
 
 use crate::base::key::Key;
-use crate::schema::{self, Arg, Diagnostic, Hint, Value, did_you_mean};
+use crate::schema::{self, Arg, Diagnostic, Hint, Value, did_you_mean, units};
 
 type Table = BTreeMap<Spanned<String>, Spanned<toml::Value>>;
 
@@ -77,17 +77,25 @@ fn value(v: &Spanned<toml::Value>) -> Value {
     }
 }
 
-/// `[[x, y], ...]` as number pairs, if that is what the array holds.
+/// `[[x, y], ...]` as number pairs, if that is what the array holds; a
+/// frequency `x` may be a string with a unit, `"1.5 kHz"`.
 fn points(items: &[toml::Value]) -> Option<Vec<(f64, f64)>> {
     let number = |v: &toml::Value| match v {
         toml::Value::Integer(i) => Some(*i as f64),
         toml::Value::Float(f) => Some(*f),
         _ => None,
     };
+    let frequency = |v: &toml::Value| match v {
+        toml::Value::String(s) => {
+            let (n, unit) = units::split(s)?;
+            units::frequency(n, unit).ok()
+        }
+        other => number(other),
+    };
     items
         .iter()
         .map(|item| match item.as_array().map(|a| a.as_slice()) {
-            Some([x, y]) => Some((number(x)?, number(y)?)),
+            Some([x, y]) => Some((frequency(x)?, number(y)?)),
             _ => None,
         })
         .collect()

@@ -1,6 +1,5 @@
 //! Saying where a problem is, and what a spec holds, as a user writes it.
 
-use std::format;
 use std::string::{String, ToString};
 use std::vec::Vec;
 
@@ -19,13 +18,16 @@ pub fn describe(spec: &Spec) -> Vec<(Key, String)> {
         out.push((
             key,
             match value {
-                Param::Number(v) => format!("{v}"),
+                Param::Number(v) => super::units::show(key, v),
                 Param::Count(n) => n.to_string(),
             },
         ))
     });
     out.extend([
-        (Key::TIMER_HZ, spec.timer.timer_hz.to_string()),
+        (
+            Key::TIMER_HZ,
+            super::units::show(Key::TIMER_HZ, f64::from(spec.timer.timer_hz)),
+        ),
         (Key::WORD, spec.timer.word.name().to_string()),
         (Key::TICKS_PER_STEP, spec.timer.ticks_per_step.to_string()),
         (Key::DISCRETIZATION, spec.discretization.name().to_string()),

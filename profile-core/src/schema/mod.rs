@@ -19,6 +19,7 @@ mod describe;
 mod read;
 mod reader;
 mod suggest;
+pub mod units;
 
 pub use describe::{describe, locate, locate_motor};
 pub use read::{Request, read};
@@ -33,6 +34,14 @@ pub enum Value {
     Float(f64),
     /// A bare name or a string: `sigmoid`, `"u16"`.
     Name(String),
+    /// A number written with a unit or a suffix, as written: `64kHz` is
+    /// `number` `"64"` and `unit` `"kHz"`. Keys read it through [`units`].
+    Quantity {
+        /// The number: sign, digits, point and exponent, without `_`.
+        number: String,
+        /// The unit or suffix.
+        unit: String,
+    },
     /// A list of `(x, y)` number pairs: `[(0, 0.4), (1000, 0.3)]`.
     Points(Vec<(f64, f64)>),
     /// A value of a kind no key takes, described: `a boolean`, `an array`.
@@ -64,6 +73,7 @@ impl core::fmt::Display for Value {
             Value::Int(v) => write!(f, "{v}"),
             Value::Float(v) => write!(f, "{v:?}"),
             Value::Name(v) | Value::Other(v) => f.write_str(v),
+            Value::Quantity { number, unit } => write!(f, "{number}{unit}"),
             Value::Points(points) => {
                 f.write_str("[")?;
                 for (i, (x, y)) in points.iter().enumerate() {

@@ -6,7 +6,7 @@ use std::string::{String, ToString};
 use std::vec::Vec;
 
 use super::suggest::{Hint, did_you_mean};
-use super::{Arg, Diagnostic, Value, quoted, unit};
+use super::{Arg, Diagnostic, Value, quoted, unit, units};
 use crate::base::MAX_LEN;
 use crate::base::error::Error;
 use crate::base::key::Key;
@@ -51,9 +51,36 @@ impl<L: Clone> Collector<'_, L> {
             .find(|(_, a)| a.key == key.name())
     }
 
+    /// The value of a numeric key, its unit applied; a unit the key does not
+    /// take is reported.
+    fn numeric(&mut self, key: Key) -> Option<(usize, Value)> {
+        let (i, _) = self.find(key)?;
+        let args = self.args;
+        let arg_value = &args[i].value;
+        let (number, unit) = match arg_value {
+            Value::Quantity { number, unit } => (number.as_str(), unit.as_str()),
+            Value::Name(text) => match units::split(text) {
+                Some(split) => split,
+                None => return Some((i, arg_value.clone())),
+            },
+            other => return Some((i, other.clone())),
+        };
+        let written = match arg_value {
+            Value::Name(text) => text.trim().to_string(),
+            other => other.to_string(),
+        };
+        match units::with_unit(key, number, unit, &written) {
+            Ok(v) => Some((i, v)),
+            Err(message) => {
+                self.at_arg(i, false, message);
+                None
+            }
+        }
+    }
+
     pub(crate) fn float(&mut self, key: Key) -> Option<f64> {
-        let (i, arg) = self.find(key)?;
-        match &arg.value {
+        let (i, value) = self.numeric(key)?;
+        match &value {
             Value::Int(v) => Some(*v as f64),
             Value::Float(v) => Some(*v),
             other => {
@@ -69,8 +96,8 @@ impl<L: Clone> Collector<'_, L> {
     }
 
     pub(crate) fn int(&mut self, key: Key, expected: &str) -> Option<i128> {
-        let (i, arg) = self.find(key)?;
-        match &arg.value {
+        let (i, value) = self.numeric(key)?;
+        match &value {
             Value::Int(v) => Some(*v),
             other => {
                 let message = format!("`{key}` expects {expected}, got {}", other.quoted());

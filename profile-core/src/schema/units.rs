@@ -1,0 +1,334 @@
+//! Units: which keys take a frequency or a time, the units each accepts,
+//! and numbers written with one (`64kHz`, `"5 ms"`) read exactly.
+//!
+//! A unit scales the number as written, in decimal, before it becomes a
+//! float: `64kHz` is the integer 64000, `0.1MHz` the integer 100000 and
+//! `2.5ms` the `f64` nearest to 0.0025, as if written so. A table given
+//! `fmax = 64kHz` is the table given `fmax = 64_000`.
+
+use std::format;
+use std::string::{String, ToString};
+
+use super::suggest::{Hint, did_you_mean};
+use super::{Value, quoted};
+use crate::base::key::Key;
+
+/// What a numeric key measures, when it has a unit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Quantity {
+    /// A frequency: `Hz`, `kHz`, `MHz`.
+    Frequency,
+    /// A time: `s`, `ms`, `us`.
+    Time,
+}
+
+impl Quantity {
+    /// The units accepted, each with its power of ten, the base unit first.
+    pub fn units(self) -> &'static [(&'static str, i32)] {
+        match self {
+            Quantity::Frequency => &[("Hz", 0), ("kHz", 3), ("MHz", 6)],
+            Quantity::Time => &[("s", 0), ("ms", -3), ("us", -6)],
+        }
+    }
+
+    /// The power of ten of `unit`, if accepted. `µs` and `μs` are `us`.
+    fn exponent(self, unit: &str) -> Option<i32> {
+        let unit = match unit {
+            "µs" | "μs" => "us",
+            u => u,
+        };
+        self.units()
+            .iter()
+            .find(|(u, _)| *u == unit)
+            .map(|(_, e)| *e)
+    }
+
+    /// The accepted units, for messages: `` `Hz`, `kHz`, `MHz` ``.
+    pub fn listed(self) -> String {
+        quoted(self.units().iter().map(|(u, _)| *u))
+    }
+}
+
+/// What `key` measures, if it takes a unit.
+pub fn quantity(key: Key) -> Option<Quantity> {
+    match key {
+        Key::MAX_START_HZ => Some(Quantity::Frequency),
+        _ => match super::unit(key) {
+            "Hz" | "Hz (steps/s)" => Some(Quantity::Frequency),
+            "s" => Some(Quantity::Time),
+            _ => None,
+        },
+    }
+}
+
+/// Rust's numeric type suffixes, which a key refuses as such.
+const TYPE_SUFFIXES: [&str; 14] = [
+    "u8", "u16", "u32", "u64", "u128", "usize", "i8", "i16", "i32", "i64", "i128", "isize", "f32",
+    "f64",
+];
+
+/// The value of `number` (decimal, as written: sign, digits, point,
+/// exponent, no `_`) in `unit`, as `key` reads it, or what is wrong;
+/// `written` is the value as the user wrote it, for messages.
+pub fn with_unit(key: Key, number: &str, unit: &str, written: &str) -> Result<Value, String> {
+    let got = format!("`{written}`");
+    if TYPE_SUFFIXES.contains(&unit) {
+        let units = quantity(key).map_or(String::new(), |q| {
+            format!(", or with a unit ({})", q.listed())
+        });
+        return Err(format!(
+            "`{key}` takes a number without a type suffix (got {got}): write `{number}`{units}"
+        ));
+    }
+    let Some(q) = quantity(key) else {
+        let plain = match super::unit(key) {
+            "" => String::new(),
+            u => format!(" (in {u})"),
+        };
+        return Err(format!(
+            "`{key}` takes a plain number{plain}, without a unit (got {got})"
+        ));
+    };
+    let Some(exponent) = q.exponent(unit) else {
+        let names = q.units().iter().map(|(u, _)| *u);
+        let hint = did_you_mean(unit, names, Hint::After);
+        return Err(format!(
+            "`{key}` accepts the units {} (got {got}){hint}",
+            q.listed()
+        ));
+    };
+    scaled(number, exponent).ok_or_else(|| format!("`{key}` expects a number, got {got}"))
+}
+
+/// `number` times `10^exponent`, shifted in decimal: an integer when the
+/// result is one, else the nearest `f64`. `None` when `number` is not a
+/// decimal number or the result is not finite.
+pub fn scaled(number: &str, exponent: i32) -> Option<Value> {
+    let (negative, rest) = match number.strip_prefix('-') {
+        Some(r) => (true, r),
+        None => (false, number.strip_prefix('+').unwrap_or(number)),
+    };
+    let (mantissa, exp10) = match rest.find(['e', 'E']) {
+        Some(i) => (&rest[..i], rest[i + 1..].parse::<i32>().ok()?),
+        None => (rest, 0),
+    };
+    let (int, frac) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    // `10.0MHz` is the whole number it reads as.
+    let frac = frac.trim_end_matches('0');
+    let digits_ok = |s: &str| s.bytes().all(|b| b.is_ascii_digit());
+    if int.is_empty() && mantissa.len() < 2 || !digits_ok(int) || !digits_ok(frac) {
+        return None;
+    }
+    if int.len() + frac.len() > super::MAX_DIGITS {
+        return None;
+    }
+    let digits = match format!("{int}{frac}") {
+        d if d.is_empty() => "0".to_string(),
+        d => d,
+    };
+    let shift = exp10
+        .checked_add(exponent)?
+        .checked_sub(i32::try_from(frac.len()).ok()?)?;
+    let sign = if negative { "-" } else { "" };
+    let trimmed = digits.trim_start_matches('0');
+    if (0..=38).contains(&shift) && trimmed.len() + shift as usize <= 38 {
+        let whole = format!("{sign}{}{}", digits, "0".repeat(shift as usize));
+        return whole.parse::<i128>().ok().map(Value::Int);
+    }
+    let v: f64 = format!("{sign}{digits}e{shift}").parse().ok()?;
+    v.is_finite().then_some(Value::Float(v))
+}
+
+/// `"64 kHz"`, `"5ms"`: a string read as a number and a unit, split; `None`
+/// when it does not start with a number followed by letters.
+pub fn split(text: &str) -> Option<(&str, &str)> {
+    let text = text.trim();
+    let bytes = text.as_bytes();
+    let mut i = 0;
+    let mut seen_digit = false;
+    let mut seen_e = false;
+    while i < bytes.len() {
+        let b = bytes[i];
+        let sign_ok = i == 0 || (seen_e && matches!(bytes[i - 1], b'e' | b'E'));
+        match b {
+            b'0'..=b'9' => seen_digit = true,
+            b'.' if !seen_e => {}
+            b'+' | b'-' if sign_ok => {}
+            // An exponent only when a digit follows it, so `5 e` is not one.
+            b'e' | b'E'
+                if seen_digit
+                    && !seen_e
+                    && bytes
+                        .get(i + 1)
+                        .is_some_and(|n| n.is_ascii_digit() || *n == b'+' || *n == b'-') =>
+            {
+                seen_e = true
+            }
+            _ => break,
+        }
+        i += 1;
+    }
+    let (number, unit) = (&text[..i], text[i..].trim_start());
+    let letters = !unit.is_empty() && !unit.contains(char::is_whitespace);
+    (seen_digit && letters && unit.starts_with(|c: char| !c.is_ascii_digit()))
+        .then_some((number, unit))
+}
+
+/// `v` of `key` as a user would write it: `64 kHz`, `10 MHz`, `5 ms`,
+/// `1500 Hz/s`; the largest unit that leaves a number of at least 1.
+pub fn show(key: Key, v: f64) -> String {
+    let plain = format!("{v}");
+    let Some(q) = quantity(key) else {
+        return match super::unit(key) {
+            "" => plain,
+            unit => format!("{plain} {}", unit.split(' ').next().unwrap_or(unit)),
+        };
+    };
+    let abs = v.abs();
+    let base = q.units()[0];
+    let (unit, exponent) = q
+        .units()
+        .iter()
+        .copied()
+        .filter(|(_, e)| abs >= 10f64.powi(*e))
+        .max_by_key(|(_, e)| *e)
+        .unwrap_or(base);
+    let shown = shift_decimal(&plain, -exponent).unwrap_or(plain);
+    format!("{shown} {unit}")
+}
+
+/// The decimal text `s` (no exponent, as `f64`'s `Display` writes) times
+/// `10^k`, written without trailing zeros after a point.
+fn shift_decimal(s: &str, k: i32) -> Option<String> {
+    let (sign, rest) = match s.strip_prefix('-') {
+        Some(r) => ("-", r),
+        None => ("", s),
+    };
+    let (int, frac) = rest.split_once('.').unwrap_or((rest, ""));
+    let digits = format!("{int}{frac}");
+    let point = i64::try_from(int.len()).ok()? + i64::from(k);
+    let point = usize::try_from(point).ok()?;
+    let digits = if point > digits.len() {
+        format!("{digits}{}", "0".repeat(point - digits.len()))
+    } else {
+        digits
+    };
+    let (whole, fraction) = digits.split_at(point);
+    let whole = whole.trim_start_matches('0');
+    let whole = if whole.is_empty() { "0" } else { whole };
+    let fraction = fraction.trim_end_matches('0');
+    Some(if fraction.is_empty() {
+        format!("{sign}{whole}")
+    } else {
+        format!("{sign}{whole}.{fraction}")
+    })
+}
+
+/// A torque curve's frequency written `number` `unit`, in Hz, or what is
+/// wrong.
+pub fn frequency(number: &str, unit: &str) -> Result<f64, String> {
+    let q = Quantity::Frequency;
+    let Some(exponent) = q.exponent(unit) else {
+        let hint = did_you_mean(unit, q.units().iter().map(|(u, _)| *u), Hint::After);
+        return Err(format!(
+            "`torque_curve` frequencies accept the units {} (got `{number}{unit}`){hint}",
+            q.listed()
+        ));
+    };
+    match scaled(number, exponent) {
+        Some(Value::Int(v)) => Ok(v as f64),
+        Some(Value::Float(v)) => Ok(v),
+        _ => Err(format!(
+            "`torque_curve` expects numbers, got `{number}{unit}`"
+        )),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn units_scale_in_decimal() {
+        assert_eq!(scaled("64", 3), Some(Value::Int(64_000)));
+        assert_eq!(scaled("0.1", 6), Some(Value::Int(100_000)));
+        assert_eq!(scaled("2.5e3", 0), Some(Value::Int(2_500)));
+        assert_eq!(scaled("-1.5", 3), Some(Value::Int(-1_500)));
+        assert_eq!(scaled("2.5", -3), Some(Value::Float(0.0025)));
+        assert_eq!(scaled("5", -6), Some(Value::Float(5e-6)));
+        assert_eq!(scaled("1e400", 0), None);
+        assert_eq!(scaled("1e40000000000", 0), None);
+        assert_eq!(scaled("x", 0), None);
+        assert_eq!(scaled(".", 0), None);
+        assert_eq!(scaled("9e38", 0), Some(Value::Float(9e38)));
+    }
+
+    #[test]
+    fn keys_accept_their_units_only() {
+        assert_eq!(
+            with_unit(Key::FMAX, "64", "kHz", "64kHz"),
+            Ok(Value::Int(64_000))
+        );
+        assert_eq!(
+            with_unit(Key::TIMER_HZ, "10", "MHz", "10MHz"),
+            Ok(Value::Int(10_000_000))
+        );
+        assert_eq!(
+            with_unit(Key::FMIN, "500", "Hz", "500Hz"),
+            Ok(Value::Int(500))
+        );
+        assert_eq!(
+            with_unit(Key::FMAX, "64", "kHz2", "64kHz2"),
+            Err(
+                "`fmax` accepts the units `Hz`, `kHz`, `MHz` (got `64kHz2`); did you mean `kHz`?"
+                    .into()
+            )
+        );
+        assert_eq!(
+            with_unit(Key::FMIN, "500", "u32", "500u32"),
+            Err(
+                "`fmin` takes a number without a type suffix (got `500u32`): write `500`, or \
+                 with a unit (`Hz`, `kHz`, `MHz`)"
+                    .into()
+            )
+        );
+        assert_eq!(
+            with_unit(Key::LEN, "1000", "usize", "1000usize"),
+            Err(
+                "`len` takes a number without a type suffix (got `1000usize`): write `1000`".into()
+            )
+        );
+        assert_eq!(
+            with_unit(Key::ACCEL, "5", "kHz", "5kHz"),
+            Err("`accel` takes a plain number (in Hz/s), without a unit (got `5kHz`)".into())
+        );
+    }
+
+    #[test]
+    fn strings_split_into_number_and_unit() {
+        assert_eq!(split("64 kHz"), Some(("64", "kHz")));
+        assert_eq!(split(" 5ms "), Some(("5", "ms")));
+        assert_eq!(split("1.5e3 Hz"), Some(("1.5e3", "Hz")));
+        assert_eq!(split("5 min"), Some(("5", "min")));
+        assert_eq!(split("5e"), Some(("5", "e")));
+        assert_eq!(split("64000"), None);
+        assert_eq!(split("kHz"), None);
+        assert_eq!(split("8 000"), None);
+        assert_eq!(split("5 k Hz"), None);
+    }
+
+    #[test]
+    fn values_show_in_the_largest_unit() {
+        assert_eq!(show(Key::FMAX, 64_000.0), "64 kHz");
+        assert_eq!(show(Key::FMIN, 500.0), "500 Hz");
+        assert_eq!(show(Key::TIMER_HZ, 10_000_000.0), "10 MHz");
+        assert_eq!(show(Key::TIMER_HZ, 2_500_000.0), "2.5 MHz");
+        assert_eq!(show(Key::FMIN, 0.5), "0.5 Hz");
+        assert_eq!(show(Key::FMIN, 0.0), "0 Hz");
+        assert_eq!(show(Key::ACCEL, 1500.0), "1500 Hz/s");
+        assert_eq!(show(Key::LEN, 1000.0), "1000");
+        assert_eq!(show(Key::TAU, 0.005), "5 ms");
+        assert_eq!(show(Key::TAU, 2.0), "2 s");
+        assert_eq!(show(Key::TAU, 0.0000125), "12.5 us");
+    }
+}

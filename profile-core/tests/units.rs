@@ -1,0 +1,177 @@
+//! Units through the schema: a number with a unit is the number it stands
+//! for, and no suffix is ever ignored. Random numbers and suffixes, on
+//! every key that takes a number, against the value computed by another
+//! route (the float parser on `number e exponent`).
+#![cfg(feature = "codegen")]
+
+use profile_core::schema::{self, Arg, Value};
+
+/// A valid argument list of `curve`, as `(key, value)`.
+fn base(curve: &str) -> Vec<(&'static str, Value)> {
+    let n = |v: i128| Value::Int(v);
+    let mut args = vec![("curve", Value::Name(curve.into()))];
+    match curve {
+        "sigmoid" => args.extend([
+            ("len", n(200)),
+            ("fmin", n(500)),
+            ("fmax", n(64_000)),
+            ("flexible", n(6)),
+        ]),
+        _ => args.extend([
+            ("fmin", n(200)),
+            ("fmax", n(1_200)),
+            ("f_inf", n(1_300)),
+            ("tau", Value::Float(0.05)),
+        ]),
+    }
+    args.push(("timer_hz", n(10_000_000)));
+    args
+}
+
+fn read(args: &[(&'static str, Value)]) -> Result<schema::Request, String> {
+    let args: Vec<Arg<()>> = args
+        .iter()
+        .map(|(k, v)| Arg {
+            key: (*k).to_string(),
+            key_loc: (),
+            value: v.clone(),
+            value_loc: (),
+        })
+        .collect();
+    schema::read(&args, &(), &[]).map_err(|d| d[0].message.clone())
+}
+
+/// The units a key of each kind accepts, written out here.
+fn exponent(key: &str, unit: &str) -> Option<i32> {
+    let frequency = ["fmin", "fmax", "f_inf", "timer_hz"].contains(&key);
+    let time = key == "tau";
+    match unit {
+        "Hz" if frequency => Some(0),
+        "kHz" if frequency => Some(3),
+        "MHz" if frequency => Some(6),
+        "s" if time => Some(0),
+        "ms" if time => Some(-3),
+        "us" | "µs" | "μs" if time => Some(-6),
+        _ => None,
+    }
+}
+
+/// A small deterministic generator (xorshift).
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        self.0
+    }
+
+    fn below(&mut self, n: usize) -> usize {
+        (self.next() % n as u64) as usize
+    }
+}
+
+const SUFFIXES: &[&str] = &[
+    "Hz", "kHz", "MHz", "s", "ms", "us", "µs", "hz", "khz", "KHz", "mHz", "GHz", "kHz2", "min",
+    "h", "ns", "u32", "u16", "usize", "i64", "f64", "Hz_", "k", "e", "x", "rpm",
+];
+
+#[test]
+fn no_suffix_is_ever_ignored() {
+    let cases: usize = std::env::var("FUZZ_CASES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(3000);
+    let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
+    let (mut accepted, mut refused) = (0, 0);
+    for _ in 0..cases {
+        let curve = ["sigmoid", "exponential"][rng.below(2)];
+        let mut args = base(curve);
+        let slot = 1 + rng.below(args.len() - 1);
+        let key = args[slot].0;
+        let unit = if rng.below(3) == 0 {
+            // A unit some key accepts.
+            ["Hz", "kHz", "MHz", "s", "ms", "us"][rng.below(6)].to_string()
+        } else if rng.below(4) == 0 {
+            // Random letters.
+            let len = 1 + rng.below(4);
+            (0..len)
+                .map(|_| char::from(b'a' + rng.below(26) as u8))
+                .collect()
+        } else {
+            SUFFIXES[rng.below(SUFFIXES.len())].to_string()
+        };
+        let (k, e) = match exponent(key, &unit) {
+            Some(e) => (e, e),
+            None => (0, 0),
+        };
+        // A number that, in the unit, stands near the base value.
+        let base_value = match &args[slot].1 {
+            Value::Int(v) => *v as f64,
+            Value::Float(v) => *v,
+            _ => 1.0,
+        };
+        let digits = rng.below(4);
+        let scaled = base_value / 10f64.powi(k);
+        let number = format!("{scaled:.digits$}");
+        args[slot].1 = Value::Quantity {
+            number: number.clone(),
+            unit: unit.clone(),
+        };
+        let with_unit = read(&args);
+        match exponent(key, &unit) {
+            None => {
+                let message = with_unit.expect_err(&format!("`{key} = {number}{unit}` accepted"));
+                assert!(
+                    message.starts_with(&format!("`{key}` ")),
+                    "`{key} = {number}{unit}`: {message}"
+                );
+                refused += 1;
+            }
+            Some(_) => {
+                let value: f64 = format!("{number}e{e}").parse().unwrap();
+                let mut plain = args.clone();
+                plain[slot].1 = if value.fract() == 0.0 && value.abs() < 1e15 {
+                    Value::Int(value as i128)
+                } else {
+                    Value::Float(value)
+                };
+                let expected = read(&plain);
+                assert_eq!(
+                    with_unit.as_ref().map(|r| r.spec),
+                    expected.as_ref().map(|r| r.spec),
+                    "`{key} = {number}{unit}` against `{key} = {value}`"
+                );
+                accepted += 1;
+            }
+        }
+    }
+    println!("{cases} random suffixes: {accepted} read as their value, {refused} refused");
+    assert!(
+        accepted > cases / 20 && refused > cases / 2,
+        "{accepted} accepted, {refused} refused"
+    );
+}
+
+#[test]
+fn strings_with_units_read_as_numbers() {
+    let mut args = base("sigmoid");
+    args[3].1 = Value::Name("64 kHz".into());
+    args[5].1 = Value::Name("10MHz".into());
+    assert_eq!(
+        read(&args).map(|r| r.spec),
+        read(&base("sigmoid")).map(|r| r.spec)
+    );
+    args[3].1 = Value::Name("64 kHz2".into());
+    assert_eq!(
+        read(&args).unwrap_err(),
+        "`fmax` accepts the units `Hz`, `kHz`, `MHz` (got `64 kHz2`); did you mean `kHz`?"
+    );
+    args[3].1 = Value::Name("64000".into());
+    assert_eq!(
+        read(&args).unwrap_err(),
+        "`fmax` expects a number in Hz (steps/s), got the string `\"64000\"` (write numbers \
+         without quotes)"
+    );
+}
