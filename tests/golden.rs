@@ -4,13 +4,14 @@
 //! two files under `tests/golden/`: the compatibility mode
 //! (`discretization = index, rounding = truncate, arithmetic = f32`, what the
 //! seed's C code computes) and the default mode (`exact`, `diffuse`, `f64`).
-//! Each file starts with `# key = value` lines (the parameters, then the
-//! table's figures) followed by the periods in ticks, ten per line.
+//! The files are `stepper_profiles::golden`'s, as users' golden tests write
+//! them: `# key = value` lines (the parameters, then the table's figures),
+//! then one entry per line with the time of its pulse edge.
 //!
 //! The tables come from `period_table!`, which is what users call, and must
 //! equal [`Spec::table`] for the same parameters. Any change to a period or a
-//! header line fails with the file, the index (or key), the golden value and
-//! the actual one. After an intended change, bless the new tables with
+//! header line fails with the number of entries that differ, the first of
+//! them and the largest shift of a pulse edge. After an intended change, bless the new tables with
 //!
 //! ```text
 //! UPDATE_GOLDEN=1 cargo test --test golden
@@ -20,16 +21,19 @@
 
 mod common;
 
-use common::golden::{self, Body, Folder, Header};
-use common::seeds::{SEED000_ORANGE_COMPAT, f32_compat, seed000};
-use stepper_profiles::{Curve, Figures, Spec, period_table};
+use std::path::PathBuf;
 
-/// The golden files of this test.
-const GOLDEN: Folder = Folder {
-    dir: "tests/golden",
-    test: "golden",
-    number: "a period in ticks",
-};
+use common::golden::checked_periods;
+use common::seeds::{SEED000_ORANGE_COMPAT, f32_compat, seed000};
+use stepper_profiles::golden::{self, Body};
+use stepper_profiles::{Figures, Generated, Spec, Table, period_table};
+
+/// The golden file `file`.
+fn path(file: &str) -> PathBuf {
+    [env!("CARGO_MANIFEST_DIR"), "tests", "golden", file]
+        .iter()
+        .collect()
+}
 
 /// One golden table: its file, the macro's expansion, and the same parameters
 /// as a [`Spec`].
@@ -156,22 +160,10 @@ fn goldens() -> [Golden; 8] {
     ]
 }
 
-/// The `# key = value` header: parameters first, then figures.
-fn header(spec: &Spec, figures: &Figures) -> Header {
-    assert!(
-        matches!(spec.curve, Curve::Sigmoid(_)),
-        "expected the golden specs to be sigmoids, got {:?}",
-        spec.curve
-    );
-    let mut header = golden::spec_header(spec);
-    header.extend(golden::figures_header(figures));
-    header
-}
-
 /// The table of `golden` as `Spec::table()` computes it, after checking that
 /// `period_table!` expanded to the same periods.
 fn checked_table(golden: &Golden) -> (Vec<u32>, Figures) {
-    golden::checked_periods(golden.file, &golden.spec, golden.from_macro)
+    checked_periods(golden.file, &golden.spec, golden.from_macro)
 }
 
 #[test]
@@ -183,14 +175,26 @@ fn period_table_macro_equals_spec_table() {
 
 #[test]
 fn tables_match_golden_files() {
-    let mut problems = GOLDEN.bless_or_compare(goldens().iter().map(|golden| {
-        let (periods, figures) = checked_table(golden);
-        let header = header(&golden.spec, &figures);
-        (golden.file, header, Body::Periods(periods))
-    }));
+    let mut problems: Vec<String> = goldens()
+        .iter()
+        .filter_map(|g| {
+            let (periods, figures) = checked_table(g);
+            let table = Generated::Steps(Table {
+                spec: g.spec,
+                periods,
+                figures,
+            });
+            golden::compare(path(g.file), &table).err()
+        })
+        .collect();
     // Also after blessing: the new orange file must still show the seed's facts.
     problems.extend(orange_compat_seed_facts());
-    GOLDEN.assert_no_problems(&problems);
+    assert!(
+        problems.is_empty(),
+        "expected the tables to match tests/golden/ (bless an intended change with \
+         `UPDATE_GOLDEN=1 cargo test --test golden`):\n{}",
+        problems.join("\n")
+    );
 }
 
 /// Guards the blessed orange compatibility file itself, so that a table
@@ -198,9 +202,9 @@ fn tables_match_golden_files() {
 /// last 156, about 0.412 s at 10 MHz.
 fn orange_compat_seed_facts() -> Vec<String> {
     let file = "seed000_orange_compat.txt";
-    let (header, periods) = match GOLDEN.read(file, &Body::Periods(Vec::new())) {
+    let (header, periods) = match golden::read(path(file)) {
         Ok((header, Body::Periods(periods))) => (header, periods),
-        Ok(_) => unreachable!("parsed as periods"),
+        Ok(_) => return vec![format!("{file}: expected a per-step table, got segments")],
         Err(problem) => return vec![problem],
     };
     let mut problems = Vec::new();

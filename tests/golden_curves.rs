@@ -11,15 +11,16 @@
 //! - Zeng's three-stage curve (seed 002), 100 Hz to 1200 Hz at 1 MHz;
 //! - a jerk-limited ramp, 200 Hz to 5000 Hz at 10 MHz.
 //!
-//! The format is that of `tests/golden.rs` (`common::golden`): `# key =
-//! value` lines (the parameters, then the table's figures) followed by the
-//! periods in ticks, ten per line; a segment table lists one `period count`
-//! pair per line.
+//! The format is `stepper_profiles::golden`'s, as in `tests/golden.rs`:
+//! `# key = value` lines (the parameters, then the table's figures), then one
+//! entry per line with the time of its pulse edge; a segment table lists one
+//! segment per line, its period, its count and where it ends.
 //!
 //! The tables come from `period_table!`, which is what users call, and must
 //! equal [`Spec::table`] (or [`Spec::for_each_segment`]) for the same
-//! parameters. Any change to an entry or a header line fails with the file,
-//! the index (or key), the golden value and the actual one. After an intended
+//! parameters. Any change to an entry or a header line fails with the number
+//! of entries that differ, the first of them and the largest shift of a pulse
+//! edge. After an intended
 //! change, bless the new tables with
 //!
 //! ```text
@@ -30,18 +31,27 @@
 
 mod common;
 
-use common::golden::{self, Body, Folder, Header};
+use std::path::PathBuf;
+
+use common::golden::checked_periods;
 use common::seeds::{
     self, SEED001_SEGMENTS, SEED004_INTEGER, integer_compat, jerk_limited, seed004, zeng,
 };
-use stepper_profiles::{Curve, SegmentFigures, Spec, Timer, period_table};
+use stepper_profiles::golden::{self, Body};
+use stepper_profiles::{Curve, Generated, Spec, Table, Timer, period_table};
 
-/// The golden files of this test.
-const GOLDEN: Folder = Folder {
-    dir: "tests/golden/curves",
-    test: "golden_curves",
-    number: "a number of ticks",
-};
+/// The golden file `file`.
+fn path(file: &str) -> PathBuf {
+    [
+        env!("CARGO_MANIFEST_DIR"),
+        "tests",
+        "golden",
+        "curves",
+        file,
+    ]
+    .iter()
+    .collect()
+}
 
 /// What `period_table!` expanded to.
 enum FromMacro {
@@ -143,60 +153,37 @@ fn goldens() -> Vec<Golden> {
     ]
 }
 
-/// The `# key = value` header and the entries, as `period_table!` and the
-/// library compute them (after checking that the two agree).
-fn checked(golden: &Golden) -> (Header, Body) {
+/// The table as `period_table!` and the library compute it (after checking
+/// that the two agree).
+fn checked(golden: &Golden) -> Generated {
     let spec = &golden.spec;
     let file = golden.file;
-    let mut header = golden::spec_header(spec);
-    if let Curve::Exponential(e) = spec.curve {
-        header.extend(golden::header(&[
-            ("tau_s", format!("{:.9}", e.tau())),
-            ("rise_time_s", format!("{:.9}", e.rise_time())),
-        ]));
-    }
     match golden.from_macro {
         FromMacro::Periods(from_macro) => {
-            let (periods, figures) = golden::checked_periods(file, spec, from_macro);
-            header.extend(golden::header(&[("entries", figures.len.to_string())]));
-            header.extend(golden::figures_header(&figures));
-            (header, Body::Periods(periods))
+            let (periods, figures) = checked_periods(file, spec, from_macro);
+            Generated::Steps(Table {
+                spec: *spec,
+                periods,
+                figures,
+            })
         }
         FromMacro::Segments(from_macro) => {
             let n = from_macro.len() as u32;
-            let mut pairs = Vec::new();
-            let f = spec
-                .for_each_segment(n, |_, p, c| pairs.push((p, c)))
+            let table = spec
+                .check()
+                .and_then(|c| c.segment_table(n))
                 .unwrap_or_else(|e| panic!("{file}: expected {n} segments, got the error {e}"));
             let from_macro: Vec<(u32, u32)> = from_macro
                 .iter()
                 .map(|&(p, c)| (u32::from(p), u32::from(c)))
                 .collect();
             assert_eq!(
-                from_macro, pairs,
-                "{file}: expected period_table!(segments = {n}) to equal Spec::for_each_segment()"
+                from_macro, table.pairs,
+                "{file}: expected period_table!(segments = {n}) to equal the segment table"
             );
-            header.extend(segment_figures_header(&f));
-            (header, Body::Segments(pairs))
+            Generated::Segments(table)
         }
     }
-}
-
-/// The header lines of a segment table's figures.
-fn segment_figures_header(f: &SegmentFigures) -> Header {
-    let mut header = golden::header(&[
-        ("segments", f.segments.to_string()),
-        ("steps", f.steps.to_string()),
-        ("flash_bytes", f.flash_bytes.to_string()),
-        ("per_step_flash_bytes", f.per_step_flash_bytes.to_string()),
-    ]);
-    header.extend(golden::timing(
-        f.total_ticks,
-        f.duration_s,
-        f.max_edge_error_ticks,
-        f.total_error_ticks,
-    ));
-    header
 }
 
 #[test]
@@ -208,13 +195,18 @@ fn period_table_macro_equals_spec_table() {
 
 #[test]
 fn tables_match_golden_files() {
-    let mut problems = GOLDEN.bless_or_compare(goldens().iter().map(|golden| {
-        let (header, body) = checked(golden);
-        (golden.file, header, body)
-    }));
+    let mut problems: Vec<String> = goldens()
+        .iter()
+        .filter_map(|g| golden::compare(path(g.file), &checked(g)).err())
+        .collect();
     // Also after blessing: the files must still show the seeds' facts.
     problems.extend(seed_facts());
-    GOLDEN.assert_no_problems(&problems);
+    assert!(
+        problems.is_empty(),
+        "expected the tables to match tests/golden/curves/ (bless an intended change with \
+         `UPDATE_GOLDEN=1 cargo test --test golden_curves`):\n{}",
+        problems.join("\n")
+    );
 }
 
 /// Guards the blessed files themselves, so that a table blessed by mistake
@@ -229,15 +221,8 @@ fn seed_facts() -> Vec<String> {
             problems.push(what);
         }
     };
-    let value = |header: &[(String, String)], key: &str| {
-        header
-            .iter()
-            .find(|(k, _)| k == key)
-            .map(|(_, v)| v.clone())
-            .unwrap_or_default()
-    };
-    match GOLDEN.read("seed001_exponential_1mhz.txt", &Body::Periods(Vec::new())) {
-        Ok((header, Body::Periods(p))) => {
+    match golden::read(path("seed001_exponential_1mhz.txt")) {
+        Ok((_, Body::Periods(p))) => {
             let total: u64 = p.iter().map(|&t| u64::from(t)).sum();
             check(
                 p.len() == 120,
@@ -249,28 +234,11 @@ fn seed_facts() -> Vec<String> {
                     "seed 001: expected 19 745 or 19 746 ticks (19.745 ms) at 1 MHz, got {total}"
                 ),
             );
-            check(
-                value(&header, "tau_s").starts_with("0.018545"),
-                format!(
-                    "seed 001: expected tau 18.545 ms, got {}",
-                    value(&header, "tau_s")
-                ),
-            );
-            check(
-                value(&header, "rise_time_s").starts_with("0.019745"),
-                format!(
-                    "seed 001: expected rise time 19.745 ms, got {}",
-                    value(&header, "rise_time_s")
-                ),
-            );
         }
-        Ok(_) => unreachable!("parsed as periods"),
+        Ok(_) => check(false, "seed 001: expected a per-step table".into()),
         Err(e) => check(false, e),
     }
-    match GOLDEN.read(
-        "seed001_exponential_8_segments_1mhz.txt",
-        &Body::Segments(Vec::new()),
-    ) {
+    match golden::read(path("seed001_exponential_8_segments_1mhz.txt")) {
         Ok((_, Body::Segments(s))) => {
             let steps: u32 = s.iter().map(|&(_, c)| c).sum();
             check(
@@ -278,10 +246,10 @@ fn seed_facts() -> Vec<String> {
                 format!("seed 001 segments: expected 8 non-empty segments of 120 steps, got {s:?}"),
             );
         }
-        Ok(_) => unreachable!("parsed as segments"),
+        Ok(_) => check(false, "seed 001 segments: expected a segment table".into()),
         Err(e) => check(false, e),
     }
-    match GOLDEN.read("seed004_linear_integer.txt", &Body::Periods(Vec::new())) {
+    match golden::read(path("seed004_linear_integer.txt")) {
         Ok((_, Body::Periods(p))) => check(
             p.len() == 201 && p.first() == Some(&50_000) && p.last() == Some(&5000),
             format!(
@@ -291,7 +259,7 @@ fn seed_facts() -> Vec<String> {
                 p.last()
             ),
         ),
-        Ok(_) => unreachable!("parsed as periods"),
+        Ok(_) => check(false, "seed 004: expected a per-step table".into()),
         Err(e) => check(false, e),
     }
     problems

@@ -36,6 +36,8 @@ pub mod build;
 mod curves;
 #[cfg(feature = "codegen")]
 pub mod emit;
+#[cfg(feature = "golden")]
+pub mod golden;
 pub mod motor;
 #[cfg(feature = "codegen")]
 pub mod pipeline;

@@ -1,0 +1,531 @@
+//! Golden tests for your own tables: pin a table in a readable text file and
+//! fail when it changes.
+//!
+//! ```no_run
+//! # use profile_core as stepper_profiles;
+//! use stepper_profiles::golden;
+//!
+//! # const RAMP: [u16; 3] = [900, 700, 600];
+//! // In a test: blessed by `UPDATE_GOLDEN=1 cargo test`, compared by `cargo test`.
+//! golden::check("tests/golden/ramp.txt", &golden::timed(&RAMP, 1_000_000));
+//! ```
+//!
+//! With `UPDATE_GOLDEN=1` in the environment, [`check`] writes the file
+//! (creating its folder); otherwise it reads it and panics when the table
+//! differs, with the number of differing entries, the first of them (index,
+//! old and new period) and the largest shift of a pulse edge in ticks and,
+//! when the timer's rate is known, in microseconds. A relative path is
+//! relative to the directory `cargo test` runs the test in: the package's
+//! root.
+//!
+//! The file holds the table's parameters and figures as `# key = value`
+//! lines, then one entry per line with the time of the pulse edge it ends,
+//! so that `git diff` shows what moved:
+//!
+//! ```text
+//! # stepper-profiles golden table: UPDATE_GOLDEN=1 rewrites it
+//! # table = per step
+//! # entries = 3
+//! # timer_hz = 1 MHz
+//! # total_ticks = 2200
+//! #
+//! #  entry      period  edge (ticks)     edge (us)
+//!        0         900           900       900.000
+//!        1         700          1600      1600.000
+//!        2         600          2200      2200.000
+//! ```
+//!
+//! A table can be an array or slice of `u16` or `u32` periods, an array or
+//! slice of `(period, count)` segments, either with its timer
+//! ([`timed`]), a table computed on the host ([`Generated`], with its
+//! parameters and figures), or every profile of a profiles file at once
+//! ([`check_file`]).
+
+use std::fmt::Write as _;
+use std::format;
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::string::{String, ToString};
+use std::vec::Vec;
+
+use crate::base::key::Key;
+use crate::build::Profiles;
+use crate::schema::describe;
+use crate::table::owned::Generated;
+
+/// A table as a golden file holds it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Entries {
+    /// `# key = value` lines: parameters, then figures.
+    pub header: Vec<(String, String)>,
+    /// The entries.
+    pub body: Body,
+    /// The timer's tick rate, when known, for edge times in microseconds.
+    pub timer_hz: Option<u32>,
+    /// Timer reloads per step: 2 when each entry is a half period.
+    pub ticks_per_step: u8,
+}
+
+/// A table's entries.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Body {
+    /// One period per step, in ticks.
+    Periods(Vec<u32>),
+    /// `(period, count)` segments.
+    Segments(Vec<(u32, u32)>),
+}
+
+impl Body {
+    /// Every step's period, segments expanded.
+    fn steps(&self) -> Vec<u32> {
+        match self {
+            Body::Periods(p) => p.clone(),
+            Body::Segments(s) => s
+                .iter()
+                .flat_map(|&(p, c)| core::iter::repeat_n(p, c as usize))
+                .collect(),
+        }
+    }
+
+    fn len(&self) -> usize {
+        match self {
+            Body::Periods(p) => p.len(),
+            Body::Segments(s) => s.len(),
+        }
+    }
+}
+
+/// Anything [`check`] can pin.
+pub trait Golden {
+    /// The table as a golden file holds it.
+    fn entries(&self) -> Entries;
+}
+
+fn plain(body: Body) -> Entries {
+    Entries {
+        header: Vec::new(),
+        body,
+        timer_hz: None,
+        ticks_per_step: 1,
+    }
+}
+
+macro_rules! words {
+    ($($w:ty),*) => {$(
+        impl Golden for [$w] {
+            fn entries(&self) -> Entries {
+                plain(Body::Periods(self.iter().map(|&p| u32::from(p)).collect()))
+            }
+        }
+        impl<const N: usize> Golden for [$w; N] {
+            fn entries(&self) -> Entries {
+                self[..].entries()
+            }
+        }
+        impl Golden for [($w, $w)] {
+            fn entries(&self) -> Entries {
+                plain(Body::Segments(
+                    self.iter().map(|&(p, c)| (u32::from(p), u32::from(c))).collect(),
+                ))
+            }
+        }
+        impl<const N: usize> Golden for [($w, $w); N] {
+            fn entries(&self) -> Entries {
+                self[..].entries()
+            }
+        }
+    )*};
+}
+words!(u16, u32);
+
+impl<T: Golden + ?Sized> Golden for &T {
+    fn entries(&self) -> Entries {
+        (**self).entries()
+    }
+}
+
+/// A table with its timer's tick rate: edges in microseconds too.
+#[derive(Clone, Copy, Debug)]
+pub struct Timed<'a, T: ?Sized> {
+    table: &'a T,
+    timer_hz: u32,
+}
+
+/// `table` played by a timer of `timer_hz` ticks per second (a module of
+/// `include_profiles!` has it as `TIMER_HZ`).
+pub fn timed<T: Golden + ?Sized>(table: &T, timer_hz: u32) -> Timed<'_, T> {
+    Timed { table, timer_hz }
+}
+
+impl<T: Golden + ?Sized> Golden for Timed<'_, T> {
+    fn entries(&self) -> Entries {
+        let mut e = self.table.entries();
+        e.timer_hz = Some(self.timer_hz);
+        e
+    }
+}
+
+impl Golden for Generated {
+    fn entries(&self) -> Entries {
+        let spec = self.spec();
+        let mut header: Vec<(String, String)> = describe(spec)
+            .into_iter()
+            .map(|(k, v)| (k.name().to_string(), v))
+            .collect();
+        let figure = |k: &str, v: String| (k.to_string(), v);
+        let body = match self {
+            Generated::Steps(t) => {
+                let f = &t.figures;
+                header.extend([
+                    figure("first_ticks", f.first_ticks.to_string()),
+                    figure("last_ticks", f.last_ticks.to_string()),
+                    figure("duration_s", format!("{:.9}", f.duration_s)),
+                    figure(
+                        "max_edge_error_ticks",
+                        format!("{:.6}", f.max_edge_error_ticks),
+                    ),
+                    figure("total_error_ticks", format!("{:.6}", f.total_error_ticks)),
+                ]);
+                Body::Periods(t.periods.clone())
+            }
+            Generated::Segments(t) => {
+                let f = &t.figures;
+                header.extend([
+                    figure("steps", f.steps.to_string()),
+                    figure("flash_bytes", f.flash_bytes.to_string()),
+                    figure("duration_s", format!("{:.9}", f.duration_s)),
+                    figure(
+                        "max_edge_error_ticks",
+                        format!("{:.6}", f.max_edge_error_ticks),
+                    ),
+                    figure("total_error_ticks", format!("{:.6}", f.total_error_ticks)),
+                ]);
+                Body::Segments(t.pairs.clone())
+            }
+        };
+        Entries {
+            header,
+            body,
+            timer_hz: Some(spec.timer.timer_hz),
+            ticks_per_step: spec.timer.ticks_per_step,
+        }
+    }
+}
+
+/// Whether golden files are being blessed: `UPDATE_GOLDEN=1`.
+pub fn blessing() -> bool {
+    std::env::var_os("UPDATE_GOLDEN").is_some_and(|v| v == "1")
+}
+
+/// Pins `table` in the file at `path`: writes it with `UPDATE_GOLDEN=1`,
+/// otherwise panics with what changed when it differs from the file.
+#[track_caller]
+pub fn check<T: Golden + ?Sized>(path: impl AsRef<Path>, table: &T) {
+    if let Err(problem) = compare(path, table) {
+        panic!("{problem}");
+    }
+}
+
+/// [`check`], returning what changed instead of panicking; with
+/// `UPDATE_GOLDEN=1`, writes the file and returns `Ok`.
+pub fn compare<T: Golden + ?Sized>(path: impl AsRef<Path>, table: &T) -> Result<(), String> {
+    let path = path.as_ref();
+    let actual = table.entries();
+    let text = render(&actual);
+    if blessing() {
+        return write(path, &text);
+    }
+    let old = fs::read_to_string(path).map_err(|e| {
+        format!(
+            "{}: cannot read the golden file ({e}); run with UPDATE_GOLDEN=1 to write it",
+            path.display()
+        )
+    })?;
+    if old.replace("\r\n", "\n") == text {
+        return Ok(());
+    }
+    let bless = "if the change is intended, rerun with UPDATE_GOLDEN=1 and review the diff";
+    let old = parse(&old, &actual.body).map_err(|e| format!("{}:{e}; {bless}", path.display()))?;
+    Err(format!(
+        "{}: the table differs from its golden file: {}; {bless}",
+        path.display(),
+        difference(&old, &actual)
+    ))
+}
+
+/// Pins every profile of the profiles file at `file`, as `include_profiles!`
+/// computes them, each in `dir/NAME.txt`. Fails with every profile that
+/// changed.
+#[track_caller]
+pub fn check_file(dir: impl AsRef<Path>, file: impl AsRef<Path>) {
+    let profiles = Profiles::load(file.as_ref()).unwrap_or_else(|e| panic!("{e}"));
+    let problems: Vec<String> = profiles
+        .profiles()
+        .iter()
+        .filter_map(|p| {
+            let path: PathBuf = dir.as_ref().join(format!("{}.txt", p.name));
+            compare(path, &p.table).err()
+        })
+        .collect();
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+}
+
+fn write(path: &Path, text: &str) -> Result<(), String> {
+    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+        fs::create_dir_all(dir)
+            .map_err(|e| format!("cannot create the folder {}: {e}", dir.display()))?;
+    }
+    // Beside, then renamed: a reader sees the old text or the new, never half.
+    let partial = path.with_extension("partial");
+    fs::write(&partial, text)
+        .and_then(|()| fs::rename(&partial, path))
+        .map_err(|e| format!("cannot write {}: {e}", path.display()))
+}
+
+/// Pulse-edge times, in ticks: after each step.
+fn edges(body: &Body, ticks_per_step: u8) -> Vec<u64> {
+    let mut t = 0u64;
+    body.steps()
+        .iter()
+        .map(|&p| {
+            t += u64::from(p) * u64::from(ticks_per_step);
+            t
+        })
+        .collect()
+}
+
+fn micros(ticks: u64, timer_hz: u32) -> f64 {
+    ticks as f64 * 1e6 / f64::from(timer_hz)
+}
+
+/// The golden file's text.
+fn render(e: &Entries) -> String {
+    let mut out = String::from("# stepper-profiles golden table: UPDATE_GOLDEN=1 rewrites it\n");
+    let kind = match e.body {
+        Body::Periods(_) => "per step",
+        Body::Segments(_) => "segments",
+    };
+    let edges = edges(&e.body, e.ticks_per_step);
+    let mut header = std::vec![
+        ("table".to_string(), kind.to_string()),
+        ("entries".to_string(), e.body.len().to_string()),
+    ];
+    if e.header.is_empty() {
+        if let Some(hz) = e.timer_hz {
+            header.push((
+                Key::TIMER_HZ.name().to_string(),
+                crate::schema::units::show(Key::TIMER_HZ, f64::from(hz)),
+            ));
+        }
+    }
+    header.extend(e.header.iter().cloned());
+    // The sum of the entries, as `TOTAL_TICKS` and the figures count it.
+    let total: u64 = e.body.steps().iter().map(|&p| u64::from(p)).sum();
+    header.push(("total_ticks".to_string(), total.to_string()));
+    for (k, v) in &header {
+        let _ = writeln!(out, "# {k} = {v}");
+    }
+    out.push_str("#\n");
+    let us = |t: u64| e.timer_hz.map(|hz| format!("  {:>12.3}", micros(t, hz)));
+    let us_title = if e.timer_hz.is_some() {
+        "     edge (us)"
+    } else {
+        ""
+    };
+    match &e.body {
+        Body::Periods(p) => {
+            let _ = writeln!(
+                out,
+                "# {:>6}  {:>10}  {:>12}{us_title}",
+                "entry", "period", "edge (ticks)"
+            );
+            for (i, (p, t)) in p.iter().zip(&edges).enumerate() {
+                let _ = writeln!(
+                    out,
+                    "{i:>8}  {p:>10}  {t:>12}{}",
+                    us(*t).unwrap_or_default()
+                );
+            }
+        }
+        Body::Segments(s) => {
+            let _ = writeln!(
+                out,
+                "# {:>6}  {:>10}  {:>6}  {:>12}{}",
+                "seg",
+                "period",
+                "count",
+                "end (ticks)",
+                us_title.replace("edge", " end")
+            );
+            let mut step = 0usize;
+            for (i, &(p, c)) in s.iter().enumerate() {
+                step += c as usize;
+                let t = if step == 0 { 0 } else { edges[step - 1] };
+                let _ = writeln!(
+                    out,
+                    "{i:>8}  {p:>10}  {c:>6}  {t:>12}{}",
+                    us(t).unwrap_or_default()
+                );
+            }
+        }
+    }
+    out
+}
+
+/// A golden file read back: its `# key = value` lines (the table's kind,
+/// size, parameters and figures) and its entries.
+pub fn read(path: impl AsRef<Path>) -> Result<(Vec<(String, String)>, Body), String> {
+    let path = path.as_ref();
+    let text = fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let header: Vec<(String, String)> = text
+        .lines()
+        .filter_map(|l| l.strip_prefix('#')?.split_once('='))
+        .map(|(k, v)| (k.trim().to_string(), v.trim().to_string()))
+        .collect();
+    let like = match header.iter().find(|(k, _)| k == "table") {
+        Some((_, kind)) if kind == "segments" => Body::Segments(Vec::new()),
+        _ => Body::Periods(Vec::new()),
+    };
+    let body = parse(&text, &like).map_err(|e| format!("{}:{e}", path.display()))?;
+    Ok((header, body))
+}
+
+/// A golden file's entries, read back like `like`.
+fn parse(text: &str, like: &Body) -> Result<Body, String> {
+    let mut periods = Vec::new();
+    let mut segments = Vec::new();
+    for (n, line) in text.lines().enumerate() {
+        if line.starts_with('#') || line.trim().is_empty() {
+            continue;
+        }
+        let cell = |i: usize| -> Result<u32, String> {
+            line.split_whitespace()
+                .nth(i)
+                .and_then(|w| w.parse().ok())
+                .ok_or_else(|| format!("{}: expected an entry line, got {line:?}", n + 1))
+        };
+        match like {
+            Body::Periods(_) => periods.push(cell(1)?),
+            Body::Segments(_) => segments.push((cell(1)?, cell(2)?)),
+        }
+    }
+    Ok(match like {
+        Body::Periods(_) => Body::Periods(periods),
+        Body::Segments(_) => Body::Segments(segments),
+    })
+}
+
+/// What changed from `old` to `new`, in a sentence.
+fn difference(old: &Body, new: &Entries) -> String {
+    let mut parts = Vec::new();
+    let (name, first, differing) = match (old, &new.body) {
+        (Body::Periods(o), Body::Periods(n)) => {
+            let first = o
+                .iter()
+                .zip(n)
+                .position(|(a, b)| a != b)
+                .map(|i| format!("the first at entry {i}: was {} ticks, now {}", o[i], n[i]));
+            let differing = o.iter().zip(n).filter(|(a, b)| a != b).count();
+            ("entries", first, differing)
+        }
+        (Body::Segments(o), Body::Segments(n)) => {
+            let first = o.iter().zip(n).position(|(a, b)| a != b).map(|i| {
+                format!(
+                    "the first at segment {i}: was {} ticks x {}, now {} ticks x {}",
+                    o[i].0, o[i].1, n[i].0, n[i].1
+                )
+            });
+            let differing = o.iter().zip(n).filter(|(a, b)| a != b).count();
+            ("segments", first, differing)
+        }
+        _ => return "its layout changed".to_string(),
+    };
+    if old.len() != new.body.len() {
+        parts.push(format!("{} {name}, was {}", new.body.len(), old.len()));
+    }
+    if differing > 0 {
+        let of = old.len().min(new.body.len());
+        let first = first.unwrap_or_default();
+        parts.push(format!("{differing} of {of} {name} differ, {first}"));
+    }
+    let (o, n) = (
+        edges(old, new.ticks_per_step),
+        edges(&new.body, new.ticks_per_step),
+    );
+    let shift = o
+        .iter()
+        .zip(&n)
+        .map(|(a, b)| a.abs_diff(*b))
+        .max()
+        .unwrap_or(0);
+    let at = new
+        .timer_hz
+        .map(|hz| format!(" ({:.3} us)", micros(shift, hz)))
+        .unwrap_or_default();
+    parts.push(format!(
+        "the largest shift of a pulse edge is {shift} ticks{at}"
+    ));
+    if parts.len() == 1 {
+        // Same entries: the parameters or figures changed.
+        parts.insert(0, "its parameters or figures changed".to_string());
+    }
+    parts.join("; ")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_file_shows_each_entry_with_its_edge() {
+        let text = render(&timed(&[900u16, 700, 600], 1_000_000).entries());
+        assert_eq!(
+            text,
+            "# stepper-profiles golden table: UPDATE_GOLDEN=1 rewrites it
+# table = per step
+# entries = 3
+# timer_hz = 1 MHz
+# total_ticks = 2200
+#
+#  entry      period  edge (ticks)     edge (us)
+       0         900           900       900.000
+       1         700          1600      1600.000
+       2         600          2200      2200.000
+"
+        );
+        let segments = render(&[(500u16, 2u16), (400, 3)].entries());
+        assert!(segments.ends_with(
+            "#    seg      period   count   end (ticks)
+       0         500       2          1000
+       1         400       3          2200
+"
+        ));
+        assert_eq!(
+            parse(&segments, &Body::Segments(Vec::new())),
+            Ok(Body::Segments(std::vec![(500, 2), (400, 3)]))
+        );
+    }
+
+    #[test]
+    fn a_difference_names_the_count_the_first_and_the_shift() {
+        let old = Body::Periods(std::vec![900, 700, 600, 500]);
+        let new = timed(&[900u16, 702, 600, 499], 2_000_000).entries();
+        assert_eq!(
+            difference(&old, &new),
+            "2 of 4 entries differ, the first at entry 1: was 700 ticks, now 702; the largest \
+             shift of a pulse edge is 2 ticks (1.000 us)"
+        );
+        let longer = [900u16, 700, 600, 500, 450].entries();
+        assert_eq!(
+            difference(&old, &longer),
+            "5 entries, was 4; the largest shift of a pulse edge is 0 ticks"
+        );
+        let same = [900u16, 700, 600, 500].entries();
+        assert_eq!(
+            difference(&old, &same),
+            "its parameters or figures changed; the largest shift of a pulse edge is 0 ticks"
+        );
+        let segments = [(900u16, 2u16)].entries();
+        assert_eq!(difference(&old, &segments), "its layout changed");
+    }
+}
