@@ -17,13 +17,16 @@
 //! `rounding`, ...) are strings. A default that does not apply to a
 //! profile's curve (`flexible` for a linear ramp) is ignored for it.
 //!
-//! In a build script:
+//! In a build script, one call reads the file, writes `OUT_DIR/profiles.rs`,
+//! asks Cargo to rerun when the file changes and reports a mistake as
+//! Cargo's own `error:` lines:
 //!
 //! ```no_run
-//! # fn main() -> Result<(), Box<dyn std::error::Error>> {
-//! let out_dir = std::env::var("OUT_DIR")?;
-//! profile_core::build::Profiles::load("profiles.toml")?.write_rust(&out_dir)?;
-//! # Ok(()) }
+//! // build.rs, in `fn main`:
+//! if let Some(profiles) = profile_core::build::build_script("profiles.toml") {
+//!     // Optional: a C header too, under OUT_DIR.
+//!     profiles.write_c_header("profiles.h").expect("OUT_DIR is writable");
+//! }
 //! ```
 //!
 //! and in the crate: `include!(concat!(env!("OUT_DIR"), "/profiles.rs"));`.
@@ -152,8 +155,9 @@ impl Profiles {
         )
     }
 
-    /// Writes `profiles.rs` into `out_dir` (to `include!`) and, for a file
-    /// read with [`Profiles::load`], prints `cargo::rerun-if-changed` for it.
+    /// Writes `profiles.rs` into `out_dir` (to `include!`), creating the
+    /// folder, and, for a file read with [`Profiles::load`], prints
+    /// `cargo::rerun-if-changed` for it.
     pub fn write_rust(&self, out_dir: impl AsRef<Path>) -> Result<PathBuf, LoadError> {
         let target = out_dir.as_ref().join("profiles.rs");
         write(&target, &self.rust_source())?;
@@ -163,13 +167,55 @@ impl Profiles {
         Ok(target)
     }
 
-    /// Writes the C header to `path`.
-    pub fn write_c_header(&self, path: impl AsRef<Path>) -> Result<(), LoadError> {
-        write(path.as_ref(), &self.c_header())
+    /// Writes the C header to `path` and returns where it went, creating
+    /// the folder. In a build script (`OUT_DIR` set) a relative path is
+    /// under `OUT_DIR`, never in the source tree; give an absolute path to
+    /// write elsewhere.
+    pub fn write_c_header(&self, path: impl AsRef<Path>) -> Result<PathBuf, LoadError> {
+        let path = match std::env::var_os("OUT_DIR") {
+            Some(out) if path.as_ref().is_relative() => Path::new(&out).join(path),
+            _ => path.as_ref().to_path_buf(),
+        };
+        write(&path, &self.c_header())?;
+        Ok(path)
+    }
+}
+
+/// The one call a build script needs: reads the profiles file at `path`
+/// (relative to the package, where Cargo runs build scripts), writes
+/// `OUT_DIR/profiles.rs` and asks Cargo to rerun when the file changes.
+///
+/// A mistake is reported to Cargo as `cargo::error=` lines, the location,
+/// the source line and the caret each on its own, so the build fails with
+/// the message as `cargo build` prints errors; the result is then `None`.
+pub fn build_script(path: impl AsRef<Path>) -> Option<Profiles> {
+    let path = path.as_ref();
+    println!("cargo::rerun-if-changed={}", path.display());
+    let loaded = Profiles::load(path).and_then(|profiles| {
+        let out_dir = std::env::var_os("OUT_DIR").ok_or_else(|| LoadError {
+            text: "`OUT_DIR` is not set: `build_script` runs in a build script (build.rs)"
+                .to_string(),
+        })?;
+        profiles.write_rust(out_dir)?;
+        Ok(profiles)
+    });
+    match loaded {
+        Ok(profiles) => Some(profiles),
+        Err(e) => {
+            for line in e.message().lines() {
+                println!("cargo::error={line}");
+            }
+            None
+        }
     }
 }
 
 fn write(path: &Path, contents: &str) -> Result<(), LoadError> {
+    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir).map_err(|e| LoadError {
+            text: format!("cannot create the folder `{}`: {e}", dir.display()),
+        })?;
+    }
     std::fs::write(path, contents).map_err(|e| LoadError {
         text: format!("cannot write `{}`: {e}", path.display()),
     })

@@ -9,7 +9,10 @@ use std::vec::Vec;
 use crate::schema::Diagnostic;
 
 /// Problems with a profiles file, each at its `file:line:col`.
-#[derive(Clone, Debug, PartialEq, Eq)]
+///
+/// Its `Debug` form is its text, so that `fn main() -> Result<(), Box<dyn
+/// Error>>` prints the lines and carets as they are.
+#[derive(Clone, PartialEq, Eq)]
 pub struct LoadError {
     pub(crate) text: String,
 }
@@ -22,6 +25,12 @@ impl LoadError {
 }
 
 impl fmt::Display for LoadError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.text)
+    }
+}
+
+impl fmt::Debug for LoadError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(&self.text)
     }
