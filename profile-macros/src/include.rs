@@ -31,7 +31,14 @@ fn try_include(input: TokenStream) -> syn::Result<TokenStream> {
     let relative = lit.value();
     let path = Path::new(&dir).join(&relative);
     let source = std::fs::read_to_string(&path).map_err(|e| {
-        syn::Error::new(lit.span(), format!("cannot read `{}`: {e}", path.display()))
+        syn::Error::new(
+            lit.span(),
+            format!(
+                "cannot read `{}`: {e} (the path is relative to the crate's root, the folder \
+                 of its Cargo.toml: `{dir}`)",
+                path.display()
+            ),
+        )
     })?;
     let profiles = Profiles::parse(&relative, &source)
         .map_err(|e| syn::Error::new(lit.span(), e.message()))?;

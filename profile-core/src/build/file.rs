@@ -127,6 +127,19 @@ pub(crate) fn toml_message(message: &str, source: &str, span: &Range<usize>) -> 
              `[profiles.NAME]` tables"
         );
     }
+    // `8 000`: digits split by spaces read as a bare string.
+    let spaced = text.starts_with(|c: char| c.is_ascii_digit())
+        && text.contains(' ')
+        && text
+            .chars()
+            .all(|c| c.is_ascii_digit() || " _.".contains(c));
+    if message.starts_with("string values must be quoted") && spaced {
+        let joined: String = text.split_whitespace().collect::<Vec<_>>().join("_");
+        return format!(
+            "a number cannot contain spaces: write `{joined}` (or, with a unit, a string such \
+             as `\"64 kHz\"`)"
+        );
+    }
     // A number too large for the parser: name the key it is the value of.
     if message.contains("overflowed") || message.contains(" as i128") {
         let line_start = source

@@ -1,0 +1,110 @@
+//! `build::build_script` in a user's crate, as the README shows it: a
+//! scratch crate under `CARGO_TARGET_TMPDIR/build-script-user` depending on
+//! this package by path. A bad `profiles.toml` fails `cargo build` with
+//! cargo's own `error:` lines (location, source line, caret); a good one
+//! builds, runs and leaves the C header under `OUT_DIR`, not in the source
+//! tree.
+
+use std::fs;
+use std::path::Path;
+use std::process::{Command, Output};
+
+const CARGO_TOML: &str = r#"[package]
+name = "build-script-user"
+version = "0.0.0"
+edition = "2024"
+publish = false
+
+[dependencies]
+stepper-profiles = { path = "@ROOT@" }
+
+[build-dependencies]
+profile-core = { path = "@ROOT@/profile-core", features = ["codegen"] }
+
+# Not part of any enclosing workspace.
+[workspace]
+"#;
+
+const BUILD_RS: &str = r#"fn main() {
+    if let Some(profiles) = profile_core::build::build_script("profiles.toml") {
+        profiles.write_c_header("profiles.h").expect("OUT_DIR is writable");
+    }
+}
+"#;
+
+const MAIN_RS: &str = r#"include!(concat!(env!("OUT_DIR"), "/profiles.rs"));
+
+fn main() {
+    println!("{} {}", ramp::PERIODS[0], ramp::LEN);
+}
+"#;
+
+fn profiles(fmax_key: &str) -> String {
+    format!(
+        "[profiles.ramp]\ncurve = \"linear\"\nfmin = 500\n{fmax_key} = \"5 kHz\"\nlen = 100\n\
+         timer_hz = \"1 MHz\"\n"
+    )
+}
+
+fn cargo(dir: &Path, args: &[&str]) -> Output {
+    let tmp = Path::new(env!("CARGO_TARGET_TMPDIR"));
+    Command::new(env!("CARGO"))
+        .current_dir(dir)
+        .args(args)
+        // Shared with `tests/rebuild.rs`: the dependencies build once.
+        .env("CARGO_TARGET_DIR", tmp.join("rebuild-target"))
+        .env_remove("RUSTFLAGS")
+        .output()
+        .expect("cannot run cargo")
+}
+
+#[test]
+fn a_bad_file_fails_the_build_with_cargo_errors_and_a_good_one_builds() {
+    let root = env!("CARGO_MANIFEST_DIR");
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("build-script-user");
+    fs::create_dir_all(dir.join("src")).unwrap();
+    fs::write(dir.join("Cargo.toml"), CARGO_TOML.replace("@ROOT@", root)).unwrap();
+    fs::write(dir.join("build.rs"), BUILD_RS).unwrap();
+    fs::write(dir.join("src/main.rs"), MAIN_RS).unwrap();
+    if !dir.join("Cargo.lock").exists() {
+        fs::copy(Path::new(root).join("Cargo.lock"), dir.join("Cargo.lock")).unwrap();
+    }
+
+    fs::write(dir.join("profiles.toml"), profiles("fmx")).unwrap();
+    let bad = cargo(&dir, &["build", "--quiet"]);
+    let stderr = String::from_utf8_lossy(&bad.stderr);
+    assert!(!bad.status.success(), "a bad file built:\n{stderr}");
+    let prefix = "error: build-script-user@0.0.0: ";
+    let expected = [
+        format!("{prefix}profiles.toml:4:1: unknown key `fmx`; did you mean `fmax`?"),
+        format!("{prefix}  |"),
+        format!("{prefix}4 | fmx = \"5 kHz\""),
+        format!("{prefix}  | ^^^"),
+    ];
+    let lines: Vec<&str> = stderr.lines().collect();
+    let at = lines
+        .iter()
+        .position(|l| l.starts_with(&expected[0]))
+        .unwrap_or_else(|| panic!("no located error in:\n{stderr}"));
+    assert_eq!(lines[at + 1..at + 4], expected[1..], "{stderr}");
+    assert!(!stderr.contains("LoadError"), "{stderr}");
+
+    fs::write(dir.join("profiles.toml"), profiles("fmax")).unwrap();
+    let good = cargo(&dir, &["run", "--quiet"]);
+    assert!(
+        good.status.success(),
+        "{}",
+        String::from_utf8_lossy(&good.stderr)
+    );
+    // What the loader computes here, for the same file.
+    let loaded = profile_core::build::Profiles::parse("profiles.toml", &profiles("fmax")).unwrap();
+    let first = loaded.profiles()[0].table.step_periods()[0];
+    assert_eq!(
+        String::from_utf8_lossy(&good.stdout).trim(),
+        format!("{first} 100")
+    );
+    assert!(
+        !dir.join("profiles.h").exists(),
+        "the header went into the source tree"
+    );
+}
