@@ -51,7 +51,7 @@ use std::vec::Vec;
 use crate::base::key::Key;
 use crate::build::Profiles;
 use crate::schema::describe;
-use crate::table::owned::Generated;
+use crate::table::owned::{Generated, expand};
 
 /// A table as a golden file holds it.
 #[derive(Clone, Debug, PartialEq)]
@@ -80,10 +80,7 @@ impl Body {
     fn steps(&self) -> Vec<u32> {
         match self {
             Body::Periods(p) => p.clone(),
-            Body::Segments(s) => s
-                .iter()
-                .flat_map(|&(p, c)| core::iter::repeat_n(p, c as usize))
-                .collect(),
+            Body::Segments(s) => expand(s),
         }
     }
 
@@ -179,13 +176,12 @@ impl Golden for Generated {
                 header.extend([
                     figure("first_ticks", f.first_ticks.to_string()),
                     figure("last_ticks", f.last_ticks.to_string()),
-                    figure("duration_s", format!("{:.9}", f.duration_s)),
-                    figure(
-                        "max_edge_error_ticks",
-                        format!("{:.6}", f.max_edge_error_ticks),
-                    ),
-                    figure("total_error_ticks", format!("{:.6}", f.total_error_ticks)),
                 ]);
+                header.extend(timing(
+                    f.duration_s,
+                    f.max_edge_error_ticks,
+                    f.total_error_ticks,
+                ));
                 Body::Periods(t.periods.clone())
             }
             Generated::Segments(t) => {
@@ -193,13 +189,12 @@ impl Golden for Generated {
                 header.extend([
                     figure("steps", f.steps.to_string()),
                     figure("flash_bytes", f.flash_bytes.to_string()),
-                    figure("duration_s", format!("{:.9}", f.duration_s)),
-                    figure(
-                        "max_edge_error_ticks",
-                        format!("{:.6}", f.max_edge_error_ticks),
-                    ),
-                    figure("total_error_ticks", format!("{:.6}", f.total_error_ticks)),
                 ]);
+                header.extend(timing(
+                    f.duration_s,
+                    f.max_edge_error_ticks,
+                    f.total_error_ticks,
+                ));
                 Body::Segments(t.pairs.clone())
             }
         };
@@ -210,6 +205,16 @@ impl Golden for Generated {
             ticks_per_step: spec.timer.ticks_per_step,
         }
     }
+}
+
+/// The figures every layout has: how long it plays and how far its edges
+/// are from the curve.
+fn timing(duration_s: f64, max_edge: f64, total_error: f64) -> [(String, String); 3] {
+    [
+        ("duration_s".to_string(), format!("{duration_s:.9}")),
+        ("max_edge_error_ticks".to_string(), format!("{max_edge:.6}")),
+        ("total_error_ticks".to_string(), format!("{total_error:.6}")),
+    ]
 }
 
 /// Whether golden files are being blessed: `UPDATE_GOLDEN=1`.

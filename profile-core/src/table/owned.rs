@@ -39,17 +39,21 @@ pub enum Generated {
     Segments(SegmentTable),
 }
 
+/// `(period, count)` segments as one period per step: the one place a
+/// segment table is expanded.
+pub(crate) fn expand(pairs: &[(u32, u32)]) -> Vec<u32> {
+    pairs
+        .iter()
+        .flat_map(|&(p, c)| core::iter::repeat_n(p, c as usize))
+        .collect()
+}
+
 impl Generated {
-    /// One period per step: the table itself, or the segments expanded. The
-    /// one place a segment table is expanded.
+    /// One period per step: the table itself, or the segments expanded.
     pub fn step_periods(&self) -> Vec<u32> {
         match self {
             Generated::Steps(t) => t.periods.clone(),
-            Generated::Segments(t) => t
-                .pairs
-                .iter()
-                .flat_map(|&(p, c)| core::iter::repeat_n(p, c as usize))
-                .collect(),
+            Generated::Segments(t) => expand(&t.pairs),
         }
     }
 
