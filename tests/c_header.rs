@@ -1,10 +1,12 @@
-//! The C header of the shipped `profiles.toml` compiles cleanly as C99 and
-//! holds the same tables and figures as the Rust side.
+//! The C of the shipped `profiles.toml`, one header or a header and a source
+//! file, compiles cleanly as C89 and C99 and holds the same tables and
+//! figures as the Rust side.
 //!
-//! The test writes `profiles.h` with `Profiles::write_c_header`, generates a
-//! C program that prints every profile's first and last entries, its sum and
-//! each `#define`, compiles it with `cc -std=c99 -Wall -Wextra -Werror
-//! -pedantic` (set `CC` to use another compiler), runs it and compares.
+//! The test writes the C with `Profiles::write_c_header` or
+//! `write_c_split`, generates a C program that prints every profile's first
+//! and last entries, its sum and each `#define`, compiles the generated files
+//! as C89 and the program as C99 with `-Wall -Wextra -Werror -pedantic` (set
+//! `CC` to use another compiler), runs it and compares.
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -13,9 +15,18 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use profile_core::Generated;
-use profile_core::build::Profiles;
+use profile_core::build::{CStyle, Profiles};
 
-const FLAGS: &[&str] = &["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic"];
+const FLAGS: &[&str] = &["-Wall", "-Wextra", "-Werror", "-pedantic"];
+/// A storage word as a user's toolchain would define it (`__code` on SDCC);
+/// gcc has none, so it is a macro here.
+const DEFINES: &[&str] = &["-DROM="];
+
+fn work_dir_existing(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join("c_header")
+        .join(name)
+}
 
 fn work_dir(name: &str) -> PathBuf {
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
@@ -132,6 +143,14 @@ fn defines(header: &str, profiles: &Profiles) -> BTreeMap<String, Vec<(String, b
             .max_by_key(|upper| upper.len())
             .unwrap_or_else(|| panic!("`#define {macro_name}` belongs to no profile"));
         let figure = macro_name[owner.len() + 1..].to_string();
+        // A figure above 32 bits is defined twice, for C99 and for C89:
+        // the program is C99, so the first one counts.
+        if out
+            .get(&owner.to_lowercase())
+            .is_some_and(|seen| seen.iter().any(|(f, _)| *f == figure))
+        {
+            continue;
+        }
         let is_float = !value.ends_with(['u', 'l']) && value.contains(['.', 'e', 'E']);
         out.entry(owner.to_lowercase())
             .or_default()
@@ -228,14 +247,51 @@ fn run(command: &mut Command, what: &str) -> String {
     stdout
 }
 
-/// Writes the header of `profiles`, compiles and runs a program printing
-/// it, checks every figure against the Rust tables; returns what C printed.
-fn check_header(profiles: &Profiles, dir_name: &str) -> BTreeMap<String, BTreeMap<String, Figure>> {
+/// How the C is laid out: one header of `static` tables, or a header of
+/// `extern` declarations and one source file, with a placement.
+enum Layout {
+    Single,
+    Split(CStyle),
+}
+
+/// Writes the C of `profiles` in `layout`, compiles it as C89 (the
+/// generated files and a C89 user) and, with a program printing every
+/// figure, as C99; runs the program and checks every figure against the
+/// Rust tables; returns what C printed.
+fn check_header(
+    profiles: &Profiles,
+    dir_name: &str,
+    layout: &Layout,
+) -> BTreeMap<String, BTreeMap<String, Figure>> {
     let dir = work_dir(dir_name);
     let header_path = dir.join("profiles.h");
-    profiles.write_c_header(&header_path).unwrap();
-    let header = fs::read_to_string(&header_path).unwrap();
-    assert_eq!(header, profiles.c_header());
+    let mut sources = vec!["main.c", "other.c"];
+    let header = match layout {
+        Layout::Single => {
+            profiles.write_c_header(&header_path).unwrap();
+            let header = fs::read_to_string(&header_path).unwrap();
+            assert_eq!(header, profiles.c_header());
+            header
+        }
+        Layout::Split(style) => {
+            let (h, c) = profiles.write_c_split(&header_path, style).unwrap();
+            assert_eq!(
+                (h.as_path(), c.as_path()),
+                (header_path.as_path(), dir.join("profiles.c").as_path())
+            );
+            let header = fs::read_to_string(&h).unwrap();
+            let source = fs::read_to_string(&c).unwrap();
+            assert_eq!(header, profiles.c_split("profiles.h", style).header);
+            assert!(source.contains("#include \"profiles.h\"\n"));
+            // Declarations only: no table is defined in the header.
+            assert!(
+                !header.contains('{') && !header.contains("static"),
+                "{header}"
+            );
+            sources.push("profiles.c");
+            header
+        }
+    };
 
     let defines = defines(&header, profiles);
     let first = profiles.profiles()[0].name.to_uppercase();
@@ -244,8 +300,8 @@ fn check_header(profiles: &Profiles, dir_name: &str) -> BTreeMap<String, BTreeMa
         Generated::Segments(_) => format!("{first}_SEGMENTS[0][0]"),
     };
     fs::write(dir.join("main.c"), program(profiles, &defines)).unwrap();
-    // A second translation unit: the tables are `static`, so including the
-    // header twice in one program must link.
+    // A second translation unit: including the header twice in one program
+    // must link (`static` tables, or `extern` ones defined once).
     fs::write(
         dir.join("other.c"),
         format!(
@@ -256,16 +312,31 @@ fn check_header(profiles: &Profiles, dir_name: &str) -> BTreeMap<String, BTreeMa
     .unwrap();
 
     let cc = std::env::var("CC").unwrap_or_else(|_| "cc".to_string());
+    let flags = |std: &'static str| {
+        let mut f = vec![std];
+        f.extend(FLAGS);
+        f.extend(DEFINES);
+        f
+    };
+    // C89: the generated files and a user of them compile without a warning.
+    for c89 in sources.iter().filter(|s| **s != "main.c") {
+        run(
+            Command::new(&cc)
+                .args(flags("-std=c89"))
+                .args(["-c", c89, "-o", "/dev/null"])
+                .current_dir(&dir),
+            &format!("`{cc} -std=c89 {} -c {c89}`", FLAGS.join(" ")),
+        );
+    }
     let exe = dir.join("profiles");
     run(
         Command::new(&cc)
-            .args(FLAGS)
+            .args(flags("-std=c99"))
             .arg("-o")
             .arg(&exe)
-            .arg("main.c")
-            .arg("other.c")
+            .args(&sources)
             .current_dir(&dir),
-        &format!("`{cc} {}`", FLAGS.join(" ")),
+        &format!("`{cc} -std=c99 {}`", FLAGS.join(" ")),
     );
     let stdout = run(&mut Command::new(&exe), "the compiled C program");
 
@@ -342,7 +413,7 @@ fn the_c_header_compiles_and_matches_the_rust_tables() {
             .c_header()
             .contains("#ifndef STEPPER_PROFILES_PROFILES_H\n")
     );
-    let printed = check_header(&profiles, "shipped");
+    let printed = check_header(&profiles, "shipped", &Layout::Single);
 
     // The seeds, through C.
     let orange = &printed["sigmoid_orange"];
@@ -372,6 +443,14 @@ fmin = 10
 fmax = 1000
 len = 100
 
+# 72 s on a 100 MHz timer: 7.3e9 ticks in all, a figure above 32 bits.
+[profiles.very_slow]
+curve = "linear"
+fmin = 1
+fmax = 10
+len = 400
+timer_hz = 100_000_000
+
 [profiles.slow_segments]
 curve = "exponential"
 fmin = 20
@@ -386,8 +465,109 @@ segments = 6
             .c_header()
             .contains("#ifndef STEPPER_PROFILES_SLOW_H\n")
     );
-    let printed = check_header(&profiles, "u32");
+    let printed = check_header(&profiles, "u32", &Layout::Single);
     assert_eq!(printed["slow_linear"]["word_bytes"], Figure::Int(4));
     assert!(printed["slow_linear"]["first"] > Figure::Int(65_535));
     assert!(printed["slow_segments"]["first"] > Figure::Int(65_535));
+    // Read through `ull` in C99; C89 gets the same value as a double.
+    assert!(printed["very_slow"]["TOTAL_TICKS"] > Figure::Int(u64::from(u32::MAX)));
+    let header = profiles.c_header();
+    assert!(
+        header.contains("#else\n#define VERY_SLOW_TOTAL_TICKS "),
+        "{header}"
+    );
+}
+
+/// The split layout: the header declares, one source file defines, in a
+/// storage and a linker section of the user's choice.
+#[test]
+fn split_c_files_define_the_tables_once_where_the_user_places_them() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("profiles.toml");
+    let profiles = Profiles::load(&path).unwrap_or_else(|e| panic!("{e}"));
+    let style = CStyle {
+        storage: Some("ROM".into()),
+        attribute: Some("__attribute__((section(\".rodata.ramps\")))".into()),
+    };
+    let files = profiles.c_split("profiles.h", &style);
+    assert!(
+        files.header.contains(
+            "extern const ROM uint16_t SIGMOID_ORANGE_PERIODS[1000] \
+             __attribute__((section(\".rodata.ramps\")));\n"
+        ),
+        "{}",
+        files.header
+    );
+    assert!(
+        files.source.contains(
+            "const ROM uint16_t SIGMOID_ORANGE_PERIODS[1000] \
+             __attribute__((section(\".rodata.ramps\"))) = {\n    19183, "
+        ),
+        "{}",
+        files.source
+    );
+    let printed = check_header(&profiles, "split", &Layout::Split(style));
+    let orange = &printed["sigmoid_orange"];
+    assert_eq!(
+        (orange["first"], orange["last"]),
+        (Figure::Int(19183), Figure::Int(156))
+    );
+    // Every table sits in the section, once.
+    let dir = work_dir_existing("split");
+    let object = dir.join("profiles.o");
+    let cc = std::env::var("CC").unwrap_or_else(|_| "cc".to_string());
+    run(
+        Command::new(&cc)
+            .args(["-std=c99", "-DROM=", "-c", "profiles.c", "-o"])
+            .arg(&object)
+            .current_dir(&dir),
+        "compiling profiles.c",
+    );
+    let symbols = run(
+        Command::new("objdump").arg("-t").arg(&object),
+        "`objdump -t` (binutils)",
+    );
+    for p in profiles.profiles() {
+        let upper = p.name.to_uppercase();
+        let lines: Vec<&str> = symbols
+            .lines()
+            .filter(|l| {
+                l.ends_with(&format!(" {upper}_PERIODS"))
+                    || l.ends_with(&format!(" {upper}_SEGMENTS"))
+            })
+            .collect();
+        assert_eq!(lines.len(), 1, "{upper}: {symbols}");
+        assert!(lines[0].contains(".rodata.ramps"), "{}", lines[0]);
+    }
+}
+
+/// Text pasted into C must stay one declaration.
+#[test]
+fn a_placement_that_would_break_the_c_is_refused() {
+    let profiles = Profiles::parse(
+        "p.toml",
+        "[profiles.a]\ncurve = \"linear\"\nfmin = 100\nfmax = 1000\nlen = 10\ntimer_hz = 1_000_000\n",
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let dir = work_dir("refused");
+    let bad = CStyle {
+        storage: None,
+        attribute: Some("PROGMEM; int x".into()),
+    };
+    let err = profiles.write_c_split(dir.join("p.h"), &bad).unwrap_err();
+    assert_eq!(
+        err.to_string(),
+        "the C attribute `PROGMEM; int x` must be one line without `;`"
+    );
+    let blank = CStyle {
+        storage: Some(" ".into()),
+        attribute: None,
+    };
+    assert_eq!(
+        profiles
+            .write_c_split(dir.join("p.h"), &blank)
+            .unwrap_err()
+            .to_string(),
+        "the C storage is blank: give a word such as `__code`"
+    );
+    assert!(!dir.join("p.h").exists());
 }

@@ -41,6 +41,7 @@ use std::vec::Vec;
 
 use proc_macro2::TokenStream;
 
+pub use crate::emit::c::{CStyle, Split};
 use crate::emit::{self, Profile};
 use crate::pipeline::{self, Budget, Options};
 
@@ -130,8 +131,33 @@ impl Profiles {
         emit::print::print(self.rust_tokens())
     }
 
-    /// A C99 header with every profile's table and figures.
+    /// One C header with every profile's table (`static const`) and
+    /// figures (`#define`s); compiles as C89 and C99.
     pub fn c_header(&self) -> String {
+        self.c_header_with(&CStyle::default())
+    }
+
+    /// [`c_header`](Self::c_header) with the arrays placed by `style`
+    /// (`__code`, `PROGMEM`, a linker section).
+    pub fn c_header_with(&self, style: &CStyle) -> String {
+        emit::c::header(&self.c_guard(), &self.source_name(), &self.profiles, style)
+    }
+
+    /// A C header of `extern` declarations and figures, and the source file
+    /// that defines the tables once; the source includes the header as
+    /// `header_name`.
+    pub fn c_split(&self, header_name: &str, style: &CStyle) -> Split {
+        emit::c::split(
+            &self.c_guard(),
+            &self.source_name(),
+            header_name,
+            &self.profiles,
+            style,
+        )
+    }
+
+    /// The include guard: `STEPPER_PROFILES_<FILE STEM>_H`.
+    fn c_guard(&self) -> String {
         let stem = Path::new(&self.file)
             .file_stem()
             .map_or("profiles".into(), |s| s.to_string_lossy().into_owned());
@@ -145,14 +171,14 @@ impl Profiles {
                 }
             })
             .collect();
-        let source = Path::new(&self.file)
+        format!("STEPPER_PROFILES_{guard}_H")
+    }
+
+    /// The file's name without its folder, for generated comments.
+    fn source_name(&self) -> String {
+        Path::new(&self.file)
             .file_name()
-            .map_or(self.file.clone(), |s| s.to_string_lossy().into_owned());
-        emit::c::header(
-            &format!("STEPPER_PROFILES_{guard}_H"),
-            &source,
-            &self.profiles,
-        )
+            .map_or(self.file.clone(), |s| s.to_string_lossy().into_owned())
     }
 
     /// Writes `profiles.rs` into `out_dir` (to `include!`), creating the
@@ -172,12 +198,31 @@ impl Profiles {
     /// under `OUT_DIR`, never in the source tree; give an absolute path to
     /// write elsewhere.
     pub fn write_c_header(&self, path: impl AsRef<Path>) -> Result<PathBuf, LoadError> {
-        let path = match std::env::var_os("OUT_DIR") {
-            Some(out) if path.as_ref().is_relative() => Path::new(&out).join(path),
-            _ => path.as_ref().to_path_buf(),
-        };
+        let path = out_path(path.as_ref());
         write(&path, &self.c_header())?;
         Ok(path)
+    }
+
+    /// Writes the C header of `extern` declarations to `header` and the
+    /// definitions beside it, with the extension `.c` (`ramps.h` and
+    /// `ramps.c`), placed by `style`; returns both paths. Relative paths are
+    /// under `OUT_DIR` in a build script, as for
+    /// [`write_c_header`](Self::write_c_header).
+    pub fn write_c_split(
+        &self,
+        header: impl AsRef<Path>,
+        style: &CStyle,
+    ) -> Result<(PathBuf, PathBuf), LoadError> {
+        style.check().map_err(|text| LoadError { text })?;
+        let header = out_path(header.as_ref());
+        let source = header.with_extension("c");
+        let name = header
+            .file_name()
+            .map_or("profiles.h".into(), |n| n.to_string_lossy().into_owned());
+        let files = self.c_split(&name, style);
+        write(&header, &files.header)?;
+        write(&source, &files.source)?;
+        Ok((header, source))
     }
 }
 
@@ -207,6 +252,14 @@ pub fn build_script(path: impl AsRef<Path>) -> Option<Profiles> {
             }
             None
         }
+    }
+}
+
+/// `path` under `OUT_DIR` when it is relative and a build script runs.
+fn out_path(path: &Path) -> PathBuf {
+    match std::env::var_os("OUT_DIR") {
+        Some(out) if path.is_relative() => Path::new(&out).join(path),
+        _ => path.to_path_buf(),
     }
 }
 
