@@ -36,7 +36,7 @@ toml="$work/profiles.toml"
     done
 } > "$toml"
 
-(cd "$root" && cargo run -q --example emit -- "$toml") > "$work/expanded.rs"
+(cd "$root" && cargo run -q -p stepper-profiles-cli -- rust "$toml") > "$work/expanded.rs"
 
 make_crate() { # name, main.rs body, dependency line
     mkdir -p "$work/$1/src"
@@ -65,7 +65,7 @@ make_crate largest 'static T: [u32; 65536] = stepper_profiles::period_table!(
     curve = sigmoid, len = 65536, fmin = 500, fmax = 64000, flexible = 8,
     timer_hz = 100_000_000, word = u32);
 fn main() { println!("{}", T[0]); }' "$dep"
-make_crate largest-literal "static T: [u32; 65536] = $(cd "$root" && printf '[defaults]\n[profiles.t]\ncurve = "sigmoid"\nlen = 65536\nfmin = 500\nfmax = 64000\nflexible = 8\ntimer_hz = 100_000_000\nword = "u32"\n' > "$work/largest.toml" && cargo run -q --example emit -- "$work/largest.toml" | sed -n 's/^    pub static PERIODS: \[u32; 65536\] = \(.*\);$/\1/p');
+make_crate largest-literal "static T: [u32; 65536] = $(cd "$root" && printf '[defaults]\n[profiles.t]\ncurve = "sigmoid"\nlen = 65536\nfmin = 500\nfmax = 64000\nflexible = 8\ntimer_hz = 100_000_000\nword = "u32"\n' > "$work/largest.toml" && cargo run -q -p stepper-profiles-cli -- rust "$work/largest.toml" | sed -n 's/^    pub static PERIODS: \[u32; 65536\] = \(.*\);$/\1/p');
 fn main() { println!(\"{}\", T[0]); }" ""
 
 # Wall time of a command in a directory; its peak resident memory (of the

@@ -6,6 +6,7 @@ use std::string::{String, ToString};
 use std::vec;
 use std::vec::Vec;
 
+use crate::base::modes::Discretization;
 use crate::motor::{Motor, TorqueFigures};
 use crate::pipeline::Compiled;
 use crate::schema::describe;
@@ -191,6 +192,10 @@ pub fn doc_lines(table: &Generated) -> std::vec::Vec<String> {
                 f.total_error_ticks,
                 f.max_accel_hz_s
             ));
+            if let Some(note) = start_note(table) {
+                lines.push(String::new());
+                lines.push(format!("Note: {note}"));
+            }
         }
         Generated::Segments(t) => {
             let f = &t.figures;
@@ -208,4 +213,39 @@ pub fn doc_lines(table: &Generated) -> std::vec::Vec<String> {
         }
     }
     lines
+}
+
+/// How far above `fmin` a table may start before it is worth saying.
+const START_NOTE_RATIO: f64 = 1.5;
+
+/// A sentence for a per-step table whose first entry is far above the
+/// curve's `fmin`, or `None`. An exact table's first period is the time the
+/// curve takes for the first step, which a fast start covers well above
+/// `fmin`; an index table's first entry is the curve at index 0.
+pub fn start_note(table: &Generated) -> Option<String> {
+    let Generated::Steps(t) = table else {
+        return None;
+    };
+    let (fmin, _) = t.spec.curve.frequencies();
+    let start = t.figures.start_hz;
+    if !(fmin > 0.0 && start >= START_NOTE_RATIO * fmin) {
+        return None;
+    }
+    let fmin_text = crate::schema::units::show(crate::base::key::Key::FMIN, fmin);
+    let why = match t.spec.discretization {
+        Discretization::Exact => format!(
+            "the curve starts at `fmin` but covers the first step at {start:.1} Hz on \
+             average (`discretization = exact`); `discretization = left_endpoint` starts \
+             at `fmin` itself"
+        ),
+        d => format!(
+            "the curve is already at {start:.1} Hz where the first step begins \
+             (`discretization = {}`)",
+            d.name()
+        ),
+    };
+    Some(format!(
+        "the first entry runs at {start:.1} Hz, {:.1} times `fmin` = {fmin_text}: {why}.",
+        start / fmin
+    ))
 }

@@ -1,0 +1,248 @@
+//! `stepper-profiles`: stepper-motor acceleration tables from a profiles
+//! file, for C and Rust firmware alike.
+//!
+//! ```text
+//! stepper-profiles report [FILE] [-o DIR]   figures of every profile
+//! stepper-profiles check FILE...            exit 1 on a mistake, file:line:col
+//! stepper-profiles header FILE [-o OUT]     the C (--split: OUT.h and OUT.c)
+//! stepper-profiles rust FILE [-o OUT]       the Rust modules
+//! stepper-profiles plot FILE [-o DIR]       SVG plots and CSV tables
+//! ```
+
+mod files;
+mod plots;
+mod report;
+
+use std::io::Write as _;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::sync::mpsc;
+use std::time::Duration;
+
+use clap::{Parser, Subcommand};
+use profile_core::build::{CStyle, Profiles};
+
+/// Stepper-motor acceleration tables from a profiles file: report their
+/// figures, check the file, write the C or the Rust, plot them.
+///
+/// A profiles file declares one table per `[profiles.NAME]` section (see
+/// the `profiles.toml` shipped with stepper-profiles). A mistake in it is
+/// printed as `file:line:col: message` with the line and a caret, and the
+/// command exits with status 1.
+#[derive(Debug, Parser)]
+#[command(name = "stepper-profiles", version, max_term_width = 100)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Print every profile's parameters and figures, the accuracy of every
+    /// discretization and rounding, and the motor check
+    Report {
+        /// The profiles file
+        #[arg(default_value = "profiles.toml")]
+        file: PathBuf,
+        /// Also write the plots, a CSV per profile and `profiles.h` into DIR
+        #[arg(short, long, value_name = "DIR")]
+        out: Option<PathBuf>,
+        /// Regenerate the README's figures into DIR (needs the shipped file)
+        #[arg(long, value_name = "DIR", hide = true)]
+        docs: Option<PathBuf>,
+    },
+    /// Check profiles files: print each mistake as `file:line:col` with the
+    /// line and a caret, and exit with status 1 if there is one
+    Check {
+        /// The profiles files
+        #[arg(required = true)]
+        files: Vec<PathBuf>,
+    },
+    /// Write the C: every table and its figures, as one header or, with
+    /// `--split`, a header of `extern` declarations and one source file
+    Header {
+        /// The profiles file
+        file: PathBuf,
+        /// Where to write the header (standard output without it)
+        #[arg(short, long, value_name = "OUT.h")]
+        out: Option<PathBuf>,
+        /// Declarations in OUT.h, the tables defined once in OUT.c
+        #[arg(long, requires = "out")]
+        split: bool,
+        /// Written before each array's element type, e.g. `__code` (SDCC) or
+        /// `__flash` (AVR GCC)
+        #[arg(long, value_name = "WORD")]
+        storage: Option<String>,
+        /// Written after each array's name, e.g. `PROGMEM` or
+        /// `'__attribute__((section(".ramps")))'`
+        #[arg(long, value_name = "TEXT")]
+        attribute: Option<String>,
+    },
+    /// Write the Rust: one module per profile, as `include_profiles!`
+    /// expands to and a build script writes
+    Rust {
+        /// The profiles file
+        file: PathBuf,
+        /// Where to write it (standard output without it)
+        #[arg(short, long, value_name = "OUT.rs")]
+        out: Option<PathBuf>,
+    },
+    /// Draw every profile (frequency and acceleration against time), the
+    /// torque of profiles that name a motor and an overview as SVG, and each
+    /// table as CSV
+    Plot {
+        /// The profiles file
+        file: PathBuf,
+        /// The folder to write into (created if missing)
+        #[arg(short, long, value_name = "DIR", default_value = "plots")]
+        out: PathBuf,
+    },
+}
+
+/// A failure, already worded for the user.
+struct Failure(String);
+
+impl<E: std::fmt::Display> From<E> for Failure {
+    fn from(e: E) -> Self {
+        Failure(e.to_string())
+    }
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match run(cli.command) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(Failure(message)) => {
+            let _ = std::io::stdout().flush();
+            eprintln!("{}", message.trim_end());
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn run(command: Command) -> Result<(), Failure> {
+    match command {
+        Command::Report { file, out, docs } => {
+            let profiles = load(&file)?;
+            stdout(&report::text(&file.display().to_string(), &profiles)?)?;
+            if let Some(out) = out {
+                let mut written = files::write_plots(&profiles, &out)
+                    .map_err(|e| format!("cannot write into `{}`: {e}", out.display()))?;
+                written.push(profiles.write_c_header(out.join("profiles.h"))?);
+                stdout(&format!(
+                    "\nwrote {} files to {}\n",
+                    written.len(),
+                    out.display()
+                ))?;
+            }
+            if let Some(docs) = docs {
+                files::write_docs(&profiles, &docs)
+                    .map_err(|e| format!("cannot write the README's figures: {e}"))?;
+                stdout(&format!(
+                    "wrote the README's figures to {}\n",
+                    docs.display()
+                ))?;
+            }
+            Ok(())
+        }
+        Command::Check { files } => {
+            let mut failed = Vec::new();
+            for file in &files {
+                match Profiles::load(file) {
+                    Ok(p) => stdout(&format!(
+                        "{}: {} profiles, no mistakes\n",
+                        file.display(),
+                        p.profiles().len()
+                    ))?,
+                    Err(e) => failed.push(e.to_string()),
+                }
+            }
+            if failed.is_empty() {
+                Ok(())
+            } else {
+                Err(Failure(failed.join("\n")))
+            }
+        }
+        Command::Header {
+            file,
+            out,
+            split,
+            storage,
+            attribute,
+        } => {
+            let style = CStyle { storage, attribute };
+            style.check()?;
+            let profiles = load(&file)?;
+            match (out, split) {
+                (Some(out), true) => {
+                    if out.extension().is_none_or(|e| e != "h") {
+                        return Err(Failure(format!(
+                            "`--split` writes a header and a `.c` beside it: give the header a \
+                             name ending in `.h` (got `{}`)",
+                            out.display()
+                        )));
+                    }
+                    let (h, c) = profiles.write_c_split(&out, &style)?;
+                    eprintln!("wrote {} and {}", h.display(), c.display());
+                    Ok(())
+                }
+                (out, _) => emit(out.as_deref(), &profiles.c_header_with(&style)),
+            }
+        }
+        Command::Rust { file, out } => emit(out.as_deref(), &load(&file)?.rust_source()),
+        Command::Plot { file, out } => {
+            let profiles = load(&file)?;
+            let written = files::write_plots(&profiles, &out)
+                .map_err(|e| format!("cannot write into `{}`: {e}", out.display()))?;
+            stdout(&format!(
+                "wrote {} files to {}\n",
+                written.len(),
+                out.display()
+            ))?;
+            Ok(())
+        }
+    }
+}
+
+/// Reads and computes a profiles file, saying so if it takes a while.
+fn load(path: &Path) -> Result<Profiles, Failure> {
+    let (done, waiting) = mpsc::channel::<()>();
+    let notice = std::thread::spawn(move || {
+        if waiting.recv_timeout(Duration::from_secs(1)).is_err() {
+            eprintln!("computing tables...");
+        }
+    });
+    let loaded = Profiles::load(path);
+    let _ = done.send(());
+    let _ = notice.join();
+    Ok(loaded?)
+}
+
+/// Writes `text` to `out`, creating its folder, or to standard output.
+fn emit(out: Option<&Path>, text: &str) -> Result<(), Failure> {
+    match out {
+        Some(path) => {
+            if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+                std::fs::create_dir_all(dir)
+                    .map_err(|e| format!("cannot create the folder `{}`: {e}", dir.display()))?;
+            }
+            std::fs::write(path, text)
+                .map_err(|e| format!("cannot write `{}`: {e}", path.display()))?;
+            eprintln!("wrote {}", path.display());
+            Ok(())
+        }
+        None => stdout(text),
+    }
+}
+
+/// Writes `text` to standard output. A reader that closed the pipe
+/// (`stepper-profiles report | head`) has all it wanted: not an error.
+fn stdout(text: &str) -> Result<(), Failure> {
+    let mut out = std::io::stdout().lock();
+    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
+        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => {
+            Err(Failure(format!("cannot write to standard output: {e}")))
+        }
+        _ => Ok(()),
+    }
+}

@@ -1,0 +1,241 @@
+//! `report`: every profile's parameters and figures, the accuracy of each
+//! discretization and rounding, the motor check; and the files behind the
+//! plots (`report -o DIR`, `plot`).
+
+use std::fmt::Write as _;
+
+use profile_core::Generated;
+use profile_core::build::Profiles;
+use profile_core::emit::{Profile, start_note};
+use profile_core::motor::Motor;
+use profile_core::player::{Player, Ramp};
+use profile_core::schema::describe;
+use profile_core::simulate::{self, SimOptions, SimResult};
+use profile_core::{Discretization, Error, Rounding, Spec};
+
+/// The whole report of `profiles`, read from `path`.
+pub fn text(path: &str, profiles: &Profiles) -> Result<String, Error> {
+    let mut out = String::new();
+    let _ = writeln!(out, "{path}: {} profiles\n", profiles.profiles().len());
+    print_parameters(&mut out, profiles.profiles());
+    print_table(&mut out, profiles.profiles())?;
+    print_accuracy(&mut out, profiles.profiles())?;
+    print_motors(&mut out, profiles.profiles());
+    Ok(out)
+}
+
+/// Every profile's parameters, with their units, defaults included.
+fn print_parameters(out: &mut String, profiles: &[Profile]) {
+    let _ = writeln!(
+        out,
+        "Parameters (as written in a profiles file; defaults included):"
+    );
+    for p in profiles {
+        let params: Vec<String> = describe(p.table.spec())
+            .into_iter()
+            .map(|(key, value)| format!("{key} = {value}"))
+            .collect();
+        let _ = writeln!(out, "{:<21} {}", p.name, params.join(", "));
+    }
+    let _ = writeln!(out);
+}
+
+/// Pulse-edge error of a table against the continuous curve, in ticks:
+/// `(largest |error|, error of the last edge)`.
+fn edge_error(spec: &Spec, periods: &[u32]) -> Result<(f64, f64), Error> {
+    let scale = spec.timer.timer_hz as f64 / spec.timer.ticks_per_step as f64;
+    let mut played = 0u64;
+    let mut worst = 0.0f64;
+    let mut last = 0.0;
+    spec.for_each_exact_edge(|k, t| {
+        if let Some(p) = periods.get(k as usize - 1) {
+            played += *p as u64;
+            last = played as f64 - t * scale;
+            worst = worst.max(last.abs());
+        }
+    })?;
+    Ok((worst, last))
+}
+
+fn print_table(out: &mut String, profiles: &[Profile]) -> Result<(), Error> {
+    let _ = writeln!(
+        out,
+        "{:<21} {:<12} {:<22} {:>5} {:>9} {:>9} {:>8} {:>6} {:>9} {:>9} {:>8} {:>7}",
+        "profile",
+        "curve",
+        "discretization/round",
+        "len",
+        "start Hz",
+        "end Hz",
+        "ramp s",
+        "flash",
+        "max a",
+        "max jerk",
+        "edge err",
+        "margin"
+    );
+    let _ = writeln!(
+        out,
+        "{:<21} {:<12} {:<22} {:>5} {:>9} {:>9} {:>8} {:>6} {:>9} {:>9} {:>8} {:>7}",
+        "", "", "", "steps", "", "", "", "bytes", "Hz/s", "Hz/s²", "ticks", "ticks"
+    );
+    for p in profiles {
+        match &p.table {
+            Generated::Steps(t) => {
+                let (f, s) = (&t.figures, &t.spec);
+                let (edge, _) = edge_error(s, &t.periods)?;
+                let _ = writeln!(
+                    out,
+                    "{:<21} {:<12} {:<22} {:>5} {:>9.1} {:>9.1} {:>8.5} {:>6} {:>9.3e} {:>9.2e} {:>8.3} {:>7}",
+                    p.name,
+                    s.curve.name(),
+                    format!("{}/{}", s.discretization.name(), s.rounding.name()),
+                    f.len,
+                    f.start_hz,
+                    f.final_hz,
+                    f.duration_s,
+                    f.len as usize * s.timer.word.bytes() as usize,
+                    f.max_accel_hz_s,
+                    f.max_jerk_hz_s2,
+                    edge,
+                    f.overflow_margin_ticks,
+                );
+            }
+            Generated::Segments(t) => {
+                let (f, s) = (&t.figures, &t.spec);
+                let top = t.pairs.iter().map(|p| p.0).max().unwrap_or(0);
+                let _ = writeln!(
+                    out,
+                    "{:<21} {:<12} {:<22} {:>5} {:>9.1} {:>9.1} {:>8.5} {:>6} {:>9} {:>9} {:>8.3} {:>7}",
+                    p.name,
+                    s.curve.name(),
+                    format!("{} segments", f.segments),
+                    f.steps,
+                    s.timer.timer_hz as f64 / t.pairs.first().map_or(1, |p| p.0) as f64,
+                    s.timer.timer_hz as f64 / t.pairs.last().map_or(1, |p| p.0) as f64,
+                    f.duration_s,
+                    f.flash_bytes,
+                    "-",
+                    "-",
+                    f.max_edge_error_ticks,
+                    s.timer.word.max() - top,
+                );
+            }
+        }
+    }
+    for p in profiles {
+        if let Some(note) = start_note(&p.table) {
+            let _ = writeln!(out, "note: {}: {note}", p.name);
+        }
+    }
+    Ok(())
+}
+
+/// For each curve, every discretization and rounding against the continuous
+/// curve: largest pulse-edge error and drift of the last edge, in ticks.
+fn print_accuracy(out: &mut String, profiles: &[Profile]) -> Result<(), Error> {
+    let _ = writeln!(
+        out,
+        "\nAccuracy against the continuous curve (largest |edge error| / drift of the last edge, ticks):"
+    );
+    let _ = writeln!(
+        out,
+        "{:<21} {:<14} {:>22} {:>22} {:>22}",
+        "profile", "discretization", "truncate", "nearest", "diffuse"
+    );
+    for p in profiles {
+        let Generated::Steps(t) = &p.table else {
+            continue;
+        };
+        for d in [
+            Discretization::Exact,
+            Discretization::LeftEndpoint,
+            Discretization::Index,
+        ] {
+            let mut row = format!("{:<21} {:<14}", p.name, d.name());
+            let mut any = false;
+            for r in [Rounding::Truncate, Rounding::Nearest, Rounding::Diffuse] {
+                let mut spec = t.spec.with_discretization(d).with_rounding(r);
+                if d != Discretization::Index {
+                    spec = spec.with_arithmetic(profile_core::Arithmetic::F64);
+                }
+                let cell = match spec.table() {
+                    Ok(table) => {
+                        any = true;
+                        let (worst, last) = edge_error(&spec, &table.periods)?;
+                        format!("{worst:>10.3} / {last:>9.3}")
+                    }
+                    Err(_) => "-".to_string(),
+                };
+                row.push_str(&format!(" {cell:>22}"));
+            }
+            if any {
+                let _ = writeln!(out, "{row}");
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The move a `Player` plays from `table`: up it and down it again.
+fn round_trip(table: &[u32]) -> Vec<u32> {
+    let mut player = Player::new(Ramp::steps(table));
+    player.start(2 * table.len() as u32);
+    std::iter::from_fn(|| player.next_period()).collect()
+}
+
+/// The motor-bound profile's move (up the table and down), simulated.
+fn simulate_move(motor: &Motor, spec: &Spec, table: &[u32]) -> Result<SimResult, String> {
+    let moves = round_trip(table);
+    let options = SimOptions::suggested(motor, spec, &moves);
+    simulate::run(motor, spec, &moves, &options).map_err(|e| e.to_string())
+}
+
+/// For each profile that names a motor: the smallest torque margin of the
+/// compile-time check and where it is, and the simulated move.
+fn print_motors(out: &mut String, profiles: &[Profile]) {
+    let bound: Vec<&Profile> = profiles.iter().filter(|p| p.motor.is_some()).collect();
+    if bound.is_empty() {
+        return;
+    }
+    let _ = writeln!(
+        out,
+        "\nMotor torque (profiles that name a motor; the move is the table up and down again, simulated):"
+    );
+    let _ = writeln!(
+        out,
+        "{:<21} {:>10} {:>6} {:>9} {:>9} {:>9}   {:>5} {:>5} {:>8} {:>9}",
+        "profile",
+        "margin",
+        "step",
+        "at Hz",
+        "needed",
+        "available",
+        "lost",
+        "slips",
+        "max lag",
+        "overshoot"
+    );
+    let _ = writeln!(
+        out,
+        "{:<21} {:>10} {:>6} {:>9} {:>9} {:>9}   {:>5} {:>5} {:>8} {:>9}",
+        "", "N·m", "", "", "N·m", "N·m", "steps", "", "°el", "steps"
+    );
+    for p in bound {
+        let (Some(motor), Some(t)) = (&p.motor, &p.torque) else {
+            continue;
+        };
+        let sim = match simulate_move(motor, p.table.spec(), &p.table.step_periods()) {
+            Ok(r) => format!(
+                "{:>5} {:>5} {:>8.1} {:>9.3}",
+                r.lost_steps, r.slips, r.max_lag_deg, r.overshoot_steps
+            ),
+            Err(e) => format!("simulation: {e}"),
+        };
+        let _ = writeln!(
+            out,
+            "{:<21} {:>10.4} {:>6} {:>9.1} {:>9.4} {:>9.4}   {sim}",
+            p.name, t.min_margin_nm, t.step, t.hz, t.needed_nm, t.available_nm
+        );
+    }
+}

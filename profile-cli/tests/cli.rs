@@ -1,0 +1,270 @@
+//! The `stepper-profiles` binary, run as a user runs it: every command, its
+//! exit status, what it prints and the files it writes.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+
+use profile_core::build::{CStyle, Profiles};
+
+const BIN: &str = env!("CARGO_BIN_EXE_stepper-profiles");
+
+fn shipped() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("..")
+        .join("profiles.toml")
+}
+
+fn work_dir(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join("cli")
+        .join(name);
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn run(dir: &Path, args: &[&str]) -> Output {
+    Command::new(BIN)
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .unwrap_or_else(|e| panic!("cannot run {BIN}: {e}"))
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8(bytes.to_vec()).unwrap()
+}
+
+/// A profiles file with one mistake on line 7.
+const BAD: &str = "[profiles.a]\ncurve = \"linear\"\nfmin = 100\nfmax = 1000\nlen = 10\n\
+                   timer_hz = 1_000_000\nfoo = 3\n";
+
+const BAD_MESSAGE: &str = "bad.toml:7:1: unknown key `foo`; expected one of `curve`, `len`, \
+     `fmin`, `fmax`, `accel`, `timer_hz`, `word`, `ticks_per_step`, `discretization`, \
+     `rounding`, `arithmetic`, `segments`, or a motor's keys\n  |\n7 | foo = 3\n  | ^^^\n";
+
+#[test]
+fn every_command_answers_help() {
+    let dir = work_dir("help");
+    let top = run(&dir, &["--help"]);
+    assert!(top.status.success());
+    let top = text(&top.stdout);
+    for command in ["report", "check", "header", "rust", "plot"] {
+        assert!(top.contains(&format!("\n  {command} ")), "{command}: {top}");
+        let help = run(&dir, &[command, "--help"]);
+        assert!(help.status.success(), "{command} --help");
+        let help = text(&help.stdout);
+        assert!(
+            help.contains(&format!("Usage: stepper-profiles {command}")),
+            "{help}"
+        );
+    }
+}
+
+#[test]
+fn check_passes_a_good_file_and_fails_a_bad_one_with_the_caret() {
+    let dir = work_dir("check");
+    fs::write(dir.join("bad.toml"), BAD).unwrap();
+    let shipped = shipped();
+    let shipped = shipped.to_str().unwrap();
+    let good = run(&dir, &["check", shipped]);
+    assert!(good.status.success(), "{}", text(&good.stderr));
+    assert!(text(&good.stdout).ends_with("profiles.toml: 11 profiles, no mistakes\n"));
+
+    let bad = run(&dir, &["check", "bad.toml"]);
+    assert_eq!(bad.status.code(), Some(1));
+    assert_eq!(text(&bad.stderr), BAD_MESSAGE);
+    assert_eq!(text(&bad.stdout), "");
+
+    // Every file is checked; one bad file fails the run.
+    let both = run(&dir, &["check", shipped, "bad.toml"]);
+    assert_eq!(both.status.code(), Some(1));
+    assert!(text(&both.stdout).contains("11 profiles, no mistakes"));
+    assert_eq!(text(&both.stderr), BAD_MESSAGE);
+
+    let missing = run(&dir, &["check", "nowhere.toml"]);
+    assert_eq!(missing.status.code(), Some(1));
+    assert!(
+        text(&missing.stderr).starts_with("cannot read `nowhere.toml`: "),
+        "{}",
+        text(&missing.stderr)
+    );
+    // A usage mistake is clap's: status 2.
+    assert_eq!(run(&dir, &["check"]).status.code(), Some(2));
+}
+
+#[test]
+fn header_writes_the_c_of_the_library_one_file_or_split() {
+    let dir = work_dir("header");
+    let profiles = Profiles::load(shipped()).unwrap_or_else(|e| panic!("{e}"));
+    let file = shipped();
+    let file = file.to_str().unwrap();
+
+    let out = run(&dir, &["header", file]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout), profiles.c_header());
+
+    let out = run(&dir, &["header", file, "-o", "include/ramps.h"]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    assert_eq!(
+        fs::read_to_string(dir.join("include/ramps.h")).unwrap(),
+        profiles.c_header()
+    );
+
+    let out = run(
+        &dir,
+        &[
+            "header",
+            file,
+            "-o",
+            "split/ramps.h",
+            "--split",
+            "--storage",
+            "__code",
+            "--attribute",
+            "PROGMEM",
+        ],
+    );
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stderr), "wrote split/ramps.h and split/ramps.c\n");
+    let style = CStyle {
+        storage: Some("__code".into()),
+        attribute: Some("PROGMEM".into()),
+    };
+    let want = profiles.c_split("ramps.h", &style);
+    assert_eq!(
+        fs::read_to_string(dir.join("split/ramps.h")).unwrap(),
+        want.header
+    );
+    assert_eq!(
+        fs::read_to_string(dir.join("split/ramps.c")).unwrap(),
+        want.source
+    );
+    assert!(
+        want.source
+            .contains("const __code uint16_t SIGMOID_ORANGE_PERIODS[1000] PROGMEM = {")
+    );
+
+    let out = run(&dir, &["header", file, "-o", "ramps", "--split"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert_eq!(
+        text(&out.stderr),
+        "`--split` writes a header and a `.c` beside it: give the header a name ending in \
+         `.h` (got `ramps`)\n"
+    );
+    let out = run(&dir, &["header", file, "--attribute", "PROGMEM;"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert_eq!(
+        text(&out.stderr),
+        "the C attribute `PROGMEM;` must be one line without `;`\n"
+    );
+    assert_eq!(
+        run(&dir, &["header", file, "--split"]).status.code(),
+        Some(2)
+    );
+}
+
+#[test]
+fn rust_writes_the_modules_include_profiles_expands_to() {
+    let dir = work_dir("rust");
+    let profiles = Profiles::load(shipped()).unwrap_or_else(|e| panic!("{e}"));
+    let file = shipped();
+    let out = run(
+        &dir,
+        &["rust", file.to_str().unwrap(), "-o", "gen/profiles.rs"],
+    );
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let written = fs::read_to_string(dir.join("gen/profiles.rs")).unwrap();
+    assert_eq!(written, profiles.rust_source());
+    assert!(written.contains("pub mod sigmoid_orange {"));
+}
+
+#[test]
+fn plot_writes_an_svg_and_a_csv_per_profile() {
+    let dir = work_dir("plot");
+    let profiles = Profiles::load(shipped()).unwrap_or_else(|e| panic!("{e}"));
+    let file = shipped();
+    let out = run(&dir, &["plot", file.to_str().unwrap(), "-o", "figures"]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    // 11 profiles: SVG and CSV each, two torque plots, the overview.
+    assert_eq!(text(&out.stdout), "wrote 25 files to figures\n");
+    for p in profiles.profiles() {
+        let svg = fs::read_to_string(dir.join(format!("figures/{}.svg", p.name))).unwrap();
+        assert!(svg.starts_with("<svg"), "{}", p.name);
+        let csv = fs::read_to_string(dir.join(format!("figures/{}.csv", p.name))).unwrap();
+        let mut lines = csv.lines();
+        assert_eq!(lines.next(), Some("step,period_ticks,start_s,frequency_hz"));
+        // The CSV holds the table, step by step.
+        let periods: Vec<u32> = lines
+            .map(|l| l.split(',').nth(1).unwrap().parse().unwrap())
+            .collect();
+        assert_eq!(periods, p.table.step_periods(), "{}", p.name);
+        assert_eq!(
+            dir.join(format!("figures/{}_torque.svg", p.name)).exists(),
+            p.motor.is_some(),
+            "{}",
+            p.name
+        );
+    }
+    assert!(dir.join("figures/overview.svg").exists());
+}
+
+#[test]
+fn report_prints_parameters_with_units_and_says_when_a_table_starts_far_above_fmin() {
+    let dir = work_dir("report");
+    fs::write(
+        dir.join("profiles.toml"),
+        "[profiles.slow_start]\ncurve = \"sigmoid\"\nlen = 1000\nfmin = \"20 Hz\"\n\
+         fmax = \"64 kHz\"\nflexible = 8\ntimer_hz = \"10 MHz\"\ndiscretization = \"exact\"\n",
+    )
+    .unwrap();
+    // FILE defaults to `profiles.toml` in the current folder.
+    let out = run(&dir, &["report"]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let report = text(&out.stdout);
+    assert!(
+        report.starts_with("profiles.toml: 1 profiles\n"),
+        "{report}"
+    );
+    assert!(
+        report.contains(
+            "slow_start            curve = sigmoid, len = 1000, fmin = 20 Hz, fmax = 64 kHz, \
+             flexible = 8, timer_hz = 10 MHz,"
+        ),
+        "{report}"
+    );
+    assert!(
+        report.contains(
+            "note: slow_start: the first entry runs at 165.5 Hz, 8.3 times `fmin` = 20 Hz: the \
+             curve starts at `fmin` but covers the first step at 165.5 Hz on average \
+             (`discretization = exact`); `discretization = left_endpoint` starts at `fmin` \
+             itself.\n"
+        ),
+        "{report}"
+    );
+
+    // With -o, the files behind it too: SVG, CSV, overview, header.
+    let out = run(&dir, &["report", "-o", "out"]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    assert!(text(&out.stdout).ends_with("\nwrote 4 files to out\n"));
+    assert!(dir.join("out/profiles.h").exists());
+    assert!(dir.join("out/slow_start.svg").exists());
+}
+
+#[test]
+fn a_reader_that_stops_early_is_not_an_error() {
+    let dir = work_dir("pipe");
+    let mut child = Command::new(BIN)
+        .args(["report", shipped().to_str().unwrap()])
+        .current_dir(&dir)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    // Close the pipe before reading anything, as `| head -0` would.
+    drop(child.stdout.take());
+    let out = child.wait_with_output().unwrap();
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    assert!(!text(&out.stderr).contains("panicked"));
+}
