@@ -5,9 +5,11 @@
 //! builds, runs and leaves the C header under `OUT_DIR`, not in the source
 //! tree.
 
-use std::fs;
-use std::path::Path;
-use std::process::{Command, Output};
+mod common;
+
+use std::process::Output;
+
+use common::scratch::ScratchCrate;
 
 const CARGO_TOML: &str = r#"[package]
 name = "build-script-user"
@@ -46,32 +48,26 @@ fn profiles(fmax_key: &str) -> String {
     )
 }
 
-fn cargo(dir: &Path, args: &[&str]) -> Output {
-    let tmp = Path::new(env!("CARGO_TARGET_TMPDIR"));
-    Command::new(env!("CARGO"))
-        .current_dir(dir)
+fn cargo(scratch: &ScratchCrate, args: &[&str]) -> Output {
+    scratch
+        .cargo()
         .args(args)
-        // Shared with `tests/rebuild.rs`: the dependencies build once.
-        .env("CARGO_TARGET_DIR", tmp.join("rebuild-target"))
-        .env_remove("RUSTFLAGS")
         .output()
         .expect("cannot run cargo")
 }
 
 #[test]
 fn a_bad_file_fails_the_build_with_cargo_errors_and_a_good_one_builds() {
-    let root = env!("CARGO_MANIFEST_DIR");
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("build-script-user");
-    fs::create_dir_all(dir.join("src")).unwrap();
-    fs::write(dir.join("Cargo.toml"), CARGO_TOML.replace("@ROOT@", root)).unwrap();
-    fs::write(dir.join("build.rs"), BUILD_RS).unwrap();
-    fs::write(dir.join("src/main.rs"), MAIN_RS).unwrap();
-    if !dir.join("Cargo.lock").exists() {
-        fs::copy(Path::new(root).join("Cargo.lock"), dir.join("Cargo.lock")).unwrap();
-    }
-
-    fs::write(dir.join("profiles.toml"), profiles("fmx")).unwrap();
-    let bad = cargo(&dir, &["build", "--quiet"]);
+    let scratch = ScratchCrate::new(
+        "build-script-user",
+        &[
+            ("Cargo.toml", CARGO_TOML),
+            ("build.rs", BUILD_RS),
+            ("src/main.rs", MAIN_RS),
+        ],
+    );
+    scratch.write("profiles.toml", &profiles("fmx"));
+    let bad = cargo(&scratch, &["build", "--quiet"]);
     let stderr = String::from_utf8_lossy(&bad.stderr);
     assert!(!bad.status.success(), "a bad file built:\n{stderr}");
     let prefix = "error: build-script-user@0.0.0: ";
@@ -89,8 +85,8 @@ fn a_bad_file_fails_the_build_with_cargo_errors_and_a_good_one_builds() {
     assert_eq!(lines[at + 1..at + 4], expected[1..], "{stderr}");
     assert!(!stderr.contains("LoadError"), "{stderr}");
 
-    fs::write(dir.join("profiles.toml"), profiles("fmax")).unwrap();
-    let good = cargo(&dir, &["run", "--quiet"]);
+    scratch.write("profiles.toml", &profiles("fmax"));
+    let good = cargo(&scratch, &["run", "--quiet"]);
     assert!(
         good.status.success(),
         "{}",
@@ -104,7 +100,7 @@ fn a_bad_file_fails_the_build_with_cargo_errors_and_a_good_one_builds() {
         format!("{first} 100")
     );
     assert!(
-        !dir.join("profiles.h").exists(),
+        !scratch.dir.join("profiles.h").exists(),
         "the header went into the source tree"
     );
 }

@@ -5,9 +5,12 @@
 //! `UPDATE_GOLDEN=1`, checks them unchanged, then changes the table and reads
 //! the failure.
 
+mod common;
+
 use std::fs;
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::Output;
+
+use common::scratch::ScratchCrate;
 
 const CARGO_TOML: &str = r#"[package]
 name = "golden-user"
@@ -64,41 +67,26 @@ fn profiles_are_unchanged() {{
     )
 }
 
-struct Scratch {
-    dir: PathBuf,
-    target: PathBuf,
-}
+struct Scratch(ScratchCrate);
 
 impl Scratch {
     fn new() -> Self {
-        let tmp = Path::new(env!("CARGO_TARGET_TMPDIR"));
-        let root = env!("CARGO_MANIFEST_DIR");
-        let dir = tmp.join("golden-user");
-        fs::create_dir_all(dir.join("src")).unwrap();
-        fs::create_dir_all(dir.join("tests")).unwrap();
-        fs::write(dir.join("Cargo.toml"), CARGO_TOML.replace("@ROOT@", root)).unwrap();
-        fs::write(dir.join("src/lib.rs"), "").unwrap();
-        fs::write(dir.join("profiles.toml"), PROFILES_TOML).unwrap();
-        if !dir.join("Cargo.lock").exists() {
-            fs::copy(Path::new(root).join("Cargo.lock"), dir.join("Cargo.lock")).unwrap();
-        }
-        let _ = fs::remove_dir_all(dir.join("tests/golden"));
-        Scratch {
-            dir,
-            // Shared with `tests/rebuild.rs`: the dependencies build once.
-            target: tmp.join("rebuild-target"),
-        }
+        let scratch = ScratchCrate::new(
+            "golden-user",
+            &[
+                ("Cargo.toml", CARGO_TOML),
+                ("src/lib.rs", ""),
+                ("profiles.toml", PROFILES_TOML),
+            ],
+        );
+        let _ = fs::remove_dir_all(scratch.dir.join("tests/golden"));
+        Scratch(scratch)
     }
 
     fn test(&self, fmax: &str, bless: bool) -> Output {
-        fs::write(self.dir.join("tests/tables.rs"), test_rs(fmax)).unwrap();
-        let mut command = Command::new(env!("CARGO"));
-        command
-            .current_dir(&self.dir)
-            .args(["test", "--quiet", "--test", "tables"])
-            .env("CARGO_TARGET_DIR", &self.target)
-            .env_remove("UPDATE_GOLDEN")
-            .env_remove("RUSTFLAGS");
+        self.0.write("tests/tables.rs", &test_rs(fmax));
+        let mut command = self.0.cargo();
+        command.args(["test", "--quiet", "--test", "tables"]);
         if bless {
             command.env("UPDATE_GOLDEN", "1");
         }
@@ -120,15 +108,15 @@ fn a_user_crate_blesses_checks_and_reads_a_failure() {
 
     let blessed = scratch.test("20kHz", true);
     assert!(blessed.status.success(), "{}", text(&blessed));
-    let ramp = fs::read_to_string(scratch.dir.join("tests/golden/ramp.txt")).unwrap();
+    let ramp = fs::read_to_string(scratch.0.dir.join("tests/golden/ramp.txt")).unwrap();
     assert!(
         ramp.contains("# entries = 100\n# timer_hz = 1 MHz\n"),
         "{ramp}"
     );
-    let slow = fs::read_to_string(scratch.dir.join("tests/golden/profiles/slow.txt")).unwrap();
+    let slow = fs::read_to_string(scratch.0.dir.join("tests/golden/profiles/slow.txt")).unwrap();
     assert!(slow.contains("# fmax = 2 kHz\n"), "{slow}");
     let compact =
-        fs::read_to_string(scratch.dir.join("tests/golden/profiles/compact.txt")).unwrap();
+        fs::read_to_string(scratch.0.dir.join("tests/golden/profiles/compact.txt")).unwrap();
     assert!(
         compact.contains("# table = segments\n# entries = 8\n"),
         "{compact}"

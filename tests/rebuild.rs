@@ -11,10 +11,12 @@
 //! `CARGO_TARGET_TMPDIR`, kept between runs, so only the first run builds the
 //! dependencies.
 
+mod common;
+
 use std::fs;
-use std::path::{Path, PathBuf};
-use std::process::Command;
 use std::time::{Duration, Instant, SystemTime};
+
+use common::scratch::{ScratchCrate, target_dir};
 
 use profile_core::Generated;
 use profile_core::build::Profiles;
@@ -93,69 +95,51 @@ fn expected(source: &str) -> (u32, usize) {
     }
 }
 
-/// The two scratch crates under `CARGO_TARGET_TMPDIR/rebuild-scratch`,
-/// built into one target directory.
+/// The two scratch crates under `CARGO_TARGET_TMPDIR/rebuild-scratch`.
 struct Scratch {
-    crates: [PathBuf; 2],
-    target: PathBuf,
+    crates: [ScratchCrate; 2],
     offline: bool,
 }
 
 impl Scratch {
     fn new() -> Self {
-        let tmp = Path::new(env!("CARGO_TARGET_TMPDIR"));
-        let dir = tmp.join("rebuild-scratch");
-        let root = env!("CARGO_MANIFEST_DIR");
-        let macro_path = dir.join("macro-path");
-        let build_path = dir.join("build-path");
-        let files: [(&Path, &str, &str); 4] = [
-            (&macro_path, "Cargo.toml", MACRO_CARGO_TOML),
-            (&macro_path, "src/main.rs", MACRO_MAIN_RS),
-            (&build_path, "Cargo.toml", BUILD_CARGO_TOML),
-            (&build_path, "src/main.rs", BUILD_MAIN_RS),
+        let crates = [
+            ScratchCrate::new(
+                "rebuild-scratch/macro-path",
+                &[
+                    ("Cargo.toml", MACRO_CARGO_TOML),
+                    ("src/main.rs", MACRO_MAIN_RS),
+                ],
+            ),
+            ScratchCrate::new(
+                "rebuild-scratch/build-path",
+                &[
+                    ("Cargo.toml", BUILD_CARGO_TOML),
+                    ("src/main.rs", BUILD_MAIN_RS),
+                    ("build.rs", BUILD_RS),
+                ],
+            ),
         ];
-        for (crate_dir, file, contents) in files {
-            fs::create_dir_all(crate_dir.join("src")).unwrap();
-            write_if_changed(&crate_dir.join(file), &contents.replace("@ROOT@", root));
-        }
-        write_if_changed(&build_path.join("build.rs"), BUILD_RS);
-        let crates = [macro_path, build_path];
-        for crate_dir in &crates {
-            // Start from this workspace's lock file: the same, already
-            // downloaded, versions; Cargo prunes what the crate does not use.
-            if !crate_dir.join("Cargo.lock").exists() {
-                fs::copy(
-                    Path::new(root).join("Cargo.lock"),
-                    crate_dir.join("Cargo.lock"),
-                )
-                .unwrap();
-            }
-        }
         // Offline when every dependency is already in Cargo's cache.
         let offline = crates.iter().all(|c| {
-            cargo(c)
+            c.cargo()
                 .args(["metadata", "--offline", "--format-version", "1"])
                 .output()
                 .is_ok_and(|o| o.status.success())
         });
-        Scratch {
-            crates,
-            target: tmp.join("rebuild-target"),
-            offline,
-        }
+        Scratch { crates, offline }
     }
 
     /// Writes both crates' `profiles.toml`, making sure each mtime is later
     /// than the last build's output whatever the file system's timestamp
     /// granularity (Cargo compares mtimes).
     fn edit(&self, contents: &str) {
-        for crate_dir in &self.crates {
-            let path = crate_dir.join("profiles.toml");
+        for scratch in &self.crates {
+            let path = scratch.dir.join("profiles.toml");
             fs::write(&path, contents).unwrap();
-            let binary = self
-                .target
+            let binary = target_dir()
                 .join("debug")
-                .join(crate_dir.file_name().unwrap());
+                .join(scratch.dir.file_name().unwrap());
             if let Ok(built) = fs::metadata(&binary).and_then(|m| m.modified()) {
                 let written = fs::metadata(&path).unwrap().modified().unwrap();
                 if written <= built {
@@ -175,11 +159,9 @@ impl Scratch {
     fn run(&self) -> (String, Duration) {
         let start = Instant::now();
         let mut stdout = String::new();
-        for crate_dir in &self.crates {
-            let mut command = cargo(crate_dir);
-            command
-                .args(["run", "--quiet"])
-                .env("CARGO_TARGET_DIR", &self.target);
+        for scratch in &self.crates {
+            let mut command = scratch.cargo();
+            command.args(["run", "--quiet"]);
             if self.offline {
                 command.arg("--offline");
             }
@@ -188,7 +170,7 @@ impl Scratch {
             assert!(
                 output.status.success(),
                 "`cargo run` in {} failed:\n{out}{}",
-                crate_dir.display(),
+                scratch.dir.display(),
                 String::from_utf8_lossy(&output.stderr)
             );
             stdout.push_str(&out);
@@ -198,7 +180,7 @@ impl Scratch {
 
     /// Lines of the build script's recorded output (`target/.../build/*/output`).
     fn build_script_output(&self) -> Vec<String> {
-        let build = self.target.join("debug/build");
+        let build = target_dir().join("debug/build");
         let mut lines = Vec::new();
         for entry in fs::read_dir(&build).into_iter().flatten().flatten() {
             if entry
@@ -212,26 +194,6 @@ impl Scratch {
             }
         }
         lines
-    }
-}
-
-fn cargo(dir: &Path) -> Command {
-    let mut command = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()));
-    command.current_dir(dir);
-    // The scratch crate is built on its own, not as part of this test run.
-    for var in [
-        "CARGO_TARGET_DIR",
-        "CARGO_BUILD_TARGET_DIR",
-        "RUSTC_WORKSPACE_WRAPPER",
-    ] {
-        command.env_remove(var);
-    }
-    command
-}
-
-fn write_if_changed(path: &Path, contents: &str) {
-    if fs::read_to_string(path).ok().as_deref() != Some(contents) {
-        fs::write(path, contents).unwrap();
     }
 }
 

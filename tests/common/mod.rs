@@ -7,6 +7,8 @@
 //!   `$CC`) once per test process, and run;
 //! - [`oracle`]: pulse-edge times by numeric integration of each curve's
 //!   frequency, sharing no formula with `profile-core`;
+//! - [`scratch`]: user crates on disk, depending on this package by path,
+//!   built by Cargo into one shared target directory;
 //! - [`lcg`]: a fixed, dependency-free stream of pseudo-random numbers;
 //! - [`seeds`]: the seeds' own curves and calls, as specs and as
 //!   `period_table!` expands them.
@@ -22,5 +24,7 @@ pub mod golden;
 pub mod lcg;
 #[allow(dead_code)]
 pub mod oracle;
+#[allow(dead_code)]
+pub mod scratch;
 #[allow(dead_code)]
 pub mod seeds;
