@@ -73,17 +73,13 @@ struct Names<'a> {
 /// `static const uintN_t NAME_PERIODS[N]` (or `NAME_SEGMENTS[N][2]`) and its
 /// figures as `#define NAME_FIGURE`s.
 pub fn header(guard: &str, source: &str, profiles: &[Profile], style: &CStyle) -> String {
-    let names = Names { guard, source };
-    let mut out = String::new();
-    open_header(&mut out, &names);
-    for p in profiles {
-        profile_comment(&mut out, p);
-        figures(&mut out, p);
-        table(&mut out, p, "static const", style, true);
-        out.push('\n');
-    }
-    close_header(&mut out, &names);
-    out
+    header_of(
+        &Names { guard, source },
+        profiles,
+        style,
+        "static const",
+        true,
+    )
 }
 
 /// A header declaring each table `extern` (with the figures) and a source
@@ -97,16 +93,7 @@ pub fn split(
     style: &CStyle,
 ) -> Split {
     let names = Names { guard, source };
-    let mut header = String::new();
-    open_header(&mut header, &names);
-    for p in profiles {
-        profile_comment(&mut header, p);
-        figures(&mut header, p);
-        table(&mut header, p, "extern const", style, false);
-        header.push('\n');
-    }
-    close_header(&mut header, &names);
-
+    let header = header_of(&names, profiles, style, "extern const", false);
     let mut c = String::new();
     banner(&mut c, &names);
     let _ = writeln!(c, "#include \"{header_name}\"\n");
@@ -116,6 +103,32 @@ pub fn split(
         c.push('\n');
     }
     Split { header, source: c }
+}
+
+/// A header: per profile its parameters, figures and table, declared with
+/// `qualifiers` and defined when `body` is true.
+fn header_of(
+    names: &Names,
+    profiles: &[Profile],
+    style: &CStyle,
+    qualifiers: &str,
+    body: bool,
+) -> String {
+    let mut out = String::new();
+    banner(&mut out, names);
+    let guard = names.guard;
+    let _ = writeln!(
+        out,
+        "#ifndef {guard}\n#define {guard}\n\n#include <stdint.h>\n"
+    );
+    for p in profiles {
+        profile_comment(&mut out, p);
+        figures(&mut out, p);
+        table(&mut out, p, qualifiers, style, body);
+        out.push('\n');
+    }
+    let _ = writeln!(out, "#endif /* {guard} */");
+    out
 }
 
 fn banner(out: &mut String, names: &Names) {
@@ -128,19 +141,6 @@ fn banner(out: &mut String, names: &Names) {
         out,
         "/* Do not edit: change {source} and generate again. */"
     );
-}
-
-fn open_header(out: &mut String, names: &Names) {
-    banner(out, names);
-    let guard = names.guard;
-    let _ = writeln!(
-        out,
-        "#ifndef {guard}\n#define {guard}\n\n#include <stdint.h>\n"
-    );
-}
-
-fn close_header(out: &mut String, names: &Names) {
-    let _ = writeln!(out, "#endif /* {} */", names.guard);
 }
 
 fn profile_comment(out: &mut String, p: &Profile) {
