@@ -121,7 +121,7 @@ pub fn write_docs(profiles: &Profiles, docs: &Path) -> Result<(), Box<dyn std::e
         seed.push(series(label, color, t));
     }
     plots::overlay(
-        &docs.join("seed000_curves.svg"),
+        &docs.join("s_curve_article.svg"),
         "CalculateSModelLine's four example calls: frequency against step",
         &seed,
         true,

@@ -14,7 +14,7 @@ mod include;
 /// # extern crate profile_macros as stepper_profiles;
 /// use stepper_profiles::period_table;
 ///
-/// // Seed 000's orange curve, bit for bit as its C code computes it.
+/// // The S-curve article's orange curve, bit for bit as its C code computes it.
 /// static PERIOD: [u16; 1000] = period_table!(
 ///     curve = sigmoid, len = 1000, fmin = 500, fmax = 64000, flexible = 8,
 ///     timer_hz = 10_000_000,
@@ -30,20 +30,53 @@ mod include;
 /// assert_eq!(EXACT.iter().map(|&p| p as u32).sum::<u32>(), 310_078);
 /// ```
 ///
-/// Keys (frequencies in Hz = steps/s):
+/// Keys, in any order (frequencies in Hz = steps/s; entry `k` is the timer
+/// ticks between step `k` and step `k + 1`):
 ///
 /// | key | value | default |
 /// | --- | --- | --- |
-/// | `curve` | `sigmoid` | required |
-/// | `len` | entries (steps), 1 to 65 536 | required |
-/// | `fmin`, `fmax` | the curve's lower and upper frequency | required |
-/// | `flexible` | sigmoid steepness, over 0 up to 500 | required |
+/// | `curve` | `sigmoid`, `exponential`, `linear`, `three_stage`, `jerk_limited` | required |
 /// | `timer_hz` | timer tick rate after the prescaler | required |
-/// | `word` | `u16`, `u32` | `u16` |
-/// | `ticks_per_step` | `1`, or `2` when each entry is a half period | `1` |
-/// | `discretization` | `exact`, `left_endpoint`, `index` | `exact` |
-/// | `rounding` | `truncate`, `nearest`, `diffuse` | `diffuse` |
-/// | `arithmetic` | `f64`, `f32` (seed 000's C code, with `index`) | `f64` |
+/// | `word` | `u16`, `u32`: the reload register's width | `u16` |
+/// | `ticks_per_step` | `1`, or `2` when the timer toggles the pin (each entry a half period) | `1` |
+/// | `discretization` | `exact` (pulse edges where the curve puts them), `left_endpoint` (`1/f` at the step's start), `index` (the curve's x axis is the step index) | `exact` |
+/// | `rounding` | `truncate` (C's cast), `nearest`, `diffuse` (every edge within 0.5 tick) | `diffuse` |
+/// | `arithmetic` | `f64`; `f32` for the S-curve article's C code (`sigmoid`, `index`); `integer` for the S3C4510 article's (`linear`, `index`, `truncate`) | `f64` |
+/// | `segments` | N equal-time `(period, count)` pairs instead of one entry per step (a `[(u16, u16); N]`) | off |
+/// | `motor` | in a profiles file, the `[motors.NAME]` table of the motor the profile drives; the macro takes the motor's keys inline (below) | none |
+///
+/// Each curve's own keys:
+///
+/// | curve | keys |
+/// | --- | --- |
+/// | `sigmoid` | `fmin`, `fmax`, `flexible` (steepness, over 0 up to 500), `len` (entries, 1 to 65 536) |
+/// | `exponential` | `fmin`, `fmax` (reached at the end), `f_inf` (the asymptote, above `fmax`), and `len` or `tau` (the time constant, s) |
+/// | `linear` | `fmin`, `fmax`, and `len` or `accel` (Hz/s) |
+/// | `three_stage` | `fmin`, `fmax`, `accel` (Hz/s), `f1`, `f2` (where the stages meet), `shape` (1/s) |
+/// | `jerk_limited` | `fmin`, `fmax`, `accel` (Hz/s), `jerk` (Hz/s²) |
+///
+/// Where the length follows from the parameters (`tau`, `accel`,
+/// `three_stage`, `jerk_limited`), the table has as many entries as the ramp
+/// takes steps to reach `fmax`.
+///
+/// A motor, to check at compile time that it can follow the table (each
+/// step's torque against the pull-out curve; a ramp it cannot follow is a
+/// compile error). The macro takes the motor's keys inline; a profiles file
+/// declares them in a `[motors.NAME]` table that a profile names with
+/// `motor = "NAME"`. Frequencies are the table's steps per second (with
+/// `microsteps = 8`, a datasheet's 4000 full steps/s is 32 000):
+///
+/// | key | value | default |
+/// | --- | --- | --- |
+/// | `step_angle` | full-step angle, degrees | required |
+/// | `microsteps` | table steps per full step | `1` |
+/// | `rotor_inertia` | kg·m² | required |
+/// | `load_inertia` | the load's inertia at the shaft, kg·m² | `0` |
+/// | `torque_curve` | pull-out torque, up to 32 `(step frequency, N·m)` pairs with rising frequencies: `[(0, 0.40), (1000, 0.33), (4000, 0.12)]`; no torque beyond the last | required |
+/// | `friction` | constant load and friction torque, N·m | `0` |
+/// | `damping` | viscous damping, N·m·s/rad | `0` |
+/// | `safety` | the curve's torque is divided by it (at least 1) | `1` |
+/// | `max_start_hz` | the motor's maximum start frequency: the table must start below it | none |
 ///
 /// Integer literals are accepted where a number is expected. A frequency may
 /// carry a unit, `Hz`, `kHz` or `MHz`, and a time `s`, `ms` or `us`, with or

@@ -81,7 +81,8 @@ pub enum Error {
         /// Its value.
         value: f64,
     },
-    /// An intermediate of seed 004's integer code would overflow its C type.
+    /// An intermediate of the S3C4510 article's integer code would overflow
+    /// its C type.
     IntegerOverflow {
         /// The parameter to blame.
         key: Key,

@@ -11,7 +11,7 @@ pub enum Discretization {
     /// (too long while accelerating).
     LeftEndpoint,
     /// Entry `k` is `1 / f(x = k)`: the curve's x axis is the step index
-    /// (seeds 000, 003 and 004).
+    /// (the S-curve and S3C4510 articles' tables).
     Index,
 }
 
@@ -56,11 +56,13 @@ pub enum Arithmetic {
     /// Double precision (the default).
     #[default]
     F64,
-    /// Single precision, operation for operation as the C function of seed 000
-    /// (`CalculateSModelLine`), so tables migrated from C keep their bits.
+    /// Single precision, operation for operation as the C function
+    /// `CalculateSModelLine` of "Stepper Motor S-curve Acceleration and
+    /// Deceleration Algorithm and Implementation", so tables migrated from C keep their bits.
     /// Applies to `curve = sigmoid` with `discretization = index`.
     F32,
-    /// Integer arithmetic, operation for operation as seed 004's `pulse()`:
+    /// Integer arithmetic, operation for operation as `pulse()` of "Stepper
+    /// motor acceleration/deceleration control based on ARM chip S3C4510":
     /// `A = (fmax - fmin)(fmax + fmin) / (2 trans)`, `f[i] = isqrt(2 A i + fmin²)`,
     /// `reload = timer_hz / (ticks_per_step f[i])`, all integer divisions. Applies
     /// to `curve = linear` with `discretization = index` and `rounding = truncate`;

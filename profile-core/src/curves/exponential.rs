@@ -203,7 +203,7 @@ impl CurveKind for Exponential {
 mod tests {
     use super::*;
 
-    /// Seed 001: 500 Hz to 10 000 Hz within 120 steps, asymptote 15 000 Hz.
+    /// The exponential-ramp article (C8051F040): 500 Hz to 10 000 Hz within 120 steps, asymptote 15 000 Hz.
     #[test]
     fn seed_001_time_constant_and_rise_time() {
         let e = Exponential {

@@ -23,7 +23,7 @@ pub enum LinearExtent {
 ///
 /// In time (`exact`, `left_endpoint`), `len` entries take the ramp from `fmin`
 /// to `fmax`: `a = (fmax² - fmin²) / (2 len)`. Over the index (`index`, the
-/// seed's table), entry `i` is `1 / f_i` for `i = 0..=trans` with
+/// article's table), entry `i` is `1 / f_i` for `i = 0..=trans` with
 /// `trans = len - 1`, so the last entry is at `fmax`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Linear {
@@ -42,7 +42,7 @@ impl Linear {
     }
 
     /// The acceleration in Hz/s: given, or `(fmax² - fmin²) / (2 steps)` where
-    /// `steps` is `len` in time and `len - 1` (the seed's `trans`) over the index.
+    /// `steps` is `len` in time and `len - 1` (the article's `trans`) over the index.
     pub fn accel(&self, index: bool) -> f64 {
         match self.extent {
             LinearExtent::Accel(a) => a,
@@ -61,7 +61,7 @@ impl Linear {
     }
 }
 
-/// Integer square root (floor), as the seed's `sqrt_16`.
+/// Integer square root (floor), as the S3C4510 article's `sqrt_16`.
 fn isqrt(n: u64) -> u64 {
     let mut x = libm::sqrt(n as f64) as u64;
     while x * x > n {
@@ -73,7 +73,7 @@ fn isqrt(n: u64) -> u64 {
     x
 }
 
-/// Seed 004's `pulse()` in its own integer arithmetic: C `int` is 32-bit,
+/// The S3C4510 article's `pulse()` in its own integer arithmetic: C `int` is 32-bit,
 /// `REG16` and `UINT16` are 16-bit unsigned.
 pub(crate) struct IntegerLinear {
     a: u64,
@@ -384,7 +384,7 @@ mod tests {
         }
     }
 
-    /// Seed 004: f0 500, fmax 5000, trans 200 at 50 MHz, two reloads per step.
+    /// The S3C4510 article: f0 500, fmax 5000, trans 200 at 50 MHz, two reloads per step.
     #[test]
     fn seed_004_integer_table() {
         let l = Linear {

@@ -1,6 +1,9 @@
 //! The motor a table drives, and the check that it can follow the table.
 //!
-//! A ramp the motor cannot follow loses steps (seeds 001, 002, 004). From the
+//! A ramp the motor cannot follow loses steps, as every article on ramps
+//! warns ("Design and implementation of speed increase/decrease in stepper
+//! motor control"; Zeng, Hu and Hu, "Control Algorithm of Acceleration Curve
+//! for Stepper Motor", 2016; the S3C4510 article). From the
 //! integer table itself, [`Motor::check`] computes the angular acceleration
 //! each step demands, the torque that needs (`J α` for the rotor and load,
 //! plus friction and viscous damping `β ω`), and the torque the motor gives
@@ -108,7 +111,8 @@ pub struct Motor {
     /// The available torque is divided by this (at least 1).
     pub safety: f64,
     /// Maximum no-load start frequency, in Hz of the table's steps, if known:
-    /// a ramp must start below it (seed 001's advice).
+    /// a ramp must start below it (the advice of "Design and implementation
+    /// of speed increase/decrease in stepper motor control").
     pub max_start_hz: Option<f64>,
 }
 

@@ -2,7 +2,9 @@
 //! the table's exact pulse train, and the steps it loses.
 //!
 //! [`Motor::check`] compares torques step by step; this module plays the
-//! pulses to a model of the rotor and watches it. The model is seed 001's
+//! pulses to a model of the rotor and watches it. The model is the one of
+//! "Design and implementation of speed increase/decrease in stepper motor
+//! control",
 //! `J θ'' + β θ' + k θ = T_d - T_z` with the two-phase hybrid stepper's
 //! sinusoidal torque for `k θ` and `T_d`:
 //!
