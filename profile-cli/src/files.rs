@@ -10,14 +10,52 @@ use profile_core::{Discretization, Generated, Table};
 
 use crate::plots::{self, Series};
 
-const PALETTE: [RGBColor; 6] = [
-    RGBColor(0x1f, 0x77, 0xb4),
+/// The S-curve article's four example curves, in the article's colours.
+const ARTICLE: [(&str, RGBColor); 4] = [
+    ("yellow", RGBColor(0xe6, 0xb8, 0x00)),
+    ("orange", RGBColor(0xff, 0x8c, 0x00)),
+    ("blue", RGBColor(0x1f, 0x5f, 0xd0)),
+    ("gray", RGBColor(0x80, 0x80, 0x80)),
+];
+
+/// Colours for every other profile, none of them near the article's.
+const PALETTE: [RGBColor; 12] = [
     RGBColor(0xd6, 0x27, 0x28),
     RGBColor(0x2c, 0xa0, 0x2c),
-    RGBColor(0xff, 0x7f, 0x0e),
     RGBColor(0x94, 0x67, 0xbd),
     RGBColor(0x8c, 0x56, 0x4b),
+    RGBColor(0xe3, 0x77, 0xc2),
+    RGBColor(0x17, 0xbe, 0xcf),
+    RGBColor(0xbc, 0xbd, 0x22),
+    RGBColor(0x00, 0x00, 0x80),
+    RGBColor(0x80, 0x00, 0x00),
+    RGBColor(0x00, 0x5f, 0x5f),
+    RGBColor(0x76, 0x2a, 0x83),
+    RGBColor(0x4d, 0x92, 0x21),
 ];
+
+/// One colour per profile, the same on every plot: a profile named after
+/// one of the article's curves (`sigmoid_orange`) in that curve's colour,
+/// the others through [`PALETTE`] in file order.
+fn colors(profiles: &Profiles) -> Vec<RGBColor> {
+    let mut next = 0;
+    profiles
+        .profiles()
+        .iter()
+        .map(|p| {
+            let named = ARTICLE
+                .iter()
+                .find(|(word, _)| p.name.split('_').any(|part| part == *word));
+            named.map_or_else(
+                || {
+                    next += 1;
+                    PALETTE[(next - 1) % PALETTE.len()]
+                },
+                |(_, color)| *color,
+            )
+        })
+        .collect()
+}
 
 /// Needed and available torque at every edge of a motor-bound profile.
 fn write_torque_plot(p: &Profile, path: &Path) -> Result<(), Box<dyn std::error::Error>> {
@@ -49,11 +87,12 @@ pub fn write_plots(
     std::fs::create_dir_all(out)?;
     let mut written = Vec::new();
     let mut overview = Vec::new();
-    for (i, p) in profiles.profiles().iter().enumerate() {
+    let colors = colors(profiles);
+    for (p, &color) in profiles.profiles().iter().zip(&colors) {
         let periods = p.table.step_periods();
         let spec = p.table.spec();
         let tps = spec.timer.timer_hz as f64 / spec.timer.ticks_per_step as f64;
-        let s = Series::from_periods(&p.name, PALETTE[i % PALETTE.len()], &periods, tps);
+        let s = Series::from_periods(&p.name, color, &periods, tps).with_curve(spec);
         let svg = out.join(format!("{}.svg", p.name));
         plots::profile(&svg, &p.name, &s)?;
         written.push(svg);
@@ -86,30 +125,14 @@ pub fn write_plots(
 /// discretizations of one curve, and the motor check of the worked example.
 pub fn write_docs(profiles: &Profiles, docs: &Path) -> Result<(), Box<dyn std::error::Error>> {
     std::fs::create_dir_all(docs)?;
-    let colors = [
-        (
-            "sigmoid_yellow",
-            "yellow: (1000, 56000, 16000, 4)",
-            RGBColor(0xe6, 0xb8, 0x00),
-        ),
-        (
-            "sigmoid_orange",
-            "orange: (1000, 64000, 500, 8)",
-            RGBColor(0xff, 0x8c, 0x00),
-        ),
-        (
-            "sigmoid_blue",
-            "blue: (1000, 64000, 500, 15)",
-            RGBColor(0x1f, 0x5f, 0xd0),
-        ),
-        (
-            "sigmoid_gray",
-            "gray: (1000, 40000, 500, 5)",
-            RGBColor(0x80, 0x80, 0x80),
-        ),
+    let calls = [
+        ("sigmoid_yellow", "yellow: (1000, 56000, 16000, 4)"),
+        ("sigmoid_orange", "orange: (1000, 64000, 500, 8)"),
+        ("sigmoid_blue", "blue: (1000, 64000, 500, 15)"),
+        ("sigmoid_gray", "gray: (1000, 40000, 500, 5)"),
     ];
-    let mut seed = Vec::new();
-    for (name, label, color) in colors {
+    let mut article = Vec::new();
+    for ((name, label), (_, color)) in calls.into_iter().zip(ARTICLE) {
         let Some(Generated::Steps(t)) = profiles
             .profiles()
             .iter()
@@ -118,12 +141,12 @@ pub fn write_docs(profiles: &Profiles, docs: &Path) -> Result<(), Box<dyn std::e
         else {
             return Err(format!("profile `{name}` is missing from the file").into());
         };
-        seed.push(series(label, color, t));
+        article.push(series(label, color, t));
     }
     plots::overlay(
         &docs.join("s_curve_article.svg"),
         "CalculateSModelLine's four example calls: frequency against step",
-        &seed,
+        &article,
         true,
     )?;
     // One curve, three discretizations: the orange sigmoid.

@@ -3,16 +3,45 @@
 use std::path::Path;
 
 use plotters::prelude::*;
+use profile_core::{ACCEL_WINDOW, Spec};
 
 /// One table as plotted: `(time of the step's start in s, frequency in Hz)`
-/// per step, and the accelerations between consecutive steps.
+/// per step, the table's acceleration over windows of entries, and the
+/// curve's own acceleration when known.
 pub struct Series {
     pub label: String,
     pub color: RGBColor,
     /// Per step: start time (s), step frequency (Hz).
     pub steps: Vec<(f64, f64)>,
-    /// Per edge between steps: time (s), acceleration (Hz/s).
+    /// Entries per window of `accel`.
+    pub window: usize,
+    /// Between consecutive windows of `window` entries: the time of the
+    /// edge between them (s), the change of their mean frequency over the
+    /// time between their centres (Hz/s).
     pub accel: Vec<(f64, f64)>,
+    /// The curve's acceleration from its unrounded periods, step by step
+    /// (empty when not computed).
+    pub curve_accel: Vec<(f64, f64)>,
+}
+
+/// Acceleration of `periods` (in s) between the mean frequencies of
+/// consecutive windows of `w` periods, at the edge between them.
+fn windowed_accel(periods: &[f64], w: usize) -> Vec<(f64, f64)> {
+    let mut edges = Vec::with_capacity(periods.len() + 1);
+    let mut t = 0.0;
+    edges.push(t);
+    for p in periods {
+        t += p;
+        edges.push(t);
+    }
+    (2 * w..=periods.len())
+        .map(|end| {
+            let (a, b, c) = (edges[end - 2 * w], edges[end - w], edges[end]);
+            let (older, newer) = (b - a, c - b);
+            let accel = (w as f64 / newer - w as f64 / older) / ((older + newer) / 2.0);
+            (b, accel)
+        })
+        .collect()
 }
 
 impl Series {
@@ -23,27 +52,40 @@ impl Series {
         periods: &[u32],
         ticks_per_second: f64,
     ) -> Self {
+        let seconds: Vec<f64> = periods
+            .iter()
+            .map(|&p| p as f64 / ticks_per_second)
+            .collect();
         let mut t = 0.0;
         let mut steps = Vec::with_capacity(periods.len());
-        for &p in periods {
-            let dt = p as f64 / ticks_per_second;
+        for &dt in &seconds {
             steps.push((t, 1.0 / dt));
             t += dt;
         }
-        let accel = steps
-            .windows(2)
-            .zip(periods.windows(2))
-            .map(|(s, p)| {
-                let dt = (p[0] + p[1]) as f64 / 2.0 / ticks_per_second;
-                (s[1].0, (s[1].1 - s[0].1) / dt)
-            })
-            .collect();
+        let window = if periods.len() >= 2 * ACCEL_WINDOW as usize {
+            ACCEL_WINDOW as usize
+        } else {
+            1
+        };
         Series {
             label: label.to_string(),
             color,
             steps,
-            accel,
+            window,
+            accel: windowed_accel(&seconds, window),
+            curve_accel: Vec::new(),
         }
+    }
+
+    /// Adds the acceleration of the curve behind `spec`, from its unrounded
+    /// pulse edges.
+    pub fn with_curve(mut self, spec: &Spec) -> Self {
+        let mut edges = vec![0.0];
+        if spec.for_each_exact_edge(|_, t| edges.push(t)).is_ok() {
+            let periods: Vec<f64> = edges.windows(2).map(|w| w[1] - w[0]).collect();
+            self.curve_accel = windowed_accel(&periods, 1);
+        }
+        self
     }
 
     fn duration(&self) -> f64 {
@@ -201,12 +243,25 @@ pub fn profile(path: &Path, title: &str, s: &Series) -> PlotResult {
         "step frequency (Hz)",
         &[(s, by_step)],
     )?;
-    chart(
+    let mut lines = vec![Line {
+        label: format!("table, between windows of {} entries", s.window),
+        color: s.color,
+        points: s.accel.clone(),
+    }];
+    if !s.curve_accel.is_empty() {
+        lines.push(Line {
+            label: "curve, from unrounded periods".to_string(),
+            color: BLACK,
+            points: s.curve_accel.clone(),
+        });
+    }
+    chart_lines(
         &areas[2],
         &format!("{title}: acceleration against time"),
         "time (s)",
         "acceleration (Hz/s)",
-        &[(s, s.accel.clone())],
+        &lines,
+        Some(SeriesLabelPosition::UpperRight),
     )?;
     root.present()?;
     Ok(())

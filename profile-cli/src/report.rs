@@ -58,71 +58,104 @@ fn edge_error(spec: &Spec, periods: &[u32]) -> Result<(f64, f64), Error> {
 }
 
 fn print_table(out: &mut String, profiles: &[Profile]) -> Result<(), Error> {
-    let _ = writeln!(
+    let row = |out: &mut String, c: [&str; 13]| {
+        let _ = writeln!(
+            out,
+            "{:<21} {:<12} {:<20} {:>5} {:>8} {:>8} {:>7} {:>5} {:>8} {:>8} {:>8} {:>8} {:>6}",
+            c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8], c[9], c[10], c[11], c[12]
+        );
+    };
+    row(
         out,
-        "{:<21} {:<12} {:<22} {:>5} {:>9} {:>9} {:>8} {:>6} {:>9} {:>9} {:>8} {:>7}",
-        "profile",
-        "curve",
-        "discretization/round",
-        "len",
-        "start Hz",
-        "end Hz",
-        "ramp s",
-        "flash",
-        "max a",
-        "max jerk",
-        "edge err",
-        "margin"
+        [
+            "profile",
+            "curve",
+            "discretization/round",
+            "len",
+            "start",
+            "end",
+            "ramp",
+            "flash",
+            "a table",
+            "a curve",
+            "j curve",
+            "edge err",
+            "margin",
+        ],
     );
-    let _ = writeln!(
+    row(
         out,
-        "{:<21} {:<12} {:<22} {:>5} {:>9} {:>9} {:>8} {:>6} {:>9} {:>9} {:>8} {:>7}",
-        "", "", "", "steps", "", "", "", "bytes", "Hz/s", "Hz/s²", "ticks", "ticks"
+        [
+            "", "", "", "steps", "Hz", "Hz", "s", "bytes", "Hz/s", "Hz/s", "Hz/s²", "ticks",
+            "ticks",
+        ],
     );
+    let mut windows = Vec::new();
     for p in profiles {
         match &p.table {
             Generated::Steps(t) => {
                 let (f, s) = (&t.figures, &t.spec);
                 let (edge, _) = edge_error(s, &t.periods)?;
-                let _ = writeln!(
+                if !windows.contains(&f.accel_window) {
+                    windows.push(f.accel_window);
+                }
+                row(
                     out,
-                    "{:<21} {:<12} {:<22} {:>5} {:>9.1} {:>9.1} {:>8.5} {:>6} {:>9.3e} {:>9.2e} {:>8.3} {:>7}",
-                    p.name,
-                    s.curve.name(),
-                    format!("{}/{}", s.discretization.name(), s.rounding.name()),
-                    f.len,
-                    f.start_hz,
-                    f.final_hz,
-                    f.duration_s,
-                    f.len as usize * s.timer.word.bytes() as usize,
-                    f.max_accel_hz_s,
-                    f.max_jerk_hz_s2,
-                    edge,
-                    f.overflow_margin_ticks,
+                    [
+                        &p.name,
+                        s.curve.name(),
+                        &format!("{}/{}", s.discretization.name(), s.rounding.name()),
+                        &f.len.to_string(),
+                        &format!("{:.1}", f.start_hz),
+                        &format!("{:.1}", f.final_hz),
+                        &format!("{:.4}", f.duration_s),
+                        &(f.len as usize * s.timer.word.bytes() as usize).to_string(),
+                        &format!("{:.3e}", f.max_accel_hz_s),
+                        &format!("{:.3e}", f.curve_max_accel_hz_s),
+                        &format!("{:.2e}", f.curve_max_jerk_hz_s2),
+                        &format!("{edge:.3}"),
+                        &f.overflow_margin_ticks.to_string(),
+                    ],
                 );
             }
             Generated::Segments(t) => {
                 let (f, s) = (&t.figures, &t.spec);
                 let top = t.pairs.iter().map(|p| p.0).max().unwrap_or(0);
-                let _ = writeln!(
+                let hz = |ticks: u32| s.timer.timer_hz as f64 / ticks as f64;
+                row(
                     out,
-                    "{:<21} {:<12} {:<22} {:>5} {:>9.1} {:>9.1} {:>8.5} {:>6} {:>9} {:>9} {:>8.3} {:>7}",
-                    p.name,
-                    s.curve.name(),
-                    format!("{} segments", f.segments),
-                    f.steps,
-                    s.timer.timer_hz as f64 / t.pairs.first().map_or(1, |p| p.0) as f64,
-                    s.timer.timer_hz as f64 / t.pairs.last().map_or(1, |p| p.0) as f64,
-                    f.duration_s,
-                    f.flash_bytes,
-                    "-",
-                    "-",
-                    f.max_edge_error_ticks,
-                    s.timer.word.max() - top,
+                    [
+                        &p.name,
+                        s.curve.name(),
+                        &format!("{} segments", f.segments),
+                        &f.steps.to_string(),
+                        &format!("{:.1}", hz(t.pairs.first().map_or(1, |p| p.0))),
+                        &format!("{:.1}", hz(t.pairs.last().map_or(1, |p| p.0))),
+                        &format!("{:.4}", f.duration_s),
+                        &f.flash_bytes.to_string(),
+                        "-",
+                        "-",
+                        "-",
+                        &format!("{:.3}", f.max_edge_error_ticks),
+                        &(s.timer.word.max() - top).to_string(),
+                    ],
                 );
             }
         }
     }
+    let windows: Vec<String> = windows.iter().map(u32::to_string).collect();
+    let _ = writeln!(
+        out,
+        "\nlen: entries (a segment table: steps in all). start, end: step frequency of the \
+         first and last entry. ramp: the table's duration as played. flash: the table's bytes.\n\
+         a table: the integer table's largest acceleration, between the mean frequencies of \
+         windows of {} entries (one entry's rounding would read as acceleration). a curve, \
+         j curve: the curve's own acceleration and jerk, from the unrounded periods.\n\
+         edge err: the largest distance of a pulse edge from the continuous curve (a truncated \
+         table drifts: each entry loses up to a tick). margin: ticks between the longest period \
+         and the largest the word holds.",
+        windows.join(" or ")
+    );
     for p in profiles {
         if let Some(note) = start_note(&p.table) {
             let _ = writeln!(out, "note: {}: {note}", p.name);
@@ -238,4 +271,14 @@ fn print_motors(out: &mut String, profiles: &[Profile]) {
             p.name, t.min_margin_nm, t.step, t.hz, t.needed_nm, t.available_nm
         );
     }
+    let _ = writeln!(
+        out,
+        "\nmargin: the smallest torque to spare over the ramp, at that step and step \
+         frequency, where the step needs `needed` and the motor gives `available` (its \
+         pull-out curve over `safety`).\nlost: table steps the simulated rotor ends behind (or, \
+         negative, ahead); slips: times it fell into another stable position (a lag past \
+         180° electrical); max lag: its largest lag behind the field, electrical degrees \
+         (below 90° with torque to spare); overshoot: how far past its final position it \
+         swings after the last pulse, table steps."
+    );
 }

@@ -56,6 +56,6 @@ pub use curves::public::*;
 pub use motor::simulate;
 #[cfg(feature = "std")]
 pub use table::owned::{Generated, SegmentTable, Table};
-pub use table::quantize::Figures;
+pub use table::quantize::{ACCEL_WINDOW, Figures};
 pub use table::segments::SegmentFigures;
 pub use table::spec::{CheckedSpec, Spec};

@@ -180,7 +180,8 @@ pub fn doc_lines(table: &Generated) -> std::vec::Vec<String> {
             lines.push(format!(
                 "{} entries, {} to {} ticks ({:.2} Hz to {:.2} Hz), {} ticks in all ({:.6} s); \
                  pulse edges within {:.3} tick of the unrounded curve, drift {:.3} tick; \
-                 peak acceleration {:.0} Hz/s.",
+                 acceleration up to {:.0} Hz/s between windows of {} entries (the curve's \
+                 own peak: {:.0} Hz/s).",
                 f.len,
                 f.first_ticks,
                 f.last_ticks,
@@ -190,7 +191,9 @@ pub fn doc_lines(table: &Generated) -> std::vec::Vec<String> {
                 f.duration_s,
                 f.max_edge_error_ticks,
                 f.total_error_ticks,
-                f.max_accel_hz_s
+                f.max_accel_hz_s,
+                f.accel_window,
+                f.curve_max_accel_hz_s
             ));
             if let Some(note) = start_note(table) {
                 lines.push(String::new());

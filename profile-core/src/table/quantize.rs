@@ -29,10 +29,22 @@ pub struct Figures {
     pub start_hz: f64,
     /// Step frequency of the last entry.
     pub final_hz: f64,
-    /// Largest acceleration between consecutive entries of the integer table.
+    /// Largest acceleration of the integer table as a rotor feels it:
+    /// between the mean step frequencies of two consecutive windows of
+    /// [`accel_window`](Self::accel_window) entries, over the time between
+    /// their centres. (Between single entries, one tick of rounding would
+    /// read as acceleration.)
     pub max_accel_hz_s: f64,
-    /// Largest jerk between consecutive accelerations of the integer table.
-    pub max_jerk_hz_s2: f64,
+    /// Entries per window of `max_accel_hz_s`: [`ACCEL_WINDOW`], or 1 for a
+    /// table of fewer than two windows.
+    pub accel_window: u32,
+    /// Largest acceleration of the curve itself: between the unrounded
+    /// periods of consecutive steps.
+    pub curve_max_accel_hz_s: f64,
+    /// Largest jerk of the curve itself, from the same unrounded periods.
+    /// (The integer table's own jerk is this plus rounding noise that grows
+    /// with the cube of the step frequency: not a figure of the ramp.)
+    pub curve_max_jerk_hz_s2: f64,
     /// Largest distance of a pulse edge (a prefix sum of the table) from its
     /// unrounded time under the chosen discretization, in ticks.
     pub max_edge_error_ticks: f64,
@@ -42,6 +54,78 @@ pub struct Figures {
     pub overflow_margin_ticks: u32,
 }
 
+/// Entries per window of a table's acceleration and jerk figures.
+pub const ACCEL_WINDOW: u32 = 8;
+const W: usize = ACCEL_WINDOW as usize;
+
+/// Acceleration and jerk of a sequence of periods: between single periods
+/// (`window` 1) or between the means of windows of periods. Keeps the last
+/// `2 W` periods and `W` accelerations; allocates nothing.
+#[derive(Clone, Copy)]
+struct Slope {
+    window: usize,
+    periods: [f64; 2 * W],
+    accels: [(f64, f64); W],
+    count: usize,
+    /// Time at the end of the last period, in ticks.
+    now: f64,
+    max_accel: f64,
+    max_jerk: f64,
+}
+
+impl Slope {
+    fn new(window: usize) -> Self {
+        Slope {
+            window,
+            periods: [0.0; 2 * W],
+            accels: [(0.0, 0.0); W],
+            count: 0,
+            now: 0.0,
+            max_accel: 0.0,
+            max_jerk: 0.0,
+        }
+    }
+
+    /// Adds a period of `ticks`; `scale` is ticks per second.
+    fn push(&mut self, ticks: f64, scale: f64) {
+        let w = self.window;
+        self.periods[self.count % (2 * w)] = ticks;
+        self.now += ticks;
+        self.count += 1;
+        if self.count < 2 * w {
+            return;
+        }
+        let sum = |from: usize| -> f64 {
+            (from..from + w)
+                .map(|i| self.periods[i % (2 * w)])
+                .sum::<f64>()
+        };
+        // The older window starts 2w periods back, the newer w back.
+        let older = sum(self.count - 2 * w);
+        let newer = sum(self.count - w);
+        let (f_old, f_new) = (w as f64 * scale / older, w as f64 * scale / newer);
+        let dt = (older + newer) / 2.0 / scale;
+        let accel = (f_new - f_old) / dt;
+        self.max_accel = self.max_accel.max(libm::fabs(accel));
+        // The edge between the two windows, in seconds.
+        let at = (self.now - newer) / scale;
+        let slot = (self.count - 2 * w) % w;
+        if self.count >= 3 * w {
+            let (a_then, t_then) = self.accels[slot];
+            if at > t_then {
+                let jerk = (accel - a_then) / (at - t_then);
+                self.max_jerk = self.max_jerk.max(libm::fabs(jerk));
+            }
+        }
+        self.accels[slot] = (accel, at);
+    }
+
+    /// Whether at least one acceleration was measured (two windows seen).
+    fn complete(&self) -> bool {
+        self.count >= 2 * self.window
+    }
+}
+
 /// Turns exact periods into integers and keeps the figures.
 pub(crate) struct Quantizer {
     rounding: Rounding,
@@ -49,8 +133,11 @@ pub(crate) struct Quantizer {
     scale: f64,
     exact_edge: f64,
     emitted: u64,
-    prev_ticks: u32,
-    prev_accel: f64,
+    /// The integer table, windowed and entry by entry (for short tables).
+    windowed: Slope,
+    single: Slope,
+    /// The unrounded periods.
+    curve: Slope,
     figures: Figures,
 }
 
@@ -62,8 +149,9 @@ impl Quantizer {
             scale: spec.timer.ticks_per_second(),
             exact_edge: 0.0,
             emitted: 0,
-            prev_ticks: 0,
-            prev_accel: 0.0,
+            windowed: Slope::new(W),
+            single: Slope::new(1),
+            curve: Slope::new(1),
             figures: Figures {
                 len: 0,
                 first_ticks: 0,
@@ -75,7 +163,9 @@ impl Quantizer {
                 start_hz: 0.0,
                 final_hz: 0.0,
                 max_accel_hz_s: 0.0,
-                max_jerk_hz_s2: 0.0,
+                accel_window: ACCEL_WINDOW,
+                curve_max_accel_hz_s: 0.0,
+                curve_max_jerk_hz_s2: 0.0,
                 max_edge_error_ticks: 0.0,
                 total_error_ticks: 0.0,
                 overflow_margin_ticks: 0,
@@ -88,7 +178,7 @@ impl Quantizer {
     /// `None`), and records it in the figures.
     pub(crate) fn push(&mut self, index: u32, entry: f64, edge: Option<f64>) -> Result<u32, Error> {
         let ticks = self.round(index, entry, edge, 1)?;
-        self.record(index, ticks);
+        self.record(index, ticks, entry);
         Ok(ticks)
     }
 
@@ -154,7 +244,7 @@ impl Quantizer {
         self.exact_edge += entry;
         let ticks = self.check(index, ticks as f64, entry)?;
         self.emitted += ticks as u64;
-        self.record(index, ticks);
+        self.record(index, ticks, entry);
         Ok(ticks)
     }
 
@@ -179,7 +269,8 @@ impl Quantizer {
         Ok(rounded as u32)
     }
 
-    fn record(&mut self, index: u32, ticks: u32) {
+    /// Records entry `index`: `ticks` as emitted, `entry` unrounded.
+    fn record(&mut self, index: u32, ticks: u32, entry: f64) {
         let fig = &mut self.figures;
         let error = self.emitted as f64 - self.exact_edge;
         fig.max_edge_error_ticks = fig.max_edge_error_ticks.max(libm::fabs(error));
@@ -188,22 +279,10 @@ impl Quantizer {
         fig.max_ticks = fig.max_ticks.max(ticks);
         if index == 0 {
             fig.first_ticks = ticks;
-        } else {
-            // Acceleration at the edge between the two entries: frequency change
-            // over the time between the entries' midpoints.
-            let f_prev = self.scale / self.prev_ticks as f64;
-            let f = self.scale / ticks as f64;
-            let dt = (self.prev_ticks as f64 + ticks as f64) / 2.0 / self.scale;
-            let accel = (f - f_prev) / dt;
-            fig.max_accel_hz_s = fig.max_accel_hz_s.max(libm::fabs(accel));
-            if index >= 2 {
-                // Consecutive accelerations sit one entry apart.
-                let jerk = (accel - self.prev_accel) / (self.prev_ticks as f64 / self.scale);
-                fig.max_jerk_hz_s2 = fig.max_jerk_hz_s2.max(libm::fabs(jerk));
-            }
-            self.prev_accel = accel;
         }
-        self.prev_ticks = ticks;
+        self.windowed.push(ticks as f64, self.scale);
+        self.single.push(ticks as f64, self.scale);
+        self.curve.push(entry, self.scale);
         fig.last_ticks = ticks;
         fig.len = index + 1;
     }
@@ -215,6 +294,15 @@ impl Quantizer {
         fig.start_hz = self.scale / fig.first_ticks as f64;
         fig.final_hz = self.scale / fig.last_ticks as f64;
         fig.overflow_margin_ticks = self.timer.word.max() - fig.max_ticks;
+        let table = if self.windowed.complete() {
+            self.windowed
+        } else {
+            self.single
+        };
+        fig.accel_window = table.window as u32;
+        fig.max_accel_hz_s = table.max_accel;
+        fig.curve_max_accel_hz_s = self.curve.max_accel;
+        fig.curve_max_jerk_hz_s2 = self.curve.max_jerk;
         self.figures
     }
 }
