@@ -14,6 +14,8 @@
 //!   formula cannot agree with a table computed from the same formula;
 //! - in the default mode, every edge is within half a tick;
 //! - segment tables' printed edge error is the played edges' true distance;
+//! - compressed tables (`compress = E`, runs played by `runs::Expand`) keep
+//!   every edge within `E` ticks of the oracle's, and print that distance;
 //! - no valid profile fails with a solver error; the only errors allowed
 //!   are periods that do not fit the word or ramps longer than `MAX_LEN`,
 //!   and most profiles must give a table.
@@ -27,7 +29,7 @@ use common::lcg::Lcg;
 use common::oracle::{self, Extent, Model};
 use stepper_profiles::{
     Curve, Discretization, Error, Exponential, ExponentialExtent, JerkLimited, Linear,
-    LinearExtent, MAX_LEN, Rounding, Sigmoid, Spec, ThreeStage, Timer, Word,
+    LinearExtent, MAX_LEN, Rounding, Sigmoid, Spec, ThreeStage, Timer, Word, runs,
 };
 
 /// What the oracle and production may differ by on an edge `e` ticks from
@@ -352,6 +354,10 @@ fn edge_errors(
 struct Tally {
     tables: usize,
     segment_tables: usize,
+    compressed_tables: usize,
+    compressed_runs: u64,
+    compressed_steps: u64,
+    unreachable: usize,
     entries: u64,
     overflow: usize,
     too_long: usize,
@@ -433,6 +439,51 @@ fn check(spec: &Spec, rng: &mut Lcg, tally: &mut Tally) {
             tally.segment_tables += 1;
         }
     }
+
+    // Now and then the same ramp compressed into runs, within a random
+    // tolerance: every edge the runs play within it.
+    if spec.timer.word == Word::U16
+        && spec.discretization != Discretization::LeftEndpoint
+        && len <= 20_000
+        && rng.next_unit() < 0.3
+    {
+        let compress = 0.5 + 2.5 * rng.next_unit();
+        let spec = spec.with_rounding(Rounding::Diffuse);
+        check_compressed(&spec, compress, &reference, tally);
+    }
+}
+
+fn check_compressed(spec: &Spec, compress: f64, reference: &[f64], tally: &mut Tally) {
+    let table = match spec.run_table(compress) {
+        Ok(t) => t,
+        Err(e @ Error::CompressUnreachable { .. }) => {
+            println!("{spec:?} with compress = {compress}: {e}");
+            tally.unreachable += 1;
+            return;
+        }
+        Err(e) => panic!("{spec:?} with compress = {compress}: {e}"),
+    };
+    let played: Vec<u32> = runs::Expand::new(&table.runs).collect();
+    assert_eq!(played.len(), reference.len(), "{spec:?}: compressed steps");
+    let e = edge_errors(played, reference, compress);
+    if let Some((k, played, exact)) = e.over {
+        panic!(
+            "{spec:?} with compress = {compress}: edge {k} is at {played} ticks, {} from the \
+             oracle's {exact}",
+            played - exact
+        );
+    }
+    let largest = reference[reference.len() - 1];
+    assert!(
+        (e.worst - table.figures.max_edge_error_ticks).abs() <= tolerance(largest),
+        "{spec:?} with compress = {compress}: the edges are up to {} ticks from the oracle's, \
+         the figures say {}",
+        e.worst,
+        table.figures.max_edge_error_ticks
+    );
+    tally.compressed_tables += 1;
+    tally.compressed_runs += table.runs.len() as u64;
+    tally.compressed_steps += reference.len() as u64;
 }
 
 fn run(name: &str, seed: u64, generate: fn(&mut Lcg) -> Spec) {
@@ -454,12 +505,17 @@ fn run(name: &str, seed: u64, generate: fn(&mut Lcg) -> Spec) {
     println!(
         "{name}: {n} profiles, {} tables ({} entries; worst default-mode edge {:.6} tick within \
          2^32 ticks of the start, {:.6} over all edges, where an f64 edge is coarser), \
-         {} segment tables, {} periods beyond the word, {} ramps beyond MAX_LEN",
+         {} segment tables, {} compressed tables ({} runs for {} steps, {} unreachable), \
+         {} periods beyond the word, {} ramps beyond MAX_LEN",
         tally.tables,
         tally.entries,
         tally.worst_default_near,
         tally.worst_default,
         tally.segment_tables,
+        tally.compressed_tables,
+        tally.compressed_runs,
+        tally.compressed_steps,
+        tally.unreachable,
         tally.overflow,
         tally.too_long
     );

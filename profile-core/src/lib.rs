@@ -55,7 +55,10 @@ pub use curves::public::*;
 #[cfg(feature = "std")]
 pub use motor::simulate;
 #[cfg(feature = "std")]
+pub use table::compress::{MIN_COMPRESS_TICKS, RunFigures, RunTable};
+#[cfg(feature = "std")]
 pub use table::owned::{Generated, SegmentTable, Table};
 pub use table::quantize::{ACCEL_WINDOW, Figures};
+pub use table::runs;
 pub use table::segments::SegmentFigures;
 pub use table::spec::{CheckedSpec, Spec};

@@ -118,6 +118,18 @@ pub enum Error {
         /// The word of the counts.
         word: Word,
     },
+    /// `compress` below half a tick.
+    CompressBelowHalf {
+        /// The value given.
+        value: f64,
+    },
+    /// No run keeps an edge within `compress` ticks of the curve.
+    CompressUnreachable {
+        /// The edge (1-based step).
+        step: u32,
+        /// The tolerance, in ticks.
+        tolerance: f64,
+    },
     /// A segment table needs a curve in time.
     SegmentsNeedTime {
         /// The discretization asked for.
@@ -214,6 +226,9 @@ impl Error {
             Error::EmptySegment { .. }
             | Error::SegmentTooLong { .. }
             | Error::SegmentsNeedTime { .. } => Some(Key::SEGMENTS),
+            Error::CompressBelowHalf { .. } | Error::CompressUnreachable { .. } => {
+                Some(Key::COMPRESS)
+            }
             Error::BufferLength { .. } | Error::WordMismatch { .. } => None,
             Error::NoConvergence { .. } => None,
         }
@@ -368,6 +383,18 @@ impl Error {
                  use more `segments`",
                 word.name(),
                 word.max()
+            ),
+            Error::CompressBelowHalf { value } => write!(
+                f,
+                "`compress` is the largest pulse-edge error allowed, in ticks, and must be at \
+                 least 0.5: a whole tick cannot land nearer to every edge (got {})",
+                Num(value)
+            ),
+            Error::CompressUnreachable { step, tolerance } => write!(
+                f,
+                "no run of 16-bit periods keeps pulse edge {step} within {} ticks of the \
+                 curve; raise `compress`",
+                Num(tolerance)
             ),
             Error::SegmentsNeedTime { discretization } => write!(
                 f,

@@ -171,6 +171,17 @@ fn examples() -> Vec<(Error, &'static str)> {
             },
             "the pulse time of step 7 did not converge within 100 iterations: the curve's step count is not a finite number there",
         ),
+        (
+            Error::CompressBelowHalf { value: 0.25 },
+            "`compress` is the largest pulse-edge error allowed, in ticks, and must be at least 0.5: a whole tick cannot land nearer to every edge (got 0.25)",
+        ),
+        (
+            Error::CompressUnreachable {
+                step: 12,
+                tolerance: 0.5
+            },
+            "no run of 16-bit periods keeps pulse edge 12 within 0.5 ticks of the curve; raise `compress`",
+        ),
     ]
 }
 
@@ -199,13 +210,15 @@ fn covered(e: &Error) -> usize {
         Error::NoConvergence { .. } => 20,
         Error::NotAtLeast { .. } => 21,
         Error::SegmentTooLong { .. } => 22,
+        Error::CompressBelowHalf { .. } => 23,
+        Error::CompressUnreachable { .. } => 24,
     }
 }
 
 #[test]
 fn every_variant_has_a_pinned_message() {
     let examples = examples();
-    let mut seen = [false; 23];
+    let mut seen = [false; 25];
     for (error, message) in &examples {
         assert_eq!(error.to_string(), *message);
         seen[covered(error)] = true;

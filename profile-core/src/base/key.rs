@@ -36,6 +36,9 @@ impl Key {
     pub const ARITHMETIC: Key = Key("arithmetic");
     /// `segments`: the equal-time segment layout.
     pub const SEGMENTS: Key = Key("segments");
+    /// `compress`: the compressed layout, its largest pulse-edge error in
+    /// ticks.
+    pub const COMPRESS: Key = Key("compress");
     /// `motor`: the motor a profile drives.
     pub const MOTOR: Key = Key("motor");
     /// `step_angle`

@@ -1,0 +1,156 @@
+//! The compressed layout: a ramp as runs of steps whose period changes by a
+//! constant amount, in fixed point, each pulse edge within a chosen number
+//! of ticks of the curve.
+//!
+//! A run is five `u16` words, `[count, interval_hi, interval_lo, add_hi,
+//! add_lo]`: `interval` is the run's first period and `add` what each step
+//! adds to it, both in ticks with [`RUN_FRACTION_BITS`] fractional bits
+//! (`add` in two's complement). Played, a run keeps the sub-tick remainder
+//! of the edges so that rounding never accumulates:
+//!
+//! ```text
+//! x = frac + interval;  period = x >> 16;  frac = x & 0xFFFF;  interval += add
+//! ```
+//!
+//! with `frac` starting at [`RUN_START_FRACTION`] (half a tick: the edges are
+//! rounded, not truncated) and carried from run to run. [`Expand`] is that
+//! loop; the player, the C function and every check use it.
+
+/// Fractional bits of a run's `interval` and `add`.
+pub const RUN_FRACTION_BITS: u32 = 16;
+
+/// The sub-tick remainder before the first step: half a tick.
+pub const RUN_START_FRACTION: u32 = 1 << (RUN_FRACTION_BITS - 1);
+
+const FRACTION_MASK: u32 = (1 << RUN_FRACTION_BITS) - 1;
+
+/// One run, decoded: steps, first period and per-step change, in ticks
+/// scaled by `2^RUN_FRACTION_BITS`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Run {
+    /// Steps in the run, at least 1.
+    pub count: u16,
+    /// The first step's period, in 1/65 536 ticks.
+    pub interval: u32,
+    /// Added to the period after each step, in 1/65 536 ticks.
+    pub add: i32,
+}
+
+impl Run {
+    /// The run's five words, as tables store them.
+    pub const fn encode(&self) -> [u16; 5] {
+        let add = self.add as u32;
+        [
+            self.count,
+            (self.interval >> 16) as u16,
+            self.interval as u16,
+            (add >> 16) as u16,
+            add as u16,
+        ]
+    }
+
+    /// The run stored as `words`.
+    pub const fn decode(words: &[u16; 5]) -> Self {
+        Run {
+            count: words[0],
+            interval: ((words[1] as u32) << 16) | words[2] as u32,
+            add: (((words[3] as u32) << 16) | words[4] as u32) as i32,
+        }
+    }
+}
+
+/// The periods a run table plays, one per step, in ticks.
+///
+/// Wrapping arithmetic, as on the target: a table built by this crate never
+/// wraps (every run is played through this iterator and checked when the
+/// table is made).
+#[derive(Clone, Debug)]
+pub struct Expand<'a> {
+    runs: &'a [[u16; 5]],
+    left: u16,
+    interval: u32,
+    add: u32,
+    frac: u32,
+}
+
+impl<'a> Expand<'a> {
+    /// The periods of `runs`, from the first step.
+    pub const fn new(runs: &'a [[u16; 5]]) -> Self {
+        Expand {
+            runs,
+            left: 0,
+            interval: 0,
+            add: 0,
+            frac: RUN_START_FRACTION,
+        }
+    }
+}
+
+impl Iterator for Expand<'_> {
+    type Item = u32;
+
+    fn next(&mut self) -> Option<u32> {
+        while self.left == 0 {
+            let (first, rest) = self.runs.split_first()?;
+            let run = Run::decode(first);
+            self.runs = rest;
+            self.left = run.count;
+            self.interval = run.interval;
+            self.add = run.add as u32;
+        }
+        self.left -= 1;
+        let x = self.frac.wrapping_add(self.interval);
+        self.frac = x & FRACTION_MASK;
+        self.interval = self.interval.wrapping_add(self.add);
+        Some(x >> RUN_FRACTION_BITS)
+    }
+
+    fn size_hint(&self) -> (usize, Option<usize>) {
+        let steps = self.left as usize + self.runs.iter().map(|r| r[0] as usize).sum::<usize>();
+        (steps, Some(steps))
+    }
+}
+
+/// Steps in a run table: the sum of its counts.
+pub fn run_steps(runs: &[[u16; 5]]) -> u32 {
+    runs.iter().map(|r| r[0] as u32).sum()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_run_encodes_and_decodes() {
+        let run = Run {
+            count: 300,
+            interval: 0x1234_5678,
+            add: -70_000,
+        };
+        assert_eq!(Run::decode(&run.encode()), run);
+    }
+
+    #[test]
+    fn runs_play_a_quadratic_with_the_remainder_carried() {
+        // 2.5 ticks, then 2.75, 3.0: edges at 0.5 + 2.5, + 2.75, + 3.0.
+        let runs = [
+            Run {
+                count: 3,
+                interval: 5 << 15,
+                add: 1 << 14,
+            }
+            .encode(),
+            Run {
+                count: 2,
+                interval: 1 << 16,
+                add: 0,
+            }
+            .encode(),
+        ];
+        let periods: std::vec::Vec<u32> = Expand::new(&runs).collect();
+        // Edges: 3.0, 5.75, 8.75, then 9.75, 10.75 (floor: 3, 5, 8, 9, 10).
+        assert_eq!(periods, [3, 2, 3, 1, 1]);
+        assert_eq!(run_steps(&runs), 5);
+        assert_eq!(Expand::new(&runs).size_hint(), (5, Some(5)));
+    }
+}

@@ -1,0 +1,103 @@
+//! The compressed layout's flash against the per-step table, on the ramps
+//! the goals name, and the runs' expansion against the per-step arithmetic.
+//! (Every edge against an independent oracle: `tests/oracle.rs`.)
+
+use profile_core::runs::{Expand, Run};
+use profile_core::{Curve, Linear, LinearExtent, Sigmoid, Spec, Timer, Word};
+
+fn timer(timer_hz: u32) -> Timer {
+    Timer {
+        timer_hz,
+        word: Word::U16,
+        ticks_per_step: 1,
+    }
+}
+
+/// 200 -> 20 200 Hz at 20 000 Hz/s on a 2 MHz timer: 10 200 steps.
+fn linear() -> Spec {
+    Spec::new(
+        Curve::Linear(Linear {
+            fmin: 200.0,
+            fmax: 20_200.0,
+            extent: LinearExtent::Accel(20_000.0),
+        }),
+        timer(2_000_000),
+    )
+}
+
+/// 400 -> 48 000 Hz, flexible 6, 8 000 steps on a 10 MHz timer.
+fn sigmoid() -> Spec {
+    Spec::new(
+        Curve::Sigmoid(Sigmoid {
+            fmin: 400.0,
+            fmax: 48_000.0,
+            flexible: 6.0,
+            len: 8000,
+        }),
+        timer(10_000_000),
+    )
+}
+
+/// `[u16; N]` bytes over the runs' bytes.
+fn ratio(spec: &Spec, compress: f64) -> f64 {
+    let t = spec.run_table(compress).unwrap();
+    let f = t.figures;
+    assert!(f.max_edge_error_ticks <= compress, "{f:?}");
+    assert_eq!(Expand::new(&t.runs).count() as u32, f.steps);
+    assert_eq!(f.flash_bytes, 10 * f.runs);
+    eprintln!(
+        "{} steps, compress = {compress}: {} runs, {} bytes against {}: {:.1}x",
+        f.steps,
+        f.runs,
+        f.flash_bytes,
+        f.per_step_flash_bytes,
+        f.per_step_flash_bytes as f64 / f.flash_bytes as f64
+    );
+    f.per_step_flash_bytes as f64 / f.flash_bytes as f64
+}
+
+#[test]
+fn the_goals_flash_ratios_hold() {
+    assert!(ratio(&linear(), 1.0) >= 20.0);
+    assert!(ratio(&sigmoid(), 1.0) >= 12.0);
+    assert!(ratio(&linear(), 0.5) >= 8.0);
+}
+
+/// A run table is one integer recurrence: played by hand, run by run, it
+/// gives what `Expand` gives.
+#[test]
+fn expansion_is_the_documented_recurrence() {
+    let t = sigmoid().run_table(1.0).unwrap();
+    let mut frac: u64 = 1 << 15;
+    let mut by_hand = Vec::new();
+    for words in &t.runs {
+        let run = Run::decode(words);
+        let mut interval = i64::from(run.interval);
+        for _ in 0..run.count {
+            let x = frac + interval as u64;
+            by_hand.push((x >> 16) as u32);
+            frac = x & 0xFFFF;
+            interval += i64::from(run.add);
+        }
+    }
+    assert_eq!(Expand::new(&t.runs).collect::<Vec<_>>(), by_hand);
+}
+
+#[test]
+fn a_tolerance_below_half_a_tick_is_refused() {
+    let e = linear().run_table(0.4).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "`compress` is the largest pulse-edge error allowed, in ticks, and must be at least \
+         0.5: a whole tick cannot land nearer to every edge (got 0.4)"
+    );
+    let e = linear()
+        .with_rounding(profile_core::Rounding::Truncate)
+        .run_table(1.0)
+        .unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "`rounding = truncate` applies only without `compress` (runs place every edge within \
+         `compress` ticks)"
+    );
+}
