@@ -82,6 +82,7 @@ fn expected(profiles: &Profiles) -> BTreeMap<String, BTreeMap<String, Figure>> {
                 m.insert("START_HZ".into(), float(f.start_hz));
                 m.insert("FINAL_HZ".into(), float(f.final_hz));
             }
+            Generated::Runs(_) => {}
             Generated::Segments(t) => {
                 let f = &t.figures;
                 let (p0, c0) = t.pairs[0];
@@ -114,6 +115,29 @@ fn expected(profiles: &Profiles) -> BTreeMap<String, BTreeMap<String, Figure>> {
                 m.insert("DURATION_S".into(), float(f.duration_s));
             }
         }
+        if let Generated::Runs(t) = &p.table {
+            let f = &t.figures;
+            let periods = p.table.step_periods();
+            m.insert("entries".into(), int(t.runs.len() as u64));
+            m.insert("steps".into(), int(periods.len() as u64));
+            m.insert("first".into(), int(u64::from(periods[0])));
+            m.insert("last".into(), int(u64::from(*periods.last().unwrap())));
+            m.insert(
+                "sum".into(),
+                int(periods.iter().map(|&p| u64::from(p)).sum()),
+            );
+            m.insert("checksum".into(), int(checksum(&periods)));
+            m.insert("TIMER_HZ".into(), int(u64::from(t.spec.timer.timer_hz)));
+            m.insert(
+                "TICKS_PER_STEP".into(),
+                int(u64::from(t.spec.timer.ticks_per_step)),
+            );
+            m.insert("RUN_COUNT".into(), int(u64::from(f.runs)));
+            m.insert("LEN".into(), int(u64::from(f.steps)));
+            m.insert("TOTAL_TICKS".into(), int(f.total_ticks));
+            m.insert("DURATION_S".into(), float(f.duration_s));
+            m.insert("MAX_EDGE_ERROR_TICKS".into(), float(f.max_edge_error_ticks));
+        }
         // A profile that names a motor: where its torque margin is smallest.
         if let Some(t) = &p.torque {
             m.insert("TORQUE_MARGIN_NM".into(), float(t.min_margin_nm));
@@ -122,6 +146,23 @@ fn expected(profiles: &Profiles) -> BTreeMap<String, BTreeMap<String, Figure>> {
         all.insert(p.name.clone(), m);
     }
     all
+}
+
+/// Each period times its 1-based step, summed modulo 2^32: the order of
+/// the periods counts, not only their sum.
+fn checksum(periods: &[u32]) -> u64 {
+    periods.iter().enumerate().fold(0u64, |s, (k, &p)| {
+        (s + (k as u64 + 1) * u64::from(p)) & 0xFFFF_FFFF
+    })
+}
+
+/// The run player's prefix: the profiles file's stem.
+fn prefix(profiles: &Profiles) -> String {
+    Path::new(profiles.file())
+        .file_stem()
+        .unwrap()
+        .to_string_lossy()
+        .to_lowercase()
 }
 
 /// `#define NAME_FIGURE value` lines of the header, per profile, in order:
@@ -135,6 +176,9 @@ fn defines(header: &str, profiles: &Profiles) -> BTreeMap<String, Vec<(String, b
         let Some((macro_name, value)) = rest.split_once(' ') else {
             continue; // the include guard
         };
+        if macro_name.starts_with("STEPPER_RUNS_READ") {
+            continue; // the run player's memory access
+        }
         let owner = profiles
             .profiles()
             .iter()
@@ -163,9 +207,16 @@ fn defines(header: &str, profiles: &Profiles) -> BTreeMap<String, Vec<(String, b
 fn program(profiles: &Profiles, defines: &BTreeMap<String, Vec<(String, bool)>>) -> String {
     let mut c = String::new();
     c.push_str("#include <stdio.h>\n#include <stddef.h>\n");
+    // The one file that defines a single header's run player.
+    let stem = prefix(profiles).to_uppercase();
+    let _ = writeln!(c, "#define STEPPER_PROFILES_{stem}_IMPLEMENTATION");
     c.push_str("#include \"profiles.h\"\n#include \"profiles.h\" /* the guard */\n\n");
     c.push_str("unsigned long other_first(void);\n\n");
-    c.push_str("int main(void)\n{\n    size_t i, n;\n    unsigned long long sum, steps;\n\n");
+    c.push_str(
+        "int main(void)\n{\n    size_t i, n;\n    unsigned long long sum, steps;\n\n    \
+         /* Not every kind of table uses every one. */\n    \
+         (void)i;\n    (void)n;\n    sum = 0;\n    steps = 0;\n    (void)steps;\n\n",
+    );
     for p in profiles.profiles() {
         let name = &p.name;
         let up = name.to_uppercase();
@@ -187,6 +238,7 @@ fn program(profiles: &Profiles, defines: &BTreeMap<String, Vec<(String, bool)>>)
                      printf(\"{name} sum %llu\\n\", sum);"
                 );
             }
+            Generated::Runs(_) => {}
             Generated::Segments(_) => {
                 let t = format!("{up}_SEGMENTS");
                 let _ = writeln!(
@@ -207,6 +259,26 @@ fn program(profiles: &Profiles, defines: &BTreeMap<String, Vec<(String, bool)>>)
                      printf(\"{name} sum %llu\\n\", sum);"
                 );
             }
+        }
+        if let Generated::Runs(_) = &p.table {
+            let t = format!("{up}_RUNS");
+            let pre = prefix(profiles);
+            let _ = writeln!(
+                c,
+                "    {{\n        {pre}_runs_t r;\n        uint16_t q;\n        \
+                 unsigned long k = 0, first = 0, last = 0, check = 0;\n        sum = 0;\n        \
+                 {pre}_runs_start(&r, {t}, (uint16_t)(sizeof({t}) / sizeof({t}[0])));\n        \
+                 while ((q = {pre}_runs_next(&r)) != 0) {{\n            k++;\n            \
+                 if (k == 1) {{\n                first = q;\n            }}\n            \
+                 last = q;\n            sum += q;\n            \
+                 check = (check + k * q) & 0xFFFFFFFFul;\n        }}\n        \
+                 printf(\"{name} entries %lu\\n\", (unsigned long)(sizeof({t}) / sizeof({t}[0])));\n        \
+                 printf(\"{name} steps %lu\\n\", k);\n        \
+                 printf(\"{name} first %lu\\n\", first);\n        \
+                 printf(\"{name} last %lu\\n\", last);\n        \
+                 printf(\"{name} sum %llu\\n\", sum);\n        \
+                 printf(\"{name} checksum %lu\\n\", check);\n    }}"
+            );
         }
         for (figure, is_float) in defines.get(name).map(Vec::as_slice).unwrap_or(&[]) {
             let m = format!("{up}_{figure}");
@@ -285,7 +357,7 @@ fn check_header(
             assert!(source.contains("#include \"profiles.h\"\n"));
             // Declarations only: no table is defined in the header.
             assert!(
-                !header.contains('{') && !header.contains("static"),
+                !header.contains("] = {") && !header.contains("static"),
                 "{header}"
             );
             sources.push("profiles.c");
@@ -298,6 +370,12 @@ fn check_header(
     let first_table = match profiles.profiles()[0].table {
         Generated::Steps(_) => format!("{first}_PERIODS[0]"),
         Generated::Segments(_) => format!("{first}_SEGMENTS[0][0]"),
+        // The player, from another file: the single header's definitions
+        // are in main.c.
+        Generated::Runs(_) => {
+            let pre = prefix(profiles);
+            format!("{pre}_runs_first()")
+        }
     };
     fs::write(dir.join("main.c"), program(profiles, &defines)).unwrap();
     // A second translation unit: including the header twice in one program
@@ -305,8 +383,19 @@ fn check_header(
     fs::write(
         dir.join("other.c"),
         format!(
-            "#include \"profiles.h\"\n\nunsigned long other_first(void);\n\n\
-             unsigned long other_first(void)\n{{\n    return {first_table};\n}}\n"
+            "#include \"profiles.h\"\n\nunsigned long other_first(void);\n\n{}\
+             unsigned long other_first(void)\n{{\n    return {first_table};\n}}\n",
+            match profiles.profiles()[0].table {
+                Generated::Runs(_) => {
+                    let pre = prefix(profiles);
+                    format!(
+                        "static unsigned long {pre}_runs_first(void)\n{{\n    \
+                         {pre}_runs_t r;\n    {pre}_runs_start(&r, {first}_RUNS, 1);\n    \
+                         return {pre}_runs_next(&r);\n}}\n\n"
+                    )
+                }
+                _ => String::new(),
+            }
         ),
     )
     .unwrap();
@@ -396,6 +485,9 @@ fn check_header(
             assert_eq!(got["first"], got["FIRST_TICKS"], "`{name}`");
             assert_eq!(got["last"], got["LAST_TICKS"], "`{name}`");
             assert_eq!(got["entries"], got["LEN"], "`{name}`");
+        } else if got.contains_key("RUN_COUNT") {
+            assert_eq!(got["entries"], got["RUN_COUNT"], "`{name}`");
+            assert_eq!(got["steps"], got["LEN"], "`{name}`");
         } else {
             assert_eq!(got["entries"], got["SEGMENT_COUNT"], "`{name}`");
             assert_eq!(got["steps"], got["LEN"], "`{name}`");
@@ -570,4 +662,52 @@ fn a_placement_that_would_break_the_c_is_refused() {
         "the C storage is blank: give a word such as `__code`"
     );
     assert!(!dir.join("p.h").exists());
+}
+
+/// Compressed ramps in C: the runs and the header's player, which plays
+/// them period for period as `runs::Expand` (compared through every
+/// period's sum and an order-sensitive checksum), as one header and split.
+#[test]
+fn compressed_runs_play_in_c_as_in_rust() {
+    let source = r#"
+[defaults]
+timer_hz = "10 MHz"
+
+# 1/16 microsteps, 100 to 3000 full steps/s at 10 000 full steps/s².
+[profiles.microstep]
+curve = "linear"
+fmin = "1.6 kHz"
+fmax = "48 kHz"
+accel = 160_000
+compress = 1
+
+[profiles.s_curve]
+curve = "sigmoid"
+fmin = 500
+fmax = "64 kHz"
+flexible = 8
+len = 1000
+compress = 0.5
+
+[profiles.per_step]
+curve = "linear"
+fmin = 500
+fmax = 5000
+len = 100
+"#;
+    let profiles = Profiles::parse("ramps.toml", source).unwrap_or_else(|e| panic!("{e}"));
+    let Generated::Runs(micro) = &profiles.profiles()[0].table else {
+        panic!("a compressed table");
+    };
+    assert!(micro.figures.steps > 7000 && micro.figures.max_edge_error_ticks <= 1.0);
+    for (dir, layout) in [
+        ("runs_single", Layout::Single),
+        ("runs_split", Layout::Split(CStyle::default())),
+    ] {
+        let printed = check_header(&profiles, dir, &layout);
+        assert_eq!(
+            printed["microstep"]["steps"],
+            Figure::Int(u64::from(micro.figures.steps))
+        );
+    }
 }

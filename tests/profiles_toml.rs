@@ -272,6 +272,7 @@ fn specs_come_from_the_file_and_its_defaults() {
     let spec = |name: &str| match find(&profiles, name) {
         Generated::Steps(t) => t.spec,
         Generated::Segments(t) => t.spec,
+        Generated::Runs(t) => t.spec,
     };
     let orange = Spec::new(
         Curve::Sigmoid(Sigmoid {

@@ -91,7 +91,7 @@ fn expected(source: &str) -> (u32, usize) {
     let profiles = Profiles::parse("profiles.toml", source).unwrap_or_else(|e| panic!("{e}"));
     match &profiles.profiles()[0].table {
         Generated::Steps(t) => (t.periods[0], t.periods.len()),
-        Generated::Segments(_) => unreachable!(),
+        Generated::Segments(_) | Generated::Runs(_) => unreachable!(),
     }
 }
 

@@ -45,7 +45,7 @@ fn periods(file: &str) -> Vec<u32> {
     let profiles = Profiles::parse("profiles.toml", file).unwrap_or_else(|e| panic!("{e}"));
     match &profiles.profiles()[0].table {
         Generated::Steps(t) => t.periods.clone(),
-        Generated::Segments(_) => panic!("a per-step profile"),
+        Generated::Segments(_) | Generated::Runs(_) => panic!("a per-step profile"),
     }
 }
 

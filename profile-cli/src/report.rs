@@ -118,6 +118,30 @@ fn print_table(out: &mut String, profiles: &[Profile]) -> Result<(), Error> {
                     ],
                 );
             }
+            Generated::Runs(t) => {
+                let (f, s) = (&t.figures, &t.spec);
+                let periods = p.table.step_periods();
+                let hz = |ticks: u32| s.timer.ticks_per_second() / ticks as f64;
+                let top = periods.iter().copied().max().unwrap_or(0);
+                row(
+                    out,
+                    [
+                        &p.name,
+                        s.curve.name(),
+                        &format!("{} runs", f.runs),
+                        &f.steps.to_string(),
+                        &format!("{:.1}", hz(periods.first().copied().unwrap_or(1))),
+                        &format!("{:.1}", hz(periods.last().copied().unwrap_or(1))),
+                        &format!("{:.4}", f.duration_s),
+                        &f.flash_bytes.to_string(),
+                        "-",
+                        "-",
+                        "-",
+                        &format!("{:.3}", f.max_edge_error_ticks),
+                        &(s.timer.word.max() - top).to_string(),
+                    ],
+                );
+            }
             Generated::Segments(t) => {
                 let (f, s) = (&t.figures, &t.spec);
                 let top = t.pairs.iter().map(|p| p.0).max().unwrap_or(0);

@@ -42,7 +42,7 @@ const BAD: &str = "[profiles.a]\ncurve = \"linear\"\nfmin = 100\nfmax = 1000\nle
 
 const BAD_MESSAGE: &str = "bad.toml:7:1: unknown key `foo`; expected one of `curve`, `len`, \
      `fmin`, `fmax`, `accel`, `timer_hz`, `word`, `ticks_per_step`, `discretization`, \
-     `rounding`, `arithmetic`, `segments`, or a motor's keys\n  |\n7 | foo = 3\n  | ^^^\n";
+     `rounding`, `arithmetic`, `segments`, `compress`, or a motor's keys\n  |\n7 | foo = 3\n  | ^^^\n";
 
 #[test]
 fn every_command_answers_help() {

@@ -73,6 +73,8 @@ pub enum Body {
     Periods(Vec<u32>),
     /// `(period, count)` segments.
     Segments(Vec<(u32, u32)>),
+    /// Runs, five words each (see [`runs`](crate::runs)).
+    Runs(Vec<[u16; 5]>),
 }
 
 impl Body {
@@ -81,6 +83,7 @@ impl Body {
         match self {
             Body::Periods(p) => p.clone(),
             Body::Segments(s) => expand(s),
+            Body::Runs(r) => crate::runs::Expand::new(r).collect(),
         }
     }
 
@@ -88,6 +91,7 @@ impl Body {
         match self {
             Body::Periods(p) => p.len(),
             Body::Segments(s) => s.len(),
+            Body::Runs(r) => r.len(),
         }
     }
 }
@@ -134,6 +138,18 @@ macro_rules! words {
     )*};
 }
 words!(u16, u32);
+
+impl Golden for [[u16; 5]] {
+    fn entries(&self) -> Entries {
+        plain(Body::Runs(self.to_vec()))
+    }
+}
+
+impl<const N: usize> Golden for [[u16; 5]; N] {
+    fn entries(&self) -> Entries {
+        self[..].entries()
+    }
+}
 
 impl<T: Golden + ?Sized> Golden for &T {
     fn entries(&self) -> Entries {
@@ -196,6 +212,19 @@ impl Golden for Generated {
                     f.total_error_ticks,
                 ));
                 Body::Segments(t.pairs.clone())
+            }
+            Generated::Runs(t) => {
+                let f = &t.figures;
+                header.extend([
+                    figure("steps", f.steps.to_string()),
+                    figure("flash_bytes", f.flash_bytes.to_string()),
+                ]);
+                header.extend(timing(
+                    f.duration_s,
+                    f.max_edge_error_ticks,
+                    f.total_error_ticks,
+                ));
+                Body::Runs(t.runs.clone())
             }
         };
         Entries {
@@ -309,6 +338,7 @@ fn render(e: &Entries) -> String {
     let kind = match e.body {
         Body::Periods(_) => "per step",
         Body::Segments(_) => "segments",
+        Body::Runs(_) => "runs",
     };
     let edges = edges(&e.body, e.ticks_per_step);
     let mut header = std::vec![
@@ -331,6 +361,13 @@ fn render(e: &Entries) -> String {
         let _ = writeln!(out, "# {k} = {v}");
     }
     out.push_str("#\n");
+    render_body(&mut out, e, &edges);
+    out
+}
+
+/// The entry lines of a golden file, with their edges (and microseconds
+/// when the timer is known).
+fn render_body(out: &mut String, e: &Entries, edges: &[u64]) {
     let us = |t: u64| e.timer_hz.map(|hz| format!("  {:>12.3}", micros(t, hz)));
     let us_title = if e.timer_hz.is_some() {
         "     edge (us)"
@@ -344,7 +381,7 @@ fn render(e: &Entries) -> String {
                 "# {:>6}  {:>10}  {:>12}{us_title}",
                 "entry", "period", "edge (ticks)"
             );
-            for (i, (p, t)) in p.iter().zip(&edges).enumerate() {
+            for (i, (p, t)) in p.iter().zip(edges).enumerate() {
                 let _ = writeln!(
                     out,
                     "{i:>8}  {p:>10}  {t:>12}{}",
@@ -373,8 +410,36 @@ fn render(e: &Entries) -> String {
                 );
             }
         }
+        Body::Runs(r) => {
+            let _ = writeln!(
+                out,
+                "# {:>6}  {:>6}  {:>9}  {:>9}  {:>6}  {:>6}  {:>12}{}",
+                "run",
+                "count",
+                "int_hi",
+                "int_lo",
+                "add_hi",
+                "add_lo",
+                "end (ticks)",
+                us_title.replace("edge", " end")
+            );
+            let mut step = 0usize;
+            for (i, w) in r.iter().enumerate() {
+                step += w[0] as usize;
+                let t = if step == 0 { 0 } else { edges[step - 1] };
+                let _ = writeln!(
+                    out,
+                    "{i:>8}  {:>6}  {:>9}  {:>9}  {:>6}  {:>6}  {t:>12}{}",
+                    w[0],
+                    w[1],
+                    w[2],
+                    w[3],
+                    w[4],
+                    us(t).unwrap_or_default()
+                );
+            }
+        }
     }
-    out
 }
 
 /// A golden file read back: its `# key = value` lines (the table's kind,
@@ -389,6 +454,7 @@ pub fn read(path: impl AsRef<Path>) -> Result<(Vec<(String, String)>, Body), Str
         .collect();
     let like = match header.iter().find(|(k, _)| k == "table") {
         Some((_, kind)) if kind == "segments" => Body::Segments(Vec::new()),
+        Some((_, kind)) if kind == "runs" => Body::Runs(Vec::new()),
         _ => Body::Periods(Vec::new()),
     };
     let body = parse(&text, &like).map_err(|e| format!("{}:{e}", path.display()))?;
@@ -399,6 +465,7 @@ pub fn read(path: impl AsRef<Path>) -> Result<(Vec<(String, String)>, Body), Str
 fn parse(text: &str, like: &Body) -> Result<Body, String> {
     let mut periods = Vec::new();
     let mut segments = Vec::new();
+    let mut runs = Vec::new();
     for (n, line) in text.lines().enumerate() {
         if line.starts_with('#') || line.trim().is_empty() {
             continue;
@@ -412,11 +479,20 @@ fn parse(text: &str, like: &Body) -> Result<Body, String> {
         match like {
             Body::Periods(_) => periods.push(cell(1)?),
             Body::Segments(_) => segments.push((cell(1)?, cell(2)?)),
+            Body::Runs(_) => {
+                let mut words = [0u16; 5];
+                for (k, w) in words.iter_mut().enumerate() {
+                    *w = u16::try_from(cell(k + 1)?)
+                        .map_err(|_| format!("{}: a run word above 65535", n + 1))?;
+                }
+                runs.push(words);
+            }
         }
     }
     Ok(match like {
         Body::Periods(_) => Body::Periods(periods),
         Body::Segments(_) => Body::Segments(segments),
+        Body::Runs(_) => Body::Runs(runs),
     })
 }
 
@@ -442,6 +518,15 @@ fn difference(old: &Body, new: &Entries) -> String {
             });
             let differing = o.iter().zip(n).filter(|(a, b)| a != b).count();
             ("segments", first, differing)
+        }
+        (Body::Runs(o), Body::Runs(n)) => {
+            let first = o
+                .iter()
+                .zip(n)
+                .position(|(a, b)| a != b)
+                .map(|i| format!("the first at run {i}: was {:?}, now {:?}", o[i], n[i]));
+            let differing = o.iter().zip(n).filter(|(a, b)| a != b).count();
+            ("runs", first, differing)
         }
         _ => return "its layout changed".to_string(),
     };
@@ -478,59 +563,5 @@ fn difference(old: &Body, new: &Entries) -> String {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn a_file_shows_each_entry_with_its_edge() {
-        let text = render(&timed(&[900u16, 700, 600], 1_000_000).entries());
-        assert_eq!(
-            text,
-            "# stepper-profiles golden table: UPDATE_GOLDEN=1 rewrites it
-# table = per step
-# entries = 3
-# timer_hz = 1 MHz
-# total_ticks = 2200
-#
-#  entry      period  edge (ticks)     edge (us)
-       0         900           900       900.000
-       1         700          1600      1600.000
-       2         600          2200      2200.000
-"
-        );
-        let segments = render(&[(500u16, 2u16), (400, 3)].entries());
-        assert!(segments.ends_with(
-            "#    seg      period   count   end (ticks)
-       0         500       2          1000
-       1         400       3          2200
-"
-        ));
-        assert_eq!(
-            parse(&segments, &Body::Segments(Vec::new())),
-            Ok(Body::Segments(std::vec![(500, 2), (400, 3)]))
-        );
-    }
-
-    #[test]
-    fn a_difference_names_the_count_the_first_and_the_shift() {
-        let old = Body::Periods(std::vec![900, 700, 600, 500]);
-        let new = timed(&[900u16, 702, 600, 499], 2_000_000).entries();
-        assert_eq!(
-            difference(&old, &new),
-            "2 of 4 entries differ, the first at entry 1: was 700 ticks, now 702; the largest \
-             shift of a pulse edge is 2 ticks (1.000 us)"
-        );
-        let longer = [900u16, 700, 600, 500, 450].entries();
-        assert_eq!(
-            difference(&old, &longer),
-            "5 entries, was 4; the largest shift of a pulse edge is 0 ticks"
-        );
-        let same = [900u16, 700, 600, 500].entries();
-        assert_eq!(
-            difference(&old, &same),
-            "its parameters or figures changed; the largest shift of a pulse edge is 0 ticks"
-        );
-        let segments = [(900u16, 2u16)].entries();
-        assert_eq!(difference(&old, &segments), "its layout changed");
-    }
-}
+#[path = "golden_tests.rs"]
+mod tests;

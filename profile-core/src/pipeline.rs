@@ -64,8 +64,10 @@ pub fn compile<L: Clone>(
     let request = schema::read(args, whole, options.assumed)?;
     let at = |e| std::vec![locate(&e, args, whole)];
     let spec = request.spec.check().map_err(at)?;
-    if let Layout::Segments(n) = request.layout {
-        spec.check_segments(n).map_err(at)?;
+    match request.layout {
+        Layout::Segments(n) => spec.check_segments(n).map_err(at)?,
+        Layout::Runs(e) => spec.check_compress(e).map_err(at)?,
+        Layout::Steps => {}
     }
     let prefix = options
         .profile
@@ -100,6 +102,7 @@ pub fn compile<L: Clone>(
     let table = match request.layout {
         Layout::Steps => spec.table().map(Generated::Steps),
         Layout::Segments(n) => spec.segment_table(n).map(Generated::Segments),
+        Layout::Runs(e) => spec.run_table(e).map(Generated::Runs),
     }
     .map_err(at)?;
     let torque = match &request.motor {

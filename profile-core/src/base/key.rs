@@ -70,6 +70,7 @@ impl Key {
         Key::ROUNDING,
         Key::ARITHMETIC,
         Key::SEGMENTS,
+        Key::COMPRESS,
         Key::MOTOR,
     ];
 

@@ -69,6 +69,85 @@ struct Names<'a> {
     source: &'a str,
 }
 
+impl Names<'_> {
+    /// The run player's prefix: the guard's stem in lower case
+    /// (`STEPPER_PROFILES_RAMPS_H` gives `ramps`).
+    fn prefix(&self) -> String {
+        let stem = self
+            .guard
+            .strip_prefix("STEPPER_PROFILES_")
+            .unwrap_or(self.guard);
+        stem.strip_suffix("_H").unwrap_or(stem).to_lowercase()
+    }
+
+    /// The macro that asks a single header for the player's definitions.
+    fn implementation(&self) -> String {
+        let stem = self.guard.strip_suffix("_H").unwrap_or(self.guard);
+        format!("{stem}_IMPLEMENTATION")
+    }
+}
+
+/// The run player's type and functions, declared.
+fn runs_api(prefix: &str) -> String {
+    format!(
+        "/* Reads one word of a run table. Define it before including this file\n \
+         * for tables in program memory (avr-libc: pgm_read_word(p)). */\n\
+         #ifndef STEPPER_RUNS_READ\n\
+         #define STEPPER_RUNS_READ(p) (*(p))\n\
+         #endif\n\n\
+         /* Plays a compressed ramp (a NAME_RUNS table), one period per call, with\n \
+         * integer additions and shifts only: no division, no floating point. */\n\
+         typedef struct {{\n    \
+         const uint16_t *next; /* the next run's five words */\n    \
+         uint16_t runs_left;   /* runs not started yet */\n    \
+         uint16_t left;        /* steps left in this run */\n    \
+         uint32_t interval;    /* the next period, 16.16 fixed point */\n    \
+         uint32_t add;         /* added after each step, two's complement */\n    \
+         uint32_t frac;        /* the edges' sub-tick remainder */\n\
+         }} {prefix}_runs_t;\n\n\
+         /* Starts playing `count` runs from `runs` (NAME_RUNS, NAME_RUN_COUNT). */\n\
+         void {prefix}_runs_start({prefix}_runs_t *p, const uint16_t (*runs)[5], uint16_t count);\n\
+         /* The next period, in ticks; 0 once every step has been played. */\n\
+         uint16_t {prefix}_runs_next({prefix}_runs_t *p);\n\n"
+    )
+}
+
+/// The run player's definitions: `runs::Expand`, in C89.
+fn runs_player(prefix: &str) -> String {
+    format!(
+        "void {prefix}_runs_start({prefix}_runs_t *p, const uint16_t (*runs)[5], uint16_t count)\n\
+         {{\n    \
+         p->next = runs[0];\n    \
+         p->runs_left = count;\n    \
+         p->left = 0;\n    \
+         p->interval = 0;\n    \
+         p->add = 0;\n    \
+         p->frac = 0x8000ul;\n\
+         }}\n\n\
+         uint16_t {prefix}_runs_next({prefix}_runs_t *p)\n\
+         {{\n    \
+         uint32_t x;\n    \
+         while (p->left == 0) {{\n        \
+         if (p->runs_left == 0) {{\n            \
+         return 0;\n        \
+         }}\n        \
+         p->runs_left--;\n        \
+         p->left = STEPPER_RUNS_READ(p->next);\n        \
+         p->interval = ((uint32_t)STEPPER_RUNS_READ(p->next + 1) << 16)\n            \
+         | STEPPER_RUNS_READ(p->next + 2);\n        \
+         p->add = ((uint32_t)STEPPER_RUNS_READ(p->next + 3) << 16)\n            \
+         | STEPPER_RUNS_READ(p->next + 4);\n        \
+         p->next += 5;\n    \
+         }}\n    \
+         p->left--;\n    \
+         x = p->frac + p->interval;\n    \
+         p->frac = x & 0xFFFFul;\n    \
+         p->interval += p->add;\n    \
+         return (uint16_t)(x >> 16);\n\
+         }}\n\n"
+    )
+}
+
 /// One header holding everything: each table as
 /// `static const uintN_t NAME_PERIODS[N]` (or `NAME_SEGMENTS[N][2]`) and its
 /// figures as `#define NAME_FIGURE`s.
@@ -97,6 +176,12 @@ pub fn split(
     let mut c = String::new();
     banner(&mut c, &names);
     let _ = writeln!(c, "#include \"{header_name}\"\n");
+    if profiles
+        .iter()
+        .any(|p| matches!(p.table, Generated::Runs(_)))
+    {
+        c.push_str(&runs_player(&names.prefix()));
+    }
     for p in profiles {
         let _ = writeln!(c, "/* Profile {}: see {header_name}. */", p.name);
         table(&mut c, p, "const", style, true);
@@ -121,6 +206,20 @@ fn header_of(
         out,
         "#ifndef {guard}\n#define {guard}\n\n#include <stdint.h>\n"
     );
+    let compressed = profiles
+        .iter()
+        .any(|p| matches!(p.table, Generated::Runs(_)));
+    if compressed {
+        out.push_str(&runs_api(&names.prefix()));
+        if body {
+            // One file defines the player: `#define ..._IMPLEMENTATION`
+            // before including the header there.
+            let implementation = names.implementation();
+            let _ = writeln!(out, "#ifdef {implementation}");
+            out.push_str(&runs_player(&names.prefix()));
+            let _ = writeln!(out, "#endif /* {implementation} */\n");
+        }
+    }
     for p in profiles {
         profile_comment(&mut out, p);
         figures(&mut out, p);
@@ -196,6 +295,19 @@ fn table(out: &mut String, p: &Profile, qualifiers: &str, style: &CStyle, body: 
                 .chunks(12)
                 .map(|chunk| {
                     let line: Vec<String> = chunk.iter().map(|v| v.to_string()).collect();
+                    line.join(", ")
+                })
+                .collect(),
+        ),
+        Generated::Runs(t) => (
+            format!("{upper}_RUNS[{}][5]", t.runs.len()),
+            t.runs
+                .chunks(3)
+                .map(|chunk| {
+                    let line: Vec<String> = chunk
+                        .iter()
+                        .map(|r| format!("{{{}, {}, {}, {}, {}}}", r[0], r[1], r[2], r[3], r[4]))
+                        .collect();
                     line.join(", ")
                 })
                 .collect(),

@@ -145,22 +145,62 @@ pub(crate) fn constants(profile: &Profile) -> Vec<Constant> {
                 },
             ]);
         }
+        Generated::Runs(_) => {}
+    }
+    if let Generated::Runs(t) = table {
+        c.extend(run_constants(&t.figures));
     }
     if let Some(t) = &profile.torque {
-        c.extend([
-            Constant {
-                name: "TORQUE_MARGIN_NM",
-                value: Number::F64(t.min_margin_nm),
-                doc: "Smallest torque the motor has to spare over the ramp, in N·m.",
-            },
-            Constant {
-                name: "TORQUE_MARGIN_STEP",
-                value: Number::Usize(t.step.into()),
-                doc: "The step where the torque margin is smallest.",
-            },
-        ]);
+        c.extend(torque_constants(t));
     }
     c
+}
+
+/// Where a motor has the least torque to spare.
+fn torque_constants(t: &TorqueFigures) -> [Constant; 2] {
+    [
+        Constant {
+            name: "TORQUE_MARGIN_NM",
+            value: Number::F64(t.min_margin_nm),
+            doc: "Smallest torque the motor has to spare over the ramp, in N·m.",
+        },
+        Constant {
+            name: "TORQUE_MARGIN_STEP",
+            value: Number::Usize(t.step.into()),
+            doc: "The step where the torque margin is smallest.",
+        },
+    ]
+}
+
+/// The figures of a compressed table.
+fn run_constants(f: &crate::table::compress::RunFigures) -> [Constant; 5] {
+    [
+        Constant {
+            name: "RUN_COUNT",
+            value: Number::Usize(f.runs.into()),
+            doc: "Entries in `RUNS`.",
+        },
+        Constant {
+            name: "LEN",
+            value: Number::Usize(f.steps.into()),
+            doc: "Steps of the ramp: the sum of the runs' counts.",
+        },
+        Constant {
+            name: "TOTAL_TICKS",
+            value: Number::U64(f.total_ticks),
+            doc: "Sum of the periods the runs play, in ticks.",
+        },
+        Constant {
+            name: "DURATION_S",
+            value: Number::F64(f.duration_s),
+            doc: "Ramp duration as played, in s.",
+        },
+        Constant {
+            name: "MAX_EDGE_ERROR_TICKS",
+            value: Number::F64(f.max_edge_error_ticks),
+            doc: "Largest distance of a played pulse edge from the curve's, in ticks.",
+        },
+    ]
 }
 
 /// Markdown lines describing a table: parameters and figures.
@@ -212,6 +252,21 @@ pub fn doc_lines(table: &Generated) -> std::vec::Vec<String> {
                 f.total_ticks,
                 f.duration_s,
                 f.max_edge_error_ticks
+            ));
+        }
+        Generated::Runs(t) => {
+            let f = &t.figures;
+            lines.push(format!(
+                "{} runs for {} steps, {} bytes instead of {} per step; {} ticks in all \
+                 ({:.6} s); pulse edges within {:.3} ticks of the curve (`compress = {}`).",
+                f.runs,
+                f.steps,
+                f.flash_bytes,
+                f.per_step_flash_bytes,
+                f.total_ticks,
+                f.duration_s,
+                f.max_edge_error_ticks,
+                f.tolerance_ticks
             ));
         }
     }

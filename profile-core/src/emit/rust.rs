@@ -29,8 +29,10 @@ fn word_type(word: Word) -> Ident {
     Ident::new(word.name(), Span::call_site())
 }
 
-/// An array expression holding the table: `[19183u16, 18866, ...]`, or
-/// `[(9533u16, 3u16), (4750, 9), ...]` for a segment table.
+/// An array expression holding the table: `[19183u16, 18866, ...]`,
+/// `[(9533u16, 3u16), (4750, 9), ...]` for a segment table, or
+/// `[[2u16, 2442u16, ...], [5, 1303, ...], ...]` for runs (see
+/// [`runs`](crate::runs)).
 pub fn table_expr(table: &Generated) -> TokenStream {
     let word = table.spec().timer.word;
     match table {
@@ -46,6 +48,13 @@ pub fn table_expr(table: &Generated) -> TokenStream {
             let items = t.pairs.iter().enumerate().map(|(i, &(p, c))| {
                 let (p, c) = (period(word, p, i == 0), period(word, c, i == 0));
                 quote!((#p, #c))
+            });
+            quote!([#(#items),*])
+        }
+        Generated::Runs(t) => {
+            let items = t.runs.iter().enumerate().map(|(i, words)| {
+                let w = words.map(|w| period(Word::U16, u32::from(w), i == 0));
+                quote!([#(#w),*])
             });
             quote!([#(#items),*])
         }
@@ -107,6 +116,14 @@ pub fn module(profile: &Profile) -> TokenStream {
             quote! {
                 #[doc = " `(period in ticks, steps)` per equal-time segment."]
                 pub static SEGMENTS: [(#ty, #ty); #len] = #array;
+            }
+        }
+        Generated::Runs(t) => {
+            let len = Literal::usize_unsuffixed(t.runs.len());
+            quote! {
+                #[doc = " Runs of fixed-point periods, `[count, interval_hi, interval_lo, add_hi, add_lo]`:"]
+                #[doc = " play them with `runs::Expand` (see the `runs` module)."]
+                pub static RUNS: [[u16; 5]; #len] = #array;
             }
         }
     };

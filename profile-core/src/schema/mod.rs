@@ -165,11 +165,14 @@ pub fn unit(key: Key) -> &'static str {
     }
 }
 
-/// A table's layout: one entry per step, or equal-time segments.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// A table's layout: one entry per step, equal-time segments, or runs.
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Layout {
     /// One period per step: `[u16; len]`.
     Steps,
     /// `n` equal-time segments of (period, step count): `[(u16, u16); n]`.
     Segments(u32),
+    /// Runs of fixed-point periods, each pulse edge within this many ticks
+    /// of the curve: `[[u16; 5]; runs]`.
+    Runs(f64),
 }

@@ -2,6 +2,7 @@
 //! keys, the motor; every problem located at its argument.
 
 use std::format;
+use std::string::ToString;
 use std::vec::Vec;
 
 use super::reader::{Collector, motor};
@@ -64,6 +65,14 @@ pub fn read<L: Clone>(
             Ok(v as u32)
         }
     });
+    let compress = c.float(Key::COMPRESS);
+    if let (Some(_), Some(_), Some((i, _))) = (segments, compress, c.find(Key::COMPRESS)) {
+        c.at_arg(
+            i,
+            true,
+            "`compress` and `segments` are two layouts of the table: give one".to_string(),
+        );
+    }
     let curve = (room.read)(&mut c);
     let motor = motor(&mut c);
     let (Some(curve), Some(timer), true, true) = (curve, timer, complete, c.diagnostics.is_empty())
@@ -79,7 +88,11 @@ pub fn read<L: Clone>(
             rounding,
             arithmetic,
         },
-        layout: segments.map_or(Layout::Steps, Layout::Segments),
+        layout: match (segments, compress) {
+            (Some(n), _) => Layout::Segments(n),
+            (None, Some(e)) => Layout::Runs(e),
+            (None, None) => Layout::Steps,
+        },
         motor,
     })
 }
@@ -308,7 +321,7 @@ mod tests {
                 8,
                 "unknown key `flexibel`; did you mean `flexible`? expected one of `curve`, \
                      `len`, `fmin`, `fmax`, `flexible`, `timer_hz`, `word`, `ticks_per_step`, \
-                     `discretization`, `rounding`, `arithmetic`, `segments`, or a motor's keys"
+                     `discretization`, `rounding`, `arithmetic`, `segments`, `compress`, or a motor's keys"
                     .to_string()
             )]
         );

@@ -3,6 +3,7 @@
 use std::vec::Vec;
 
 use crate::base::error::Error;
+use crate::table::compress::RunTable;
 use crate::table::quantize::Figures;
 use crate::table::segments::SegmentFigures;
 use crate::table::spec::{CheckedSpec, Spec};
@@ -30,13 +31,15 @@ pub struct SegmentTable {
     pub figures: SegmentFigures,
 }
 
-/// A generated table in one of the two layouts.
+/// A generated table in one of its layouts.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Generated {
     /// One period per step.
     Steps(Table),
     /// Equal-time segments of `(period, count)`.
     Segments(SegmentTable),
+    /// Runs of fixed-point periods, each edge within `compress` ticks.
+    Runs(RunTable),
 }
 
 /// `(period, count)` segments as one period per step: the one place a
@@ -54,6 +57,7 @@ impl Generated {
         match self {
             Generated::Steps(t) => t.periods.clone(),
             Generated::Segments(t) => expand(&t.pairs),
+            Generated::Runs(t) => crate::table::runs::Expand::new(&t.runs).collect(),
         }
     }
 
@@ -62,6 +66,7 @@ impl Generated {
         match self {
             Generated::Steps(t) => &t.spec,
             Generated::Segments(t) => &t.spec,
+            Generated::Runs(t) => &t.spec,
         }
     }
 }
