@@ -58,13 +58,7 @@ fn edge_error(spec: &Spec, periods: &[u32]) -> Result<(f64, f64), Error> {
 }
 
 fn print_table(out: &mut String, profiles: &[Profile]) -> Result<(), Error> {
-    let row = |out: &mut String, c: [&str; 13]| {
-        let _ = writeln!(
-            out,
-            "{:<21} {:<12} {:<20} {:>5} {:>8} {:>8} {:>7} {:>5} {:>8} {:>8} {:>8} {:>8} {:>6}",
-            c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8], c[9], c[10], c[11], c[12]
-        );
-    };
+    let row = table_row;
     row(
         out,
         [
@@ -119,50 +113,18 @@ fn print_table(out: &mut String, profiles: &[Profile]) -> Result<(), Error> {
                 );
             }
             Generated::Runs(t) => {
-                let (f, s) = (&t.figures, &t.spec);
-                let periods = p.table.step_periods();
-                let hz = |ticks: u32| s.timer.ticks_per_second() / ticks as f64;
-                let top = periods.iter().copied().max().unwrap_or(0);
-                row(
-                    out,
-                    [
-                        &p.name,
-                        s.curve.name(),
-                        &format!("{} runs", f.runs),
-                        &f.steps.to_string(),
-                        &format!("{:.1}", hz(periods.first().copied().unwrap_or(1))),
-                        &format!("{:.1}", hz(periods.last().copied().unwrap_or(1))),
-                        &format!("{:.4}", f.duration_s),
-                        &f.flash_bytes.to_string(),
-                        "-",
-                        "-",
-                        "-",
-                        &format!("{:.3}", f.max_edge_error_ticks),
-                        &(s.timer.word.max() - top).to_string(),
-                    ],
-                );
+                let f = &t.figures;
+                let (steps, flash, edge) = (f.steps, f.flash_bytes, f.max_edge_error_ticks);
+                compact_row(out, p, &format!("{} runs", f.runs), (steps, flash, edge));
             }
             Generated::Segments(t) => {
-                let (f, s) = (&t.figures, &t.spec);
-                let top = t.pairs.iter().map(|p| p.0).max().unwrap_or(0);
-                let hz = |ticks: u32| s.timer.timer_hz as f64 / ticks as f64;
-                row(
+                let f = &t.figures;
+                let (steps, flash, edge) = (f.steps, f.flash_bytes, f.max_edge_error_ticks);
+                compact_row(
                     out,
-                    [
-                        &p.name,
-                        s.curve.name(),
-                        &format!("{} segments", f.segments),
-                        &f.steps.to_string(),
-                        &format!("{:.1}", hz(t.pairs.first().map_or(1, |p| p.0))),
-                        &format!("{:.1}", hz(t.pairs.last().map_or(1, |p| p.0))),
-                        &format!("{:.4}", f.duration_s),
-                        &f.flash_bytes.to_string(),
-                        "-",
-                        "-",
-                        "-",
-                        &format!("{:.3}", f.max_edge_error_ticks),
-                        &(s.timer.word.max() - top).to_string(),
-                    ],
+                    p,
+                    &format!("{} segments", f.segments),
+                    (steps, flash, edge),
                 );
             }
         }
@@ -186,6 +148,43 @@ fn print_table(out: &mut String, profiles: &[Profile]) -> Result<(), Error> {
         }
     }
     Ok(())
+}
+
+/// One row of the figures table.
+fn table_row(out: &mut String, c: [&str; 13]) {
+    let _ = writeln!(
+        out,
+        "{:<21} {:<12} {:<20} {:>5} {:>8} {:>8} {:>7} {:>5} {:>8} {:>8} {:>8} {:>8} {:>6}",
+        c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8], c[9], c[10], c[11], c[12]
+    );
+}
+
+/// A row of a compact layout (segments, runs): its frequencies from the
+/// periods it plays; `(steps, flash bytes, largest edge error)`.
+fn compact_row(out: &mut String, p: &Profile, layout: &str, (steps, flash, edge): (u32, u32, f64)) {
+    let s = p.table.spec();
+    let periods = p.table.step_periods();
+    let hz = |ticks: Option<&u32>| s.timer.ticks_per_second() / f64::from(*ticks.unwrap_or(&1));
+    let top = periods.iter().copied().max().unwrap_or(0);
+    let total: u64 = periods.iter().map(|&t| u64::from(t)).sum();
+    table_row(
+        out,
+        [
+            &p.name,
+            s.curve.name(),
+            layout,
+            &steps.to_string(),
+            &format!("{:.1}", hz(periods.first())),
+            &format!("{:.1}", hz(periods.last())),
+            &format!("{:.4}", total as f64 / s.timer.ticks_per_second()),
+            &flash.to_string(),
+            "-",
+            "-",
+            "-",
+            &format!("{edge:.3}"),
+            &(s.timer.word.max() - top).to_string(),
+        ],
+    );
 }
 
 /// For each curve, every discretization and rounding against the continuous

@@ -202,11 +202,9 @@ impl Golden for Generated {
             }
             Generated::Segments(t) => {
                 let f = &t.figures;
-                header.extend([
-                    figure("steps", f.steps.to_string()),
-                    figure("flash_bytes", f.flash_bytes.to_string()),
-                ]);
-                header.extend(timing(
+                header.extend(compact(
+                    f.steps,
+                    f.flash_bytes,
                     f.duration_s,
                     f.max_edge_error_ticks,
                     f.total_error_ticks,
@@ -215,11 +213,9 @@ impl Golden for Generated {
             }
             Generated::Runs(t) => {
                 let f = &t.figures;
-                header.extend([
-                    figure("steps", f.steps.to_string()),
-                    figure("flash_bytes", f.flash_bytes.to_string()),
-                ]);
-                header.extend(timing(
+                header.extend(compact(
+                    f.steps,
+                    f.flash_bytes,
                     f.duration_s,
                     f.max_edge_error_ticks,
                     f.total_error_ticks,
@@ -234,6 +230,23 @@ impl Golden for Generated {
             ticks_per_step: spec.timer.ticks_per_step,
         }
     }
+}
+
+/// The figures of a compact layout (segments, runs): the steps it plays,
+/// its flash, then the timing.
+fn compact(
+    steps: u32,
+    flash_bytes: u32,
+    duration_s: f64,
+    max_edge: f64,
+    total_error: f64,
+) -> impl Iterator<Item = (String, String)> {
+    [
+        ("steps".to_string(), steps.to_string()),
+        ("flash_bytes".to_string(), flash_bytes.to_string()),
+    ]
+    .into_iter()
+    .chain(timing(duration_s, max_edge, total_error))
 }
 
 /// The figures every layout has: how long it plays and how far its edges
