@@ -82,3 +82,31 @@ fn the_runs_are_pinned() {
         &golden::timed(MICROSTEP, 10_000_000),
     );
 }
+
+/// The player plays the runs as their expansion: up, cruise, down, and a
+/// stop mid-ramp.
+#[test]
+fn the_player_plays_runs_as_their_expansion() {
+    use stepper_profiles::player::{Player, Ramp};
+    let expanded: Vec<u16> = runs::Expand::new(MICROSTEP).map(|p| p as u16).collect();
+    let len = expanded.len() as u32;
+    for (steps, stop_at) in [(2 * len + 500, None), (len, None), (3 * len, Some(5000))] {
+        let mut compressed = Player::new(Ramp::runs(MICROSTEP));
+        let mut per_step = Player::new(Ramp::steps(&expanded));
+        compressed.start(steps);
+        per_step.start(steps);
+        let mut k = 0;
+        loop {
+            if Some(k) == stop_at {
+                compressed.stop();
+                per_step.stop();
+            }
+            let (a, b) = (compressed.next_period(), per_step.next_period());
+            assert_eq!(a, b, "step {k} of a move of {steps}");
+            if a.is_none() {
+                break;
+            }
+            k += 1;
+        }
+    }
+}

@@ -3,6 +3,7 @@
 //! `PROPTEST_CASES` sets the number of cases (default 256 per property here).
 
 use profile_core::player::{Player, Ramp};
+use profile_core::runs::{Expand, Run as RunWords};
 use proptest::prelude::*;
 
 /// A non-increasing table (slow to fast), as generated tables are.
@@ -289,12 +290,39 @@ fn any_table(max_len: usize) -> impl Strategy<Value = Vec<u32>> {
     ]
 }
 
-/// A ramp description: a per-step table held `hold` steps per entry, or
-/// segments with counts from 0 (empty segments included).
+/// A ramp description: a per-step table held `hold` steps per entry,
+/// segments with counts from 0 (empty segments included), or compressed
+/// runs (empty runs included).
 #[derive(Clone, Debug)]
 enum Shape {
     Steps(Vec<u32>, u32),
     Segments(Vec<(u32, u32)>),
+    Runs(Vec<[u16; 5]>),
+}
+
+/// Random runs: counts from 0, periods from 1 to about 4000 ticks with any
+/// remainder, changing by up to 6 ticks a step.
+fn any_runs() -> impl Strategy<Value = Vec<[u16; 5]>> {
+    let run = (0u16..30, 1u32..3000, 0u32..65_536, -400_000i32..400_000);
+    proptest::collection::vec(run, 1..12).prop_map(|raw| {
+        raw.into_iter()
+            .map(|(count, ticks, frac, add)| {
+                let interval = (ticks << 16) | frac;
+                let end = i64::from(interval) + (i64::from(count.max(1)) - 1) * i64::from(add);
+                let add = if (1 << 16..4000 << 16).contains(&end) {
+                    add
+                } else {
+                    0
+                };
+                RunWords {
+                    count,
+                    interval,
+                    add,
+                }
+                .encode()
+            })
+            .collect()
+    })
 }
 
 fn shape() -> impl Strategy<Value = Shape> {
@@ -304,6 +332,7 @@ fn shape() -> impl Strategy<Value = Shape> {
         1 => (any_table(12), proptest::collection::vec(0u32..6, 12)).prop_map(|(t, counts)| {
             Shape::Segments(t.iter().zip(counts).map(|(&p, c)| (p, c)).collect())
         }),
+        1 => any_runs().prop_map(Shape::Runs),
     ]
 }
 
@@ -331,24 +360,46 @@ fn compare<W: TableWord + core::fmt::Debug + PartialEq>(
             .map(|&(p, c)| (W::from_ticks(p), W::from_ticks(c)))
             .collect()
     };
-    let (a_steps, a_pairs, d_steps, d_pairs) = match (accel, decel) {
-        (Shape::Steps(a, _), Shape::Steps(d, _)) => (words(a), vec![], words(d), vec![]),
-        (Shape::Steps(a, _), Shape::Segments(d)) => (words(a), vec![], vec![], pairs(d)),
-        (Shape::Segments(a), Shape::Steps(d, _)) => (vec![], pairs(a), words(d), vec![]),
-        (Shape::Segments(a), Shape::Segments(d)) => (vec![], pairs(a), vec![], pairs(d)),
+    // The model plays a compressed ramp as its expansion: the player must
+    // play the runs bit for bit as `runs::Expand` expands them.
+    let steps_of = |shape: &Shape| -> Vec<W> {
+        match shape {
+            Shape::Steps(t, _) => words(t),
+            Shape::Runs(r) => Expand::new(r).map(W::from_ticks).collect(),
+            Shape::Segments(_) => vec![],
+        }
     };
-    fn ramp<'t, W: TableWord>(shape: &Shape, steps: &'t [W], pairs: &'t [(W, W)]) -> Ramp<'t, W> {
+    let pairs_of = |shape: &Shape| match shape {
+        Shape::Segments(t) => pairs(t),
+        _ => vec![],
+    };
+    let (a_steps, a_pairs, d_steps, d_pairs) = (
+        steps_of(accel),
+        pairs_of(accel),
+        steps_of(decel),
+        pairs_of(decel),
+    );
+    fn ramp<'t, W: TableWord>(
+        shape: &'t Shape,
+        steps: &'t [W],
+        pairs: &'t [(W, W)],
+        planned: bool,
+    ) -> Ramp<'t, W> {
         match shape {
             Shape::Steps(_, hold) => Ramp::held(steps, *hold),
             Shape::Segments(_) => Ramp::segments(pairs),
+            Shape::Runs(r) if planned => Ramp::runs(r),
+            Shape::Runs(_) => Ramp::steps(steps),
         }
     }
-    let (ra, rd) = (
-        ramp(accel, &a_steps, &a_pairs),
-        ramp(decel, &d_steps, &d_pairs),
+    let mut planned = Player::with_decel(
+        ramp(accel, &a_steps, &a_pairs, true),
+        ramp(decel, &d_steps, &d_pairs, true),
     );
-    let mut planned = Player::with_decel(ra, rd);
-    let mut model = Reference::with_decel(ra, rd);
+    let mut model = Reference::with_decel(
+        ramp(accel, &a_steps, &a_pairs, false),
+        ramp(decel, &d_steps, &d_pairs, false),
+    );
     let mut steps = 0u64;
     for (i, op) in ops.iter().enumerate() {
         match *op {

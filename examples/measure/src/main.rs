@@ -24,6 +24,20 @@ mod profiles {
 
 use profiles::{exponential_segments, sigmoid_exact, sigmoid_orange};
 
+/// A long microstepped ramp, compressed: 1/16 steps, 100 to 3000 full
+/// steps/s at 10 000 full steps/s², every edge within a tick.
+static MICROSTEP_RUNS: &[[u16; 5]] = &stepper_profiles::period_table!(
+    curve = linear,
+    fmin = 1.6kHz,
+    fmax = 48kHz,
+    accel = 160_000,
+    timer_hz = 10MHz,
+    compress = 1,
+);
+
+/// Steps of the microstepped ramp.
+const MICROSTEP_LEN: u32 = 7192;
+
 /// Steps of the measured move: up the ramp, cruise, down the ramp.
 const UP: u32 = sigmoid_exact::LEN as u32;
 const CRUISE: u32 = 3000;
@@ -172,6 +186,12 @@ fn main() -> ! {
         "player, held x4 (sigmoid_orange)",
         Ramp::held(&sigmoid_orange::PERIODS, 4),
         (4 * sigmoid_orange::LEN as u32, 1000),
+        timer,
+    );
+    player_move(
+        "player, compressed runs (microstep, compress = 1)",
+        Ramp::runs(MICROSTEP_RUNS),
+        (MICROSTEP_LEN, 1000),
         timer,
     );
     player_move(

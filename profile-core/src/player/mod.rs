@@ -47,7 +47,7 @@ mod ramp;
 
 use crate::base::timer::TableWord;
 pub use axis::{Axis, Direction, Moving};
-use plan::{Plan, Run, Sides};
+use plan::{Plan, Run, RunState, Sides};
 pub use ramp::Ramp;
 
 /// Plays moves from an acceleration ramp and a deceleration ramp.
@@ -57,6 +57,8 @@ pub use ramp::Ramp;
 pub struct Player<'a, W> {
     /// The run being played: what is left of it.
     run: Run<'a, W>,
+    /// The run of a compressed ramp being played (`run` is then empty).
+    computed: RunState,
     /// The move's stretches, and the one being played.
     plan: Plan<'a, W>,
     /// The period played before the plan began, in ticks (0 at rest).
@@ -93,6 +95,7 @@ impl<'a, W: TableWord> Player<'a, W> {
             cap: accel.first_faster_than(decel_fastest),
             cruise: accel_last,
             run: Run::empty(),
+            computed: RunState::default(),
             before: 0,
             plan: Plan::EMPTY,
         }
@@ -114,6 +117,7 @@ impl<'a, W: TableWord> Player<'a, W> {
     fn follow(&mut self, plan: Plan<'a, W>, before: u32) {
         self.plan = plan;
         self.run = Run::empty();
+        self.computed = RunState::default();
         self.before = before;
         // The first run now, so that the first step plays at once.
         if let Some(run) = self.next_run() {
@@ -215,7 +219,7 @@ impl<'a, W: TableWord> Player<'a, W> {
         else {
             return (0, false);
         };
-        let played = s.total - s.count - self.run.left();
+        let played = s.total - s.count - self.run.left() - self.computed.left;
         (s.acc_after(played), s.decelerating)
     }
 
@@ -226,7 +230,7 @@ impl<'a, W: TableWord> Player<'a, W> {
         let Some(s) = stretches.get(self.plan.at) else {
             return self.before;
         };
-        let played = s.total - s.count - self.run.left();
+        let played = s.total - s.count - self.run.left() - self.computed.left;
         let (s, k) = match played {
             0 => match self.plan.at.checked_sub(1).and_then(|i| stretches.get(i)) {
                 Some(prev) => (prev, prev.total),
@@ -241,7 +245,7 @@ impl<'a, W: TableWord> Player<'a, W> {
 
     /// Steps left in the move.
     pub fn remaining(&self) -> u32 {
-        self.run.left() + self.plan.steps()
+        self.run.left() + self.computed.left + self.plan.steps()
     }
 
     /// `true` when the move has played all its steps.
@@ -283,6 +287,16 @@ impl<'a, W: TableWord> Player<'a, W> {
                 Run::Down(periods) => {
                     if let Some(&p) = periods.next_back() {
                         write(p);
+                        return true;
+                    }
+                    // A compressed ramp's run: an empty `Down` and the state.
+                    let r = &mut this.computed;
+                    if r.left > 0 {
+                        r.left -= 1;
+                        let x = r.frac.wrapping_add(r.interval);
+                        r.frac = x & 0xFFFF;
+                        r.interval = r.interval.wrapping_add(r.add);
+                        write(W::from_ticks(x >> 16));
                         return true;
                     }
                 }
@@ -357,24 +371,38 @@ impl<'a, W: TableWord> Player<'a, W> {
         } else {
             s.at.left_in_entry(&ramp, forward).min(s.count)
         };
+        let computed = match ramp {
+            Ramp::Runs(runs) => {
+                let (frac, interval, add) = s.at.run_state(runs, s.dir);
+                self.computed = RunState {
+                    left: n,
+                    frac,
+                    interval,
+                    add,
+                };
+                Some(Run::Down([].iter()))
+            }
+            _ => None,
+        };
         let period = match ramp {
             Ramp::Steps { periods, .. } => periods.get(s.at.entry as usize),
             Ramp::Segments(pairs) => pairs.get(s.at.entry as usize).map(|p| &p.0),
+            Ramp::Runs(_) => None,
         };
         // On to the next entry in the stretch's direction: to this entry's
         // last step that way, then one more.
         if s.dir != 0 && n < s.count {
+            s.at.jump_within(&ramp, n - 1, forward);
             if forward {
-                s.at.pos += n - 1;
-                s.at.within += n - 1;
                 s.at.forward(&ramp, u32::MAX);
             } else {
-                s.at.pos -= n - 1;
-                s.at.within -= n - 1;
                 s.at.backward(&ramp);
             }
         }
         s.count -= n;
+        if computed.is_some() {
+            return computed;
+        }
         Some(Run::Hold(period?, n))
     }
 }

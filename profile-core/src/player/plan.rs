@@ -24,6 +24,18 @@ pub(crate) enum Run<'a, W> {
     Up(slice::Iter<'a, W>),
 }
 
+/// Where a run of a compressed ramp stands: `left` steps to play, the
+/// next one's period `(frac + interval) >> 16`. Either way along the ramp
+/// the same recurrence plays it (see `Cursor::run_state`). The step path
+/// plays it when its `Up` run is empty, so that tables pay nothing for it.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct RunState {
+    pub(crate) left: u32,
+    pub(crate) frac: u32,
+    pub(crate) interval: u32,
+    pub(crate) add: u32,
+}
+
 impl<'a, W: TableWord> Run<'a, W> {
     /// A run with nothing to play.
     pub(crate) fn empty() -> Self {

@@ -1,6 +1,39 @@
 //! A ramp to play, and positions along it.
 
 use crate::base::timer::TableWord;
+use crate::table::runs::{RUN_FRACTION_BITS, RUN_START_FRACTION, Run};
+
+const FRACTION_MASK: u32 = (1 << RUN_FRACTION_BITS) - 1;
+
+/// Run `index` of `runs`, decoded.
+fn run_at(runs: &[[u16; 5]], index: u32) -> Option<Run> {
+    runs.get(index as usize).map(Run::decode)
+}
+
+/// `n (n - 1) / 2`, exact for any `n` a run count holds.
+fn triangle(n: u32) -> u32 {
+    ((n as u64 * n.saturating_sub(1) as u64) >> 1) as u32
+}
+
+/// A run's state `(frac, interval)` `n` steps later.
+fn ahead(frac: u32, interval: u32, add: u32, n: u32) -> (u32, u32) {
+    let frac = frac
+        .wrapping_add(n.wrapping_mul(interval))
+        .wrapping_add(triangle(n).wrapping_mul(add));
+    (
+        frac & FRACTION_MASK,
+        interval.wrapping_add(n.wrapping_mul(add)),
+    )
+}
+
+/// A run's state `(frac, interval)` `n` steps earlier.
+fn behind(frac: u32, interval: u32, add: u32, n: u32) -> (u32, u32) {
+    let start = interval.wrapping_sub(n.wrapping_mul(add));
+    let frac = frac
+        .wrapping_sub(n.wrapping_mul(start))
+        .wrapping_sub(triangle(n).wrapping_mul(add));
+    (frac & FRACTION_MASK, start)
+}
 
 /// A ramp to play: a table ordered from slow (rest) to fast.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -16,6 +49,9 @@ pub enum Ramp<'a, W> {
     /// The exponential-ramp article's layout: `(period, steps)` per segment,
     /// slowest first.
     Segments(&'a [(W, W)]),
+    /// A compressed table (`compress = E`): runs of fixed-point periods,
+    /// five words each (see [`runs`](crate::runs)), slowest first.
+    Runs(&'a [[u16; 5]]),
 }
 
 impl<'a, W: TableWord> Ramp<'a, W> {
@@ -34,6 +70,13 @@ impl<'a, W: TableWord> Ramp<'a, W> {
         Ramp::Segments(pairs)
     }
 
+    /// A compressed table: the runs `period_table!(.., compress = E)` or a
+    /// profile's `RUNS` holds. Played period for period as
+    /// [`runs::Expand`](crate::runs::Expand) plays them.
+    pub const fn runs(runs: &'a [[u16; 5]]) -> Self {
+        Ramp::Runs(runs)
+    }
+
     /// Steps the ramp takes from rest to its top speed.
     pub fn len_steps(&self) -> u32 {
         match *self {
@@ -43,6 +86,9 @@ impl<'a, W: TableWord> Ramp<'a, W> {
             Ramp::Segments(pairs) => pairs
                 .iter()
                 .fold(0u32, |n, &(_, c)| n.saturating_add(c.into_ticks())),
+            Ramp::Runs(runs) => runs
+                .iter()
+                .fold(0u32, |n, r| n.saturating_add(u32::from(r[0]))),
         }
     }
 
@@ -54,6 +100,20 @@ impl<'a, W: TableWord> Ramp<'a, W> {
 
     /// The shortest period of the ramp.
     pub(crate) fn fastest(&self) -> u32 {
+        if let Ramp::Runs(_) = self {
+            // Computed periods: every one played once.
+            let Some(mut c) = Cursor::at(self, 0) else {
+                return 0;
+            };
+            let last = self.len_steps().saturating_sub(1);
+            let mut fastest = u32::MAX;
+            loop {
+                fastest = fastest.min(c.period(self).into_ticks());
+                if !c.forward(self, last) {
+                    return fastest;
+                }
+            }
+        }
         match *self {
             Ramp::Steps { periods, .. } => periods.iter().map(|p| p.into_ticks()).min(),
             Ramp::Segments(pairs) => pairs
@@ -61,6 +121,7 @@ impl<'a, W: TableWord> Ramp<'a, W> {
                 .filter(|p| p.1.into_ticks() > 0)
                 .map(|p| p.0.into_ticks())
                 .min(),
+            Ramp::Runs(_) => None,
         }
         .unwrap_or(0)
     }
@@ -89,6 +150,10 @@ pub(crate) struct Cursor {
     pub(crate) pos: u32,
     pub(crate) entry: u32,
     pub(crate) within: u32,
+    /// On runs: the edges' sub-tick remainder before this step.
+    pub(crate) frac: u32,
+    /// On runs: this step's period, in fixed point.
+    pub(crate) interval: u32,
 }
 
 impl Cursor {
@@ -96,6 +161,8 @@ impl Cursor {
         pos: 0,
         entry: 0,
         within: 0,
+        frac: 0,
+        interval: 0,
     };
 
     /// The cursor at step `pos`, or `None` past the end or on an empty ramp.
@@ -108,7 +175,12 @@ impl Cursor {
                 } else {
                     (pos / hold, pos % hold)
                 };
-                ((entry as usize) < periods.len()).then_some(Cursor { pos, entry, within })
+                ((entry as usize) < periods.len()).then_some(Cursor {
+                    pos,
+                    entry,
+                    within,
+                    ..Cursor::ZERO
+                })
             }
             Ramp::Segments(pairs) => {
                 let mut start = 0u32;
@@ -119,8 +191,34 @@ impl Cursor {
                             pos,
                             entry: i as u32,
                             within: pos - start,
+                            ..Cursor::ZERO
                         });
                     }
+                    start = start.saturating_add(count);
+                    if start > pos {
+                        return None;
+                    }
+                }
+                None
+            }
+            Ramp::Runs(runs) => {
+                // The remainder carried through every run before.
+                let (mut start, mut frac) = (0u32, RUN_START_FRACTION);
+                for (i, words) in runs.iter().enumerate() {
+                    let run = Run::decode(words);
+                    let count = u32::from(run.count);
+                    if pos - start < count {
+                        let within = pos - start;
+                        let (frac, interval) = ahead(frac, run.interval, run.add as u32, within);
+                        return Some(Cursor {
+                            pos,
+                            entry: i as u32,
+                            within,
+                            frac,
+                            interval,
+                        });
+                    }
+                    frac = ahead(frac, run.interval, run.add as u32, count).0;
                     start = start.saturating_add(count);
                     if start > pos {
                         return None;
@@ -136,6 +234,9 @@ impl Cursor {
         let found = match *ramp {
             Ramp::Steps { periods, .. } => periods.get(self.entry as usize).copied(),
             Ramp::Segments(pairs) => pairs.get(self.entry as usize).map(|p| p.0),
+            Ramp::Runs(_) => Some(W::from_ticks(
+                self.frac.wrapping_add(self.interval) >> RUN_FRACTION_BITS,
+            )),
         };
         found.unwrap_or(W::from_ticks(0))
     }
@@ -151,6 +252,7 @@ impl Cursor {
             Ramp::Segments(pairs) => pairs
                 .get(self.entry as usize)
                 .map_or(0, |p| p.1.into_ticks()),
+            Ramp::Runs(runs) => run_at(runs, self.entry).map_or(0, |r| u32::from(r.count)),
         };
         size - self.within
     }
@@ -163,6 +265,24 @@ impl Cursor {
         self.pos += 1;
         self.within += 1;
         match *ramp {
+            Ramp::Runs(runs) => {
+                let run = run_at(runs, self.entry);
+                let add = run.map_or(0, |r| r.add as u32);
+                (self.frac, self.interval) = ahead(self.frac, self.interval, add, 1);
+                if self.within >= run.map_or(u32::MAX, |r| u32::from(r.count)) {
+                    // On to the next run that holds a step.
+                    self.within = 0;
+                    loop {
+                        self.entry += 1;
+                        match run_at(runs, self.entry) {
+                            Some(r) if r.count == 0 => continue,
+                            Some(r) => self.interval = r.interval,
+                            None => {}
+                        }
+                        break;
+                    }
+                }
+            }
             Ramp::Steps { hold, .. } => {
                 if self.within >= hold.max(1) {
                     self.within = 0;
@@ -190,6 +310,10 @@ impl Cursor {
             return false;
         }
         self.pos -= 1;
+        if let Ramp::Runs(runs) = *ramp {
+            self.run_backward(runs);
+            return true;
+        }
         if self.within > 0 {
             self.within -= 1;
             return true;
@@ -199,6 +323,7 @@ impl Cursor {
                 self.entry = self.entry.saturating_sub(1);
                 self.within = hold.max(1) - 1;
             }
+            Ramp::Runs(_) => {}
             Ramp::Segments(pairs) => {
                 // The previous segment that holds a step.
                 while self.entry > 0 {
@@ -214,5 +339,75 @@ impl Cursor {
             }
         }
         true
+    }
+
+    /// One step back on runs: within the run, or to the last step of the
+    /// previous run that holds one.
+    fn run_backward(&mut self, runs: &[[u16; 5]]) {
+        if self.within > 0 {
+            self.within -= 1;
+            let add = run_at(runs, self.entry).map_or(0, |r| r.add as u32);
+            (self.frac, self.interval) = behind(self.frac, self.interval, add, 1);
+            return;
+        }
+        while self.entry > 0 {
+            self.entry -= 1;
+            let Some(run) = run_at(runs, self.entry) else {
+                break;
+            };
+            if run.count > 0 {
+                let last = u32::from(run.count) - 1;
+                self.within = last;
+                self.interval = run.interval.wrapping_add(last.wrapping_mul(run.add as u32));
+                self.frac = self.frac.wrapping_sub(self.interval) & FRACTION_MASK;
+                break;
+            }
+        }
+    }
+
+    /// Moves `k` steps within the cursor's entry, towards the fast end
+    /// (`forward`) or the slow end; `k` is less than
+    /// [`left_in_entry`](Self::left_in_entry).
+    pub(crate) fn jump_within<W: TableWord>(&mut self, ramp: &Ramp<'_, W>, k: u32, forward: bool) {
+        if let Ramp::Runs(runs) = *ramp {
+            let add = run_at(runs, self.entry).map_or(0, |r| r.add as u32);
+            (self.frac, self.interval) = if forward {
+                ahead(self.frac, self.interval, add, k)
+            } else {
+                behind(self.frac, self.interval, add, k)
+            };
+        }
+        if forward {
+            self.pos += k;
+            self.within += k;
+        } else {
+            self.pos -= k;
+            self.within -= k;
+        }
+    }
+
+    /// The run under the cursor from here towards the fast end (`dir` 1),
+    /// the slow end (-1), or held (0), as `(frac, interval, add)` for the
+    /// forward recurrence `x = frac + interval; period = x >> 16; frac = x
+    /// & 0xFFFF; interval += add`. Only for a compressed ramp.
+    ///
+    /// Backwards, the periods are the ceiling differences of the reflected
+    /// edges, which the same recurrence gives from the remainder's
+    /// complement after this step, this step's interval and `-add`.
+    pub(crate) fn run_state(&self, runs: &[[u16; 5]], dir: i8) -> (u32, u32, u32) {
+        let add = run_at(runs, self.entry).map_or(0, |r| r.add as u32);
+        match dir {
+            1 => (self.frac, self.interval, add),
+            -1 => {
+                let end = self.frac.wrapping_add(self.interval);
+                let frac = FRACTION_MASK.wrapping_sub(end) & FRACTION_MASK;
+                (frac, self.interval, add.wrapping_neg())
+            }
+            _ => {
+                // One period, again and again: no remainder, no change.
+                let period = self.frac.wrapping_add(self.interval) >> RUN_FRACTION_BITS;
+                (0, period << RUN_FRACTION_BITS, 0)
+            }
+        }
     }
 }
