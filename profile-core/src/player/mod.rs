@@ -365,13 +365,16 @@ impl<'a, W: TableWord> Player<'a, W> {
         }
         let ramp = if s.decel { self.decel } else { self.accel };
         let forward = s.dir > 0;
-        // A held or segment table: one entry at a time.
+        // A held, segment or compressed table: one entry (run) at a time.
         let n = if s.dir == 0 {
             s.count
         } else {
             s.at.left_in_entry(&ramp, forward).min(s.count)
         };
-        let computed = match ramp {
+        let entry = s.at.entry as usize;
+        let run = match ramp {
+            Ramp::Steps { periods, .. } => periods.get(entry).map(|p| Run::Hold(p, n)),
+            Ramp::Segments(pairs) => pairs.get(entry).map(|p| Run::Hold(&p.0, n)),
             Ramp::Runs(runs) => {
                 let (frac, interval, add) = s.at.run_state(runs, s.dir);
                 self.computed = RunState {
@@ -380,14 +383,9 @@ impl<'a, W: TableWord> Player<'a, W> {
                     interval,
                     add,
                 };
+                // The step path plays `computed` behind an empty `Down`.
                 Some(Run::Down([].iter()))
             }
-            _ => None,
-        };
-        let period = match ramp {
-            Ramp::Steps { periods, .. } => periods.get(s.at.entry as usize),
-            Ramp::Segments(pairs) => pairs.get(s.at.entry as usize).map(|p| &p.0),
-            Ramp::Runs(_) => None,
         };
         // On to the next entry in the stretch's direction: to this entry's
         // last step that way, then one more.
@@ -400,9 +398,6 @@ impl<'a, W: TableWord> Player<'a, W> {
             }
         }
         s.count -= n;
-        if computed.is_some() {
-            return computed;
-        }
-        Some(Run::Hold(period?, n))
+        run
     }
 }

@@ -1,7 +1,7 @@
 //! A ramp to play, and positions along it.
 
 use crate::base::timer::TableWord;
-use crate::table::runs::{RUN_FRACTION_BITS, RUN_START_FRACTION, Run};
+use crate::table::runs::{Expand, RUN_FRACTION_BITS, RUN_START_FRACTION, Run};
 
 const FRACTION_MASK: u32 = (1 << RUN_FRACTION_BITS) - 1;
 
@@ -100,20 +100,6 @@ impl<'a, W: TableWord> Ramp<'a, W> {
 
     /// The shortest period of the ramp.
     pub(crate) fn fastest(&self) -> u32 {
-        if let Ramp::Runs(_) = self {
-            // Computed periods: every one played once.
-            let Some(mut c) = Cursor::at(self, 0) else {
-                return 0;
-            };
-            let last = self.len_steps().saturating_sub(1);
-            let mut fastest = u32::MAX;
-            loop {
-                fastest = fastest.min(c.period(self).into_ticks());
-                if !c.forward(self, last) {
-                    return fastest;
-                }
-            }
-        }
         match *self {
             Ramp::Steps { periods, .. } => periods.iter().map(|p| p.into_ticks()).min(),
             Ramp::Segments(pairs) => pairs
@@ -121,7 +107,7 @@ impl<'a, W: TableWord> Ramp<'a, W> {
                 .filter(|p| p.1.into_ticks() > 0)
                 .map(|p| p.0.into_ticks())
                 .min(),
-            Ramp::Runs(_) => None,
+            Ramp::Runs(runs) => Expand::new(runs).min(),
         }
         .unwrap_or(0)
     }
