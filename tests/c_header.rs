@@ -625,6 +625,7 @@ fn split_c_files_define_the_tables_once_where_the_user_places_them() {
             .filter(|l| {
                 l.ends_with(&format!(" {upper}_PERIODS"))
                     || l.ends_with(&format!(" {upper}_SEGMENTS"))
+                    || l.ends_with(&format!(" {upper}_RUNS"))
             })
             .collect();
         assert_eq!(lines.len(), 1, "{upper}: {symbols}");

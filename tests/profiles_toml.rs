@@ -200,6 +200,76 @@ macro_rules! segments {
     }};
 }
 
+/// A compressed profile: `RUNS` and its constants, three ways.
+macro_rules! runs {
+    ($profiles:expr, $name:ident) => {{
+        let name = stringify!($name);
+        let Generated::Runs(table) = find($profiles, name) else {
+            panic!("`{name}`: the macro emitted `RUNS` but the file holds another layout");
+        };
+        let f = &table.figures;
+
+        let count: usize = $name::RUN_COUNT;
+        let len: usize = $name::LEN;
+        let timer_hz: u32 = $name::TIMER_HZ;
+        let ticks_per_step: u8 = $name::TICKS_PER_STEP;
+        let total_ticks: u64 = $name::TOTAL_TICKS;
+        let edge: f64 = $name::MAX_EDGE_ERROR_TICKS;
+
+        assert_eq!(
+            $name::RUNS.as_slice(),
+            table.runs.as_slice(),
+            "`{name}`: macro RUNS vs loaded table"
+        );
+        assert_eq!(count, f.runs as usize, "`{name}`: RUN_COUNT vs figures");
+        assert_eq!(len, f.steps as usize, "`{name}`: LEN");
+        assert_eq!(timer_hz, table.spec.timer.timer_hz, "`{name}`: TIMER_HZ");
+        assert_eq!(
+            ticks_per_step, table.spec.timer.ticks_per_step,
+            "`{name}`: TICKS_PER_STEP"
+        );
+        assert_eq!(total_ticks, f.total_ticks, "`{name}`: TOTAL_TICKS");
+        assert_eq!(
+            $name::DURATION_S.to_bits(),
+            f.duration_s.to_bits(),
+            "`{name}`: DURATION_S"
+        );
+        assert_eq!(
+            edge.to_bits(),
+            f.max_edge_error_ticks.to_bits(),
+            "`{name}`: MAX_EDGE_ERROR_TICKS"
+        );
+        assert!(
+            edge <= f.tolerance_ticks,
+            "`{name}`: largest edge error {edge} above `compress = {}`",
+            f.tolerance_ticks
+        );
+
+        let played: Vec<u32> = profile_core::runs::Expand::new(&$name::RUNS).collect();
+        assert_eq!(played.len(), len, "`{name}`: LEN is the sum of the counts");
+        assert_eq!(
+            played.iter().map(|&p| u64::from(p)).sum::<u64>(),
+            total_ticks,
+            "`{name}`: TOTAL_TICKS is the sum of the played periods"
+        );
+
+        let again = table
+            .spec
+            .run_table(f.tolerance_ticks)
+            .unwrap_or_else(|e| panic!("`{name}`: Spec::run_table: {e}"));
+        assert_eq!(
+            again.runs.as_slice(),
+            $name::RUNS.as_slice(),
+            "`{name}`: Spec::run_table vs macro RUNS"
+        );
+        assert_eq!(
+            &again.figures, f,
+            "`{name}`: Spec::run_table figures vs loaded figures"
+        );
+        name
+    }};
+}
+
 #[test]
 fn every_profile_three_ways() {
     let profiles = loaded();
@@ -215,6 +285,8 @@ fn every_profile_three_ways() {
         segments!(p, exponential_segments),
         steps!(p, linear_integer),
         steps!(p, linear_exact),
+        steps!(p, microstep),
+        runs!(p, microstep_runs),
         steps!(p, three_stage),
         steps!(p, jerk_limited),
     ];

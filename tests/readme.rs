@@ -27,3 +27,24 @@ fn the_step_interrupt_example_is_the_file_ci_builds() {
         "the README's step interrupt differs from examples/firmware/examples/step_interrupt.rs"
     );
 }
+
+/// Every figure the README shows is in `docs/` (the README links them by
+/// their address on the main branch), and every figure there is shown.
+#[test]
+fn the_readme_figures_are_in_docs() {
+    let readme = fs::read_to_string(root().join("README.md")).unwrap();
+    let prefix = "https://raw.githubusercontent.com/stepper-profiles/stepper-profiles/main/docs/";
+    let mut shown: Vec<&str> = readme
+        .split(prefix)
+        .skip(1)
+        .map(|rest| rest.split(')').next().unwrap())
+        .collect();
+    shown.sort_unstable();
+    shown.dedup();
+    let mut files: Vec<String> = fs::read_dir(root().join("docs"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    files.sort_unstable();
+    assert_eq!(shown, files);
+}

@@ -3,12 +3,12 @@
 
 use std::path::{Path, PathBuf};
 
-use plotters::style::RGBColor;
+use plotters::style::{BLACK, RGBColor};
 use profile_core::build::Profiles;
 use profile_core::emit::Profile;
-use profile_core::{Discretization, Generated, Table};
+use profile_core::{Discretization, Generated, Spec, Table};
 
-use crate::plots::{self, Series};
+use crate::plots::{self, Line, Series};
 
 /// The S-curve article's four example curves, in the article's colours.
 const ARTICLE: [(&str, RGBColor); 4] = [
@@ -71,15 +71,79 @@ fn write_torque_plot(p: &Profile, path: &Path) -> Result<(), Box<dyn std::error:
     plots::torque(path, &p.name, &edges, motor.torque_curve.points())
 }
 
+/// Each pulse edge of `periods` against the curve's, in ticks, by step.
+fn edge_errors(spec: &Spec, periods: &[u32]) -> Result<Vec<(f64, f64)>, profile_core::Error> {
+    let scale = spec.timer.ticks_per_second();
+    let mut played = 0u64;
+    let mut errors = Vec::with_capacity(periods.len());
+    spec.for_each_exact_edge(|k, t| {
+        if let Some(&p) = periods.get(k as usize - 1) {
+            played += u64::from(p);
+            errors.push((f64::from(k), played as f64 - t * scale));
+        }
+    })?;
+    Ok(errors)
+}
+
+/// A compact profile (runs or segments) over its curve: `NAME_edges.svg`.
+fn write_compact_plot(
+    p: &Profile,
+    color: RGBColor,
+    path: &Path,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let spec = p.table.spec();
+    let (layout, bound) = match &p.table {
+        Generated::Runs(t) => (
+            format!("{} runs", t.figures.runs),
+            t.figures.max_edge_error_ticks,
+        ),
+        Generated::Segments(t) => (
+            format!("{} segments", t.figures.segments),
+            t.figures.max_edge_error_ticks,
+        ),
+        Generated::Steps(_) => return Ok(()),
+    };
+    let compact = p.table.step_periods();
+    let per_step = spec.table()?.periods;
+    let mut edges = vec![0.0];
+    spec.for_each_exact_edge(|_, t| edges.push(t))?;
+    let curve: Vec<(f64, f64)> = edges
+        .windows(2)
+        .map(|w| (w[0], 1.0 / (w[1] - w[0])))
+        .collect();
+    let played = Series::from_periods(&layout, color, &compact, spec.timer.ticks_per_second());
+    let line = |label: &str, color: RGBColor, points: Vec<(f64, f64)>| Line {
+        label: label.to_string(),
+        color,
+        points,
+    };
+    let last = compact.len() as f64;
+    let frequency = [
+        line("curve", BLACK, curve),
+        line(&layout, color, played.steps),
+    ];
+    let errors = [
+        line(
+            &format!("bound: {bound:.3} ticks"),
+            RGBColor(0xb0, 0xb0, 0xb0),
+            vec![(1.0, bound), (last, bound), (last, -bound), (1.0, -bound)],
+        ),
+        line("one entry per step", BLACK, edge_errors(spec, &per_step)?),
+        line(&layout, color, edge_errors(spec, &compact)?),
+    ];
+    plots::compact(path, &p.name, &frequency, &errors)
+}
+
 fn series(label: &str, color: RGBColor, t: &Table) -> Series {
     let tps = t.spec.timer.timer_hz as f64 / t.spec.timer.ticks_per_step as f64;
     Series::from_periods(label, color, &t.periods, tps)
 }
 
-/// Writes `NAME.svg` (frequency and acceleration against time), `NAME.csv`
-/// (step, period, edge time, frequency) and, for a profile that names a
-/// motor, `NAME_torque.svg` for every profile, and `overview.svg`, into
-/// `out`, creating it; returns the files written.
+/// Writes, for every profile, `NAME.svg` (frequency and acceleration against
+/// time) and `NAME.csv` (step, period, edge time, frequency); for a compact
+/// layout (runs, segments) `NAME_edges.svg` (over the curve, with every
+/// edge's error); for a profile that names a motor `NAME_torque.svg`; and
+/// `overview.svg`, into `out`, creating it. Returns the files written.
 pub fn write_plots(
     profiles: &Profiles,
     out: &Path,
@@ -103,6 +167,11 @@ pub fn write_plots(
         let csv_path = out.join(format!("{}.csv", p.name));
         std::fs::write(&csv_path, csv)?;
         written.push(csv_path);
+        if !matches!(p.table, Generated::Steps(_)) {
+            let edges = out.join(format!("{}_edges.svg", p.name));
+            write_compact_plot(p, color, &edges)?;
+            written.push(edges);
+        }
         if p.motor.is_some() {
             let torque = out.join(format!("{}_torque.svg", p.name));
             write_torque_plot(p, &torque)?;
@@ -122,7 +191,8 @@ pub fn write_plots(
 }
 
 /// The README's figures: the S-curve article's four example calls, three
-/// discretizations of one curve, and the motor check of the worked example.
+/// discretizations of one curve, the motor check of the worked example and
+/// the compressed microstep ramp over its curve.
 pub fn write_docs(profiles: &Profiles, docs: &Path) -> Result<(), Box<dyn std::error::Error>> {
     std::fs::create_dir_all(docs)?;
     let calls = [
@@ -184,5 +254,16 @@ pub fn write_docs(profiles: &Profiles, docs: &Path) -> Result<(), Box<dyn std::e
         return Err("profile `jerk_limited` with a motor is missing from the file".into());
     };
     write_torque_plot(worked, &docs.join("motor_torque.svg"))?;
+    // The compressed microstep ramp over its curve.
+    let colors = colors(profiles);
+    let Some((compressed, &color)) = profiles
+        .profiles()
+        .iter()
+        .zip(&colors)
+        .find(|(p, _)| p.name == "microstep_runs")
+    else {
+        return Err("profile `microstep_runs` is missing from the file".into());
+    };
+    write_compact_plot(compressed, color, &docs.join("compressed_edges.svg"))?;
     Ok(())
 }

@@ -292,6 +292,35 @@ pub fn overlay(path: &Path, title: &str, series: &[Series], by_step: bool) -> Pl
     Ok(())
 }
 
+/// A compact layout (runs or segments) over the curve it stands for:
+/// frequency against time for both, and every pulse edge's distance from
+/// the curve's, for the compact layout and the table of one entry per step.
+/// `frequency` and `edges` are lines of `(time in s, Hz)` and
+/// `(step, ticks)`.
+pub fn compact(path: &Path, title: &str, frequency: &[Line], edges: &[Line]) -> PlotResult {
+    let root = SVGBackend::new(path, (900, 840)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let areas = root.split_evenly((2, 1));
+    chart_lines(
+        &areas[0],
+        &format!("{title}: frequency against time"),
+        "time (s)",
+        "step frequency (Hz)",
+        frequency,
+        Some(SeriesLabelPosition::LowerRight),
+    )?;
+    chart_lines(
+        &areas[1],
+        &format!("{title}: pulse edge against the curve's"),
+        "step",
+        "edge error (ticks)",
+        edges,
+        Some(SeriesLabelPosition::UpperRight),
+    )?;
+    root.present()?;
+    Ok(())
+}
+
 /// Tables side by side, each on its own time axis.
 pub fn side_by_side(path: &Path, title: &str, series: &[Series]) -> PlotResult {
     let root = SVGBackend::new(path, (1200, 480)).into_drawing_area();

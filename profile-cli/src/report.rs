@@ -146,8 +146,46 @@ fn print_table(out: &mut String, profiles: &[Profile]) -> Result<(), Error> {
         if let Some(note) = start_note(&p.table) {
             let _ = writeln!(out, "note: {}: {note}", p.name);
         }
+        if let Some(note) = compact_note(&p.table) {
+            let _ = writeln!(out, "note: {}: {note}", p.name);
+        }
     }
     Ok(())
+}
+
+/// A compact layout's flash against one entry per step, and its edge error
+/// against what it was asked for.
+fn compact_note(table: &Generated) -> Option<String> {
+    let (layout, flash, per_step, edge, asked) = match table {
+        Generated::Steps(_) => return None,
+        Generated::Runs(t) => {
+            let f = &t.figures;
+            let asked = format!(" (`compress = {}`)", f.tolerance_ticks);
+            (
+                format!("{} runs", f.runs),
+                f.flash_bytes,
+                f.per_step_flash_bytes,
+                f.max_edge_error_ticks,
+                asked,
+            )
+        }
+        Generated::Segments(t) => {
+            let f = &t.figures;
+            let layout = format!("{} segments", f.segments);
+            (
+                layout,
+                f.flash_bytes,
+                f.per_step_flash_bytes,
+                f.max_edge_error_ticks,
+                String::new(),
+            )
+        }
+    };
+    Some(format!(
+        "{layout} take {flash} bytes of flash against {per_step} for one entry per step \
+         ({:.1} times less); every pulse edge is within {edge:.3} ticks of the curve{asked}.",
+        f64::from(per_step) / f64::from(flash.max(1))
+    ))
 }
 
 /// One row of the figures table.

@@ -70,7 +70,7 @@ fn check_passes_a_good_file_and_fails_a_bad_one_with_the_caret() {
     let shipped = shipped.to_str().unwrap();
     let good = run(&dir, &["check", shipped]);
     assert!(good.status.success(), "{}", text(&good.stderr));
-    assert!(text(&good.stdout).ends_with("profiles.toml: 11 profiles, no mistakes\n"));
+    assert!(text(&good.stdout).ends_with("profiles.toml: 13 profiles, no mistakes\n"));
 
     let bad = run(&dir, &["check", "bad.toml"]);
     assert_eq!(bad.status.code(), Some(1));
@@ -80,7 +80,7 @@ fn check_passes_a_good_file_and_fails_a_bad_one_with_the_caret() {
     // Every file is checked; one bad file fails the run.
     let both = run(&dir, &["check", shipped, "bad.toml"]);
     assert_eq!(both.status.code(), Some(1));
-    assert!(text(&both.stdout).contains("11 profiles, no mistakes"));
+    assert!(text(&both.stdout).contains("13 profiles, no mistakes"));
     assert_eq!(text(&both.stderr), BAD_MESSAGE);
 
     let missing = run(&dir, &["check", "nowhere.toml"]);
@@ -187,8 +187,9 @@ fn plot_writes_an_svg_and_a_csv_per_profile() {
     let file = shipped();
     let out = run(&dir, &["plot", file.to_str().unwrap(), "-o", "figures"]);
     assert!(out.status.success(), "{}", text(&out.stderr));
-    // 11 profiles: SVG and CSV each, two torque plots, the overview.
-    assert_eq!(text(&out.stdout), "wrote 25 files to figures\n");
+    // 13 profiles: SVG and CSV each, two torque plots, two compact layouts
+    // over their curves, the overview.
+    assert_eq!(text(&out.stdout), "wrote 31 files to figures\n");
     for p in profiles.profiles() {
         let svg = fs::read_to_string(dir.join(format!("figures/{}.svg", p.name))).unwrap();
         assert!(svg.starts_with("<svg"), "{}", p.name);
@@ -206,6 +207,25 @@ fn plot_writes_an_svg_and_a_csv_per_profile() {
             "{}",
             p.name
         );
+        let edges = dir.join(format!("figures/{}_edges.svg", p.name));
+        assert_eq!(
+            edges.exists(),
+            !matches!(p.table, profile_core::Generated::Steps(_)),
+            "{}",
+            p.name
+        );
+    }
+    // The compressed ramp over the curve, its edges against the bound and
+    // against the table of one entry per step.
+    let svg = fs::read_to_string(dir.join("figures/microstep_runs_edges.svg")).unwrap();
+    for label in [
+        "microstep_runs: frequency against time",
+        "microstep_runs: pulse edge against the curve&apos;s",
+        "97 runs",
+        "bound: 1.000 ticks",
+        "one entry per step",
+    ] {
+        assert!(svg.contains(label), "{label}");
     }
     assert!(dir.join("figures/overview.svg").exists());
 }
@@ -250,6 +270,24 @@ fn report_prints_parameters_with_units_and_says_when_a_table_starts_far_above_fm
     assert!(text(&out.stdout).ends_with("\nwrote 4 files to out\n"));
     assert!(dir.join("out/profiles.h").exists());
     assert!(dir.join("out/slow_start.svg").exists());
+}
+
+#[test]
+fn report_gives_a_compact_layout_flash_against_one_entry_per_step() {
+    let dir = work_dir("report_compact");
+    let out = run(&dir, &["report", shipped().to_str().unwrap()]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let report = text(&out.stdout);
+    for note in [
+        "note: microstep_runs: 97 runs take 970 bytes of flash against 14384 for one entry per \
+         step (14.8 times less); every pulse edge is within 1.000 ticks of the curve \
+         (`compress = 1`).\n",
+        "note: exponential_segments: 8 segments take 32 bytes of flash against 240 for one \
+         entry per step (7.5 times less); every pulse edge is within 421.621 ticks of the \
+         curve.\n",
+    ] {
+        assert!(report.contains(note), "{report}");
+    }
 }
 
 #[test]

@@ -6,7 +6,9 @@ use cortex_m::peripheral::SYST;
 use cortex_m_semihosting::hprintln;
 use stepper_profiles::player::{Player, Ramp};
 
-use crate::profiles::{exponential_segments, sigmoid_exact, sigmoid_orange};
+use stepper_profiles::{Curve, Linear, LinearExtent, Spec, Timer};
+
+use crate::profiles::{exponential_segments, microstep_runs, sigmoid_exact, sigmoid_orange};
 use crate::step::{self, Stepper};
 use crate::{DECEL, Report};
 
@@ -17,6 +19,18 @@ pub enum Table<'a> {
     Steps(&'a [u16], u32),
     /// `(period, steps)` per segment.
     Segments(&'a [(u16, u16)]),
+    /// Compressed runs `[count, interval_hi, interval_lo, add_hi, add_lo]`.
+    Runs(&'a [[u16; 5]]),
+}
+
+/// Edge `j` of a run that starts at the 16.16 remainder `frac`, in 16.16
+/// ticks from the run's start, in closed form: `frac + j·interval +
+/// add·j(j-1)/2` (period `j` is the difference of the whole ticks of edges
+/// `j + 1` and `j`).
+fn run_edge(run: &[u16; 5], frac: i64, j: i64) -> i64 {
+    let interval = (i64::from(run[1]) << 16) | i64::from(run[2]);
+    let add = i64::from(((u32::from(run[3]) << 16) | u32::from(run[4])) as i32);
+    frac + j * interval + add * j * (j - 1) / 2
 }
 
 impl<'a> Table<'a> {
@@ -26,6 +40,7 @@ impl<'a> Table<'a> {
             Table::Steps(periods, 1) => Ramp::steps(periods),
             Table::Steps(periods, hold) => Ramp::held(periods, hold),
             Table::Segments(pairs) => Ramp::segments(pairs),
+            Table::Runs(runs) => Ramp::runs(runs),
         }
     }
 
@@ -34,6 +49,7 @@ impl<'a> Table<'a> {
         match self {
             Table::Steps(periods, hold) => periods.len() as u32 * hold,
             Table::Segments(pairs) => pairs.iter().map(|&(_, n)| u32::from(n)).sum(),
+            Table::Runs(runs) => runs.iter().map(|r| u32::from(r[0])).sum(),
         }
     }
 
@@ -50,6 +66,22 @@ impl<'a> Table<'a> {
                     }
                 }
                 panic!("step {} is past the segment table", pos)
+            }
+            Table::Runs(runs) => {
+                // The first run starts half a tick in.
+                let (mut frac, mut start) = (1i64 << 15, 0u32);
+                for run in runs {
+                    let count = u32::from(run[0]);
+                    if pos < start + count {
+                        let j = i64::from(pos - start);
+                        let period =
+                            (run_edge(run, frac, j + 1) >> 16) - (run_edge(run, frac, j) >> 16);
+                        return period as u16;
+                    }
+                    frac = run_edge(run, frac, i64::from(count)) & 0xFFFF;
+                    start += count;
+                }
+                panic!("step {} is past the runs", pos)
             }
         }
     }
@@ -331,7 +363,7 @@ impl Expect {
 /// Every move the firmware plays, with what it must amount to: a
 /// trapezoid, a triangle, stops, a held ramp, the diffused default table,
 /// an asymmetric move, cruise changes and a segment table.
-fn scenarios() -> [Scenario<'static>; 11] {
+fn scenarios() -> [Scenario<'static>; 13] {
     // Monotone tables first: the C-compatible orange S-curve (truncated, so
     // its periods never rise).
     let o: &'static [u16] = &sigmoid_orange::PERIODS;
@@ -391,6 +423,10 @@ fn scenarios() -> [Scenario<'static>; 11] {
     let segments = Table::Segments(pairs);
     let s_len = exponential_segments::LEN as u32;
     let fastest = pairs[exponential_segments::SEGMENT_COUNT - 1].0;
+    // Compressed runs: the 1/16-step ramp, 97 runs for 7 192 steps.
+    let runs = Table::Runs(&microstep_runs::RUNS);
+    let r_len = microstep_runs::LEN as u32;
+    let r_top = (0..r_len).map(|p| runs.at(p)).min().unwrap_or(0);
     [
         Scenario {
             play: mv(
@@ -560,7 +596,77 @@ fn scenarios() -> [Scenario<'static>; 11] {
                 stops: true,
             },
         },
+        Scenario {
+            play: mv(RUNS_MOVE, runs, runs, 2 * r_len + 200, &[]),
+            expect: Expect {
+                top: Some(r_top),
+                ..Expect::exact(
+                    2 * r_len + 200,
+                    2 * microstep_runs::TOTAL_TICKS + 200 * u64::from(r_top),
+                    runs.at(0),
+                )
+            },
+        },
+        Scenario {
+            play: mv(
+                "runs, stop while accelerating",
+                runs,
+                runs,
+                2 * r_len,
+                &[(3000, Event::Stop)],
+            ),
+            expect: Expect {
+                steps: (3001, 2 * r_len),
+                ticks: None,
+                top: None,
+                end: runs.at(0),
+                stops: true,
+            },
+        },
     ]
+}
+
+/// The move whose accelerating edges are also checked against the curve.
+const RUNS_MOVE: &str = "runs (microstep_runs)";
+
+/// Every accelerating pulse edge of the compressed move against the exact
+/// curve's, computed here on the target: within the `compress` the table
+/// was built for.
+fn check_edges(log: &[u16], report: &mut Report) {
+    let spec = Spec::new(
+        Curve::Linear(Linear {
+            fmin: 1600.0,
+            fmax: 48_000.0,
+            extent: LinearExtent::Accel(160_000.0),
+        }),
+        Timer::new(microstep_runs::TIMER_HZ),
+    );
+    let scale = spec.timer.ticks_per_second();
+    let (mut played, mut worst, mut edges) = (0u64, 0.0f64, 0u32);
+    let result = spec.for_each_exact_edge(|k, t| {
+        if let Some(&p) = log.get(k as usize - 1) {
+            played += u64::from(p);
+            let error = played as f64 - t * scale;
+            worst = worst.max(if error < 0.0 { -error } else { error });
+            edges += 1;
+        }
+    });
+    report.equal("exact edges of microstep_runs", result.is_ok().into(), 1);
+    report.equal("edges checked", edges.into(), microstep_runs::LEN as u64);
+    let bound = microstep_runs::MAX_EDGE_ERROR_TICKS;
+    report.check(
+        worst <= bound,
+        "largest edge error, millitick",
+        (worst * 1000.0) as u64,
+        (bound * 1000.0) as u64,
+    );
+    hprintln!(
+        "  {:<34} {:>6} edges, largest error {} millitick (bound {})",
+        "runs against the exact curve",
+        edges,
+        (worst * 1000.0) as u32,
+        (bound * 1000.0) as u32
+    );
 }
 
 /// Plays every move from the step interrupt and checks what it amounts to.
@@ -593,6 +699,12 @@ pub fn run(mut timer: SYST, report: &mut Report) -> SYST {
         report.equal(m.name, p.last.into(), expect.end.into());
         if expect.stops {
             report.equal(m.name, p.stop_ok.into(), 1);
+        }
+        if m.name == RUNS_MOVE {
+            check_edges(
+                &log[..p.steps.min(microstep_runs::LEN as u32) as usize],
+                report,
+            );
         }
     }
     // Tables from both front ends agree.

@@ -10,8 +10,8 @@ use stepper_profiles::{
 
 use crate::Report;
 use crate::profiles::{
-    exponential, exponential_segments, jerk_limited, linear_exact, linear_integer, sigmoid_blue,
-    sigmoid_exact, sigmoid_gray, sigmoid_orange, sigmoid_yellow, three_stage,
+    exponential, exponential_segments, jerk_limited, linear_exact, linear_integer, microstep,
+    sigmoid_blue, sigmoid_exact, sigmoid_gray, sigmoid_orange, sigmoid_yellow, three_stage,
 };
 
 /// `[defaults]` of profiles.toml.
@@ -143,6 +143,19 @@ pub fn run(report: &mut Report) {
         &linear_integer::PERIODS,
     );
     same(report, "linear_exact", &linear(200), &linear_exact::PERIODS);
+    same(
+        report,
+        "microstep",
+        &Spec::new(
+            Curve::Linear(Linear {
+                fmin: 1600.0,
+                fmax: 48_000.0,
+                extent: LinearExtent::Accel(160_000.0),
+            }),
+            TIMER,
+        ),
+        &microstep::PERIODS,
+    );
     same(
         report,
         "three_stage",

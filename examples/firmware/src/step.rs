@@ -18,7 +18,7 @@ use stepper_profiles::player::Player;
 use crate::moves::Event;
 
 /// The most steps a move may record.
-pub const MAX_STEPS: usize = 10_000;
+pub const MAX_STEPS: usize = 15_000;
 
 /// The step pin: GPIO port F, pin 0, on the LM3S6965 (the evaluation
 /// board's user LED).

@@ -22,21 +22,7 @@ mod profiles {
     stepper_profiles::include_profiles!("../../profiles.toml");
 }
 
-use profiles::{exponential_segments, sigmoid_exact, sigmoid_orange};
-
-/// A long microstepped ramp, compressed: 1/16 steps, 100 to 3000 full
-/// steps/s at 10 000 full steps/s², every edge within a tick.
-static MICROSTEP_RUNS: &[[u16; 5]] = &stepper_profiles::period_table!(
-    curve = linear,
-    fmin = 1.6kHz,
-    fmax = 48kHz,
-    accel = 160_000,
-    timer_hz = 10MHz,
-    compress = 1,
-);
-
-/// Steps of the microstepped ramp.
-const MICROSTEP_LEN: u32 = 7192;
+use profiles::{exponential_segments, microstep_runs, sigmoid_exact, sigmoid_orange};
 
 /// Steps of the measured move: up the ramp, cruise, down the ramp.
 const UP: u32 = sigmoid_exact::LEN as u32;
@@ -190,8 +176,8 @@ fn main() -> ! {
     );
     player_move(
         "player, compressed runs (microstep, compress = 1)",
-        Ramp::runs(MICROSTEP_RUNS),
-        (MICROSTEP_LEN, 1000),
+        Ramp::runs(&microstep_runs::RUNS),
+        (microstep_runs::LEN as u32, 1000),
         timer,
     );
     player_move(
