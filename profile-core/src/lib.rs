@@ -52,7 +52,6 @@ pub use base::key::Key;
 pub use base::modes::{Arithmetic, Discretization, Rounding};
 pub use base::timer::{TableWord, Timer, Word};
 pub use curves::public::*;
-#[cfg(feature = "std")]
 pub use motor::simulate;
 #[cfg(feature = "std")]
 pub use table::compress::{MIN_COMPRESS_TICKS, RunFigures, RunTable};

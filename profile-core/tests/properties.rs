@@ -435,6 +435,7 @@ mod motors {
                 torque_curve,
                 friction,
                 damping,
+                damping_ratio: 0.0,
                 safety,
                 max_start_hz: max_start,
             };

@@ -75,9 +75,10 @@ mod include;
 /// | `load_inertia` | the load's inertia at the shaft, kg·m² | `0` |
 /// | `torque_curve` | pull-out torque, up to 32 `(step frequency, N·m)` pairs with rising frequencies: `[(0, 0.40), (1000, 0.33), (4000, 0.12)]`; no torque beyond the last | required |
 /// | `friction` | constant load and friction torque, N·m | `0` |
-/// | `damping` | viscous damping, N·m·s/rad | `0` |
+/// | `damping` | viscous damping on the rotor's speed, N·m·s/rad | `0` |
+/// | `damping_ratio` | electromagnetic damping ζ, on the rotor's speed relative to the field's (`simulate`) | `0` |
 /// | `safety` | the curve's torque is divided by it (at least 1) | `1` |
-/// | `max_start_hz` | the motor's maximum start frequency: the table must start below it | none |
+/// | `max_start_hz` | the motor's start frequency without load: the table must start below it over `sqrt(1 + load_inertia / rotor_inertia)`; without it, below the start the model's rotor pulls in to | none |
 ///
 /// Integer literals are accepted where a number is expected. A frequency may
 /// carry a unit, `Hz`, `kHz` or `MHz`, and a time `s`, `ms` or `us`, with or

@@ -1,8 +1,9 @@
 use stepper_profiles::period_table;
 
-// Seed 001: a ramp must start below the motor's maximum start frequency.
+// A ramp must start below the motor's start frequency without load
+// (`max_start_hz`) corrected for the load: 1200 / sqrt(1 + 2.0e-5 / 5.4e-6).
 static T: [u16; 438] = period_table!(
-    curve = linear, fmin = 1500, fmax = 2000, accel = 2000, timer_hz = 1_000_000,
+    curve = linear, fmin = 900, fmax = 2000, accel = 2000, timer_hz = 1_000_000,
     step_angle = 1.8,
     rotor_inertia = 5.4e-6,
     load_inertia = 2.0e-5,

@@ -55,6 +55,8 @@ impl Key {
     pub const FRICTION: Key = Key("friction");
     /// `damping`
     pub const DAMPING: Key = Key("damping");
+    /// `damping_ratio`
+    pub const DAMPING_RATIO: Key = Key("damping_ratio");
     /// `safety`
     pub const SAFETY: Key = Key("safety");
     /// `max_start_hz`
@@ -83,6 +85,7 @@ impl Key {
         Key::TORQUE_CURVE,
         Key::FRICTION,
         Key::DAMPING,
+        Key::DAMPING_RATIO,
         Key::SAFETY,
         Key::MAX_START_HZ,
     ];

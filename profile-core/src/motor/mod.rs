@@ -25,8 +25,10 @@
 //! torque in N·m, damping in N·m·s/rad, frequencies in Hz of the table's
 //! steps (microsteps when `microsteps > 1`).
 
-#[cfg(feature = "std")]
 pub mod simulate;
+mod start;
+
+pub use start::{START_FULL_STEPS, START_MAX_STEPS, START_RESOLUTION, StartLimit};
 
 use core::fmt;
 
@@ -106,13 +108,23 @@ pub struct Motor {
     pub torque_curve: TorqueCurve,
     /// Constant load and friction torque, in N·m.
     pub friction: f64,
-    /// Viscous damping, in N·m·s/rad.
+    /// Viscous damping, in N·m·s/rad: a drag on the rotor's own speed
+    /// (bearings, a fluid), `damping · ω`.
     pub damping: f64,
+    /// Electromagnetic damping as a ratio of critical damping, `ζ` (0 for
+    /// none): the torque `D · (ω_cmd - ω)` that pulls the rotor's speed
+    /// towards the field's, `D = 2 ζ sqrt(K J)` with the stiffness
+    /// `K = N_r · T_hold` ([`Motor::stiffness`]). It acts on the rotor's
+    /// speed relative to the field, so it does not drag a rotor that keeps up.
+    pub damping_ratio: f64,
     /// The available torque is divided by this (at least 1).
     pub safety: f64,
-    /// Maximum no-load start frequency, in Hz of the table's steps, if known:
-    /// a ramp must start below it (the advice of "Design and implementation
-    /// of speed increase/decrease in stepper motor control").
+    /// Maximum no-load start frequency, in Hz of the table's steps, if known
+    /// (a datasheet's start or pull-in frequency without load). A ramp must
+    /// start below it once corrected for the load (the advice of "Design
+    /// and implementation of speed increase/decrease in stepper motor
+    /// control"): see [`Motor::start_limit`]. Without it the limit comes from
+    /// the model.
     pub max_start_hz: Option<f64>,
 }
 
@@ -177,12 +189,12 @@ pub enum MotorError {
     },
     /// The table to check has no entries.
     EmptyTable,
-    /// The ramp starts above the motor's maximum start frequency.
+    /// The loaded rotor cannot pull in to the ramp's first step from rest.
     Start {
         /// The ramp's start frequency, in Hz.
         hz: f64,
-        /// The motor's maximum no-load start frequency, in Hz.
-        max_hz: f64,
+        /// The fastest start the loaded rotor follows, and how it was found.
+        limit: StartLimit,
     },
 }
 
@@ -250,10 +262,31 @@ impl fmt::Display for MotorError {
                  friction, damping or torque is too large to compute with"
             ),
             MotorError::EmptyTable => f.write_str("the table to check has no entries"),
-            MotorError::Start { hz, max_hz } => write!(
-                f,
-                "the ramp starts at {hz:.1} Hz, above the motor's maximum start frequency `max_start_hz = {max_hz}`"
-            ),
+            MotorError::Start { hz, limit } => {
+                write!(
+                    f,
+                    "the motor cannot start at {hz:.1} Hz with its load: it starts at {:.1} Hz at most, ",
+                    limit.hz()
+                )?;
+                match limit {
+                    StartLimit::Corrected {
+                        max_start_hz,
+                        factor,
+                        ..
+                    } => write!(
+                        f,
+                        "`max_start_hz = {max_start_hz}` (without load) over \
+                         sqrt(1 + load_inertia / rotor_inertia) = {factor:.3}"
+                    ),
+                    StartLimit::Model { .. } => write!(
+                        f,
+                        "the fastest rate found (by bisection below {hz:.1} Hz) that the model's \
+                         rotor pulls in to from rest: it reaches the field's speed before lagging \
+                         180° electrical (torque over the safety factor; give `max_start_hz` \
+                         from the datasheet to use it instead)"
+                    ),
+                }
+            }
         }
     }
 }
@@ -307,6 +340,7 @@ impl Motor {
         }
         non_negative(Key::FRICTION, self.friction)?;
         non_negative(Key::DAMPING, self.damping)?;
+        non_negative(Key::DAMPING_RATIO, self.damping_ratio)?;
         if !(self.safety.is_finite() && self.safety >= 1.0) {
             return Err(MotorError::Invalid {
                 key: Key::SAFETY,
@@ -353,22 +387,22 @@ impl Motor {
     ) -> Result<TorqueFigures, MotorError> {
         self.validate()?;
         let per_second = spec.timer.timer_hz as f64 / spec.timer.ticks_per_step as f64;
-        if let (Some(max_hz), Some(&first)) = (self.max_start_hz, periods.first()) {
-            let hz = per_second / first as f64;
-            if hz > max_hz {
-                return Err(MotorError::Start { hz, max_hz });
-            }
-        }
         let inertia = self.rotor_inertia + self.load_inertia;
         let theta = self.step_radians();
         // The start is an edge too: from rest to the first entry's speed.
-        // Pulling in from rest is `max_start_hz`'s to judge; what the check
-        // asks of the first step is the torque to keep that speed.
+        // Pulling in from rest is judged above; what the check asks of the
+        // first step here is the torque to keep that speed.
         let Some(&first) = periods.first() else {
             return Err(MotorError::EmptyTable);
         };
         let hz = per_second / first as f64;
         let mut worst = self.judge(0, hz, self.friction + self.damping * theta * hz, &mut each)?;
+        if !self.starts_at(hz) {
+            return Err(MotorError::Start {
+                hz,
+                limit: self.start_limit(hz),
+            });
+        }
         // Speeds are averaged over one full step on each side of an edge
         // (`microsteps` entries, fewer at the ends of the table).
         let m = (self.microsteps as usize).max(1);

@@ -62,6 +62,7 @@
 //!     torque_curve: TorqueCurve::new(&[(0.0, 0.40), (1000.0, 0.33), (2000.0, 0.24)]).unwrap(),
 //!     friction: 0.02,
 //!     damping: 1e-4,
+//!     damping_ratio: 0.0,
 //!     safety: 1.5,
 //!     max_start_hz: None,
 //! };
@@ -253,6 +254,7 @@ impl fmt::Display for SimError {
     }
 }
 
+#[cfg(feature = "std")]
 impl std::error::Error for SimError {}
 
 impl From<MotorError> for SimError {
@@ -268,17 +270,18 @@ fn ticks_per_second(spec: &Spec) -> f64 {
 /// The longest integration step the semi-implicit Euler integrator takes
 /// stably, in s, with a factor of 2 to spare: `1/ω` where `ω` is the rotor's
 /// natural angular frequency at the curve's largest torque (the method is
-/// stable for `h ω < 2`), and `J / β` for the viscous damping (explicit in
-/// `β`, stable for `h β / J < 2`).
-fn stable_step(motor: &Motor, poles: f64, inertia: f64) -> f64 {
+/// stable for `h ω < 2`), and `J / (β + D)` for the viscous and the
+/// electromagnetic damping (explicit in both, stable for `h (β + D) / J < 2`).
+pub(super) fn stable_step(motor: &Motor, poles: f64, inertia: f64) -> f64 {
     let peak = motor
         .torque_curve
         .points()
         .iter()
         .fold(0.0f64, |m, &(_, nm)| m.max(nm));
     let omega = libm::sqrt(peak * poles / inertia);
-    let by_damping = if motor.damping > 0.0 {
-        inertia / motor.damping
+    let drag = motor.damping + motor.field_damping();
+    let by_damping = if drag > 0.0 {
+        inertia / drag
     } else {
         f64::INFINITY
     };
@@ -286,26 +289,28 @@ fn stable_step(motor: &Motor, poles: f64, inertia: f64) -> f64 {
 }
 
 /// Integration steps for an interval of `duration` s, at most `dt` each.
-fn substeps(duration: f64, dt: f64) -> f64 {
+pub(super) fn substeps(duration: f64, dt: f64) -> f64 {
     libm::ceil(duration / dt).max(0.0)
 }
 
 /// The rotor's state and what has been seen of it.
-struct Rotor {
-    theta: f64,
-    omega: f64,
+pub(super) struct Rotor {
+    pub(super) theta: f64,
+    pub(super) omega: f64,
     /// Electrical radians per mechanical radian: `(π/2) / θ_fullstep`.
-    poles: f64,
-    inertia: f64,
-    friction: f64,
-    damping: f64,
+    pub(super) poles: f64,
+    pub(super) inertia: f64,
+    pub(super) friction: f64,
+    pub(super) damping: f64,
+    /// Electromagnetic damping `D`, on the speed relative to the field's.
+    pub(super) field_damping: f64,
     /// The stable position the rotor is in, in electrical turns behind the command.
-    well: i64,
-    slips: u32,
-    first_slip: Option<u32>,
+    pub(super) well: i64,
+    pub(super) slips: u32,
+    pub(super) first_slip: Option<u32>,
     /// Pulses given so far.
-    pulses: u32,
-    steps: u64,
+    pub(super) pulses: u32,
+    pub(super) steps: u64,
 }
 
 impl Rotor {
@@ -315,7 +320,7 @@ impl Rotor {
         let n = substeps(settle_s, dt_s);
         let h = if n > 0.0 { settle_s / n } else { 0.0 };
         let mut overshoot = 0.0f64;
-        self.advance(cmd, holding, n as u64, h, |_, theta| {
+        self.advance((cmd, 0.0), holding, n as u64, h, |_, theta, _| {
             overshoot = overshoot.max(theta - cmd);
         });
         overshoot
@@ -327,10 +332,21 @@ impl Rotor {
 
     /// `n` semi-implicit Euler steps of `h` s with `θ_cmd = cmd` and a torque
     /// amplitude `peak`; `each(lag_e, θ)` after every step.
-    fn advance(&mut self, cmd: f64, peak: f64, n: u64, h: f64, mut each: impl FnMut(f64, f64)) {
+    /// `n` integration steps of `h` s with the field at `cmd`, moving at
+    /// `field_omega` rad/s (the commanded step rate; 0 while holding), under
+    /// a torque amplitude `peak`.
+    pub(super) fn advance(
+        &mut self,
+        (cmd, field_omega): (f64, f64),
+        peak: f64,
+        n: u64,
+        h: f64,
+        mut each: impl FnMut(f64, f64, f64),
+    ) {
         let impulse = self.friction * h / self.inertia;
         for _ in 0..n {
-            let drive = peak * libm::sin(self.lag(cmd)) - self.damping * self.omega;
+            let drive = peak * libm::sin(self.lag(cmd)) - self.damping * self.omega
+                + self.field_damping * (field_omega - self.omega);
             let mut omega = self.omega + h * drive / self.inertia;
             // Friction opposes the motion and may stop it, never reverse it.
             if omega > impulse {
@@ -355,7 +371,7 @@ impl Rotor {
                 self.well = well;
                 self.first_slip.get_or_insert(self.pulses);
             }
-            each(lag, self.theta);
+            each(lag, self.theta, self.omega);
         }
     }
 }
@@ -418,7 +434,7 @@ pub fn run(
         return Err(SimError::Options { dt_s, settle_s });
     }
     let per_second = ticks_per_second(spec);
-    let poles = FRAC_PI_2 / motor.step_angle.to_radians();
+    let poles = motor.poles();
     let inertia = motor.rotor_inertia + motor.load_inertia;
     let max_dt_s = stable_step(motor, poles, inertia);
     if dt_s > max_dt_s {
@@ -437,6 +453,7 @@ pub fn run(
         inertia,
         friction: motor.friction,
         damping: motor.damping,
+        field_damping: motor.field_damping(),
         well: 0,
         slips: 0,
         first_slip: None,
@@ -451,7 +468,8 @@ pub fn run(
         let n = substeps(duration, dt_s);
         let h = if n > 0.0 { duration / n } else { 0.0 };
         let peak = motor.torque_curve.torque(per_second / p as f64);
-        rotor.advance(cmd, peak, n as u64, h, |lag, _| {
+        let field_omega = step * per_second / p as f64;
+        rotor.advance((cmd, field_omega), peak, n as u64, h, |lag, _, _| {
             if lag.abs() > max_lag {
                 max_lag = lag.abs();
                 max_lag_pulse = k as u32;

@@ -7,7 +7,7 @@ use super::{Arg, Diagnostic};
 use crate::base::error::Error;
 use crate::base::key::Key;
 use crate::curves::Param;
-use crate::motor::MotorError;
+use crate::motor::{MotorError, StartLimit};
 use crate::table::spec::Spec;
 
 /// The spec's parameters as `(key, value)` pairs, in documentation order, as
@@ -38,8 +38,9 @@ pub fn describe(spec: &Spec) -> Vec<(Key, String)> {
 }
 
 /// Places a motor error: at the value of its key, at `motor` for a table the
-/// motor cannot follow (when no `motor` names it: at `max_start_hz` for a
-/// start too fast, else at `torque_curve`), or on `whole`.
+/// motor cannot follow (when no `motor` names it: for a start too fast at
+/// `max_start_hz`, or at `fmin` when the model judged it; else at
+/// `torque_curve`), or on `whole`.
 pub fn locate_motor<L: Clone>(error: &MotorError, args: &[Arg<L>], whole: &L) -> Diagnostic<L> {
     let find = |k: Key| {
         args.iter()
@@ -47,6 +48,10 @@ pub fn locate_motor<L: Clone>(error: &MotorError, args: &[Arg<L>], whole: &L) ->
             .map(|a| a.value_loc.clone())
     };
     let inline = match error {
+        MotorError::Start {
+            limit: StartLimit::Model { .. },
+            ..
+        } => Key::FMIN,
         MotorError::Start { .. } => Key::MAX_START_HZ,
         _ => Key::TORQUE_CURVE,
     };

@@ -220,6 +220,7 @@ pub(crate) fn motor<L: Clone>(c: &mut Collector<'_, L>) -> Option<Motor> {
     let load_inertia = c.float(Key::LOAD_INERTIA);
     let friction = c.float(Key::FRICTION);
     let damping = c.float(Key::DAMPING);
+    let damping_ratio = c.float(Key::DAMPING_RATIO);
     let safety = c.float(Key::SAFETY);
     let max_start_hz = c.float(Key::MAX_START_HZ);
     let curve = match c.find(Key::TORQUE_CURVE) {
@@ -255,6 +256,7 @@ pub(crate) fn motor<L: Clone>(c: &mut Collector<'_, L>) -> Option<Motor> {
         torque_curve: curve?,
         friction: friction.unwrap_or(0.0),
         damping: damping.unwrap_or(0.0),
+        damping_ratio: damping_ratio.unwrap_or(0.0),
         safety: safety.unwrap_or(1.0),
         max_start_hz,
     })
