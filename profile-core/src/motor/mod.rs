@@ -189,6 +189,27 @@ pub enum MotorError {
     },
     /// The table to check has no entries.
     EmptyTable,
+    /// The model's rotor, from rest, slips on the ramp's first steps before
+    /// it reaches the field's speed: the start and the acceleration right
+    /// after it are too much together.
+    PullIn {
+        /// The pulse before which it slips, from 1.
+        pulse: u32,
+        /// The ramp's start frequency, in Hz.
+        hz: f64,
+    },
+    /// The model's rotor slips on the shortest move the ramp's start makes:
+    /// from rest up the ramp's first entries (16 full steps) and down again,
+    /// then held.
+    ShortMove {
+        /// The ramp's start frequency, in Hz.
+        hz: f64,
+        /// The pulse before which it slips, from 1; `steps + 1` when it
+        /// slips after the last pulse, the field held.
+        pulse: u32,
+        /// The move's steps.
+        steps: u32,
+    },
     /// The loaded rotor cannot pull in to the ramp's first step from rest.
     Start {
         /// The ramp's start frequency, in Hz.
@@ -204,7 +225,10 @@ impl MotorError {
         match *self {
             MotorError::Invalid { key, .. } => key,
             MotorError::Curve { .. } => Key::TORQUE_CURVE,
-            MotorError::Torque { .. } | MotorError::Start { .. } => Key::MOTOR,
+            MotorError::Torque { .. }
+            | MotorError::Start { .. }
+            | MotorError::PullIn { .. }
+            | MotorError::ShortMove { .. } => Key::MOTOR,
             MotorError::NotFinite { .. } => Key::ROTOR_INERTIA,
             MotorError::EmptyTable => Key::MOTOR,
         }
@@ -262,30 +286,8 @@ impl fmt::Display for MotorError {
                  friction, damping or torque is too large to compute with"
             ),
             MotorError::EmptyTable => f.write_str("the table to check has no entries"),
-            MotorError::Start { hz, limit } => {
-                write!(
-                    f,
-                    "the motor cannot start at {hz:.1} Hz with its load: it starts at {:.1} Hz at most, ",
-                    limit.hz()
-                )?;
-                match limit {
-                    StartLimit::Corrected {
-                        max_start_hz,
-                        factor,
-                        ..
-                    } => write!(
-                        f,
-                        "`max_start_hz = {max_start_hz}` (without load) over \
-                         sqrt(1 + load_inertia / rotor_inertia) = {factor:.3}"
-                    ),
-                    StartLimit::Model { .. } => write!(
-                        f,
-                        "the fastest rate found (by bisection below {hz:.1} Hz) that the model's \
-                         rotor pulls in to from rest: it reaches the field's speed before lagging \
-                         180° electrical (torque over the safety factor; give `max_start_hz` \
-                         from the datasheet to use it instead)"
-                    ),
-                }
+            MotorError::PullIn { .. } | MotorError::ShortMove { .. } | MotorError::Start { .. } => {
+                start::describe(self, f)
             }
         }
     }
@@ -397,12 +399,7 @@ impl Motor {
         };
         let hz = per_second / first as f64;
         let mut worst = self.judge(0, hz, self.friction + self.damping * theta * hz, &mut each)?;
-        if !self.starts_at(hz) {
-            return Err(MotorError::Start {
-                hz,
-                limit: self.start_limit(hz),
-            });
-        }
+
         // Speeds are averaged over one full step on each side of an edge
         // (`microsteps` entries, fewer at the ends of the table).
         let m = (self.microsteps as usize).max(1);
@@ -437,6 +434,16 @@ impl Motor {
                 worst = figures;
             }
         }
+        // Then the ends of a move, from the model: the start from rest and
+        // the stop.
+        let hz = per_second / first as f64;
+        if !self.starts_at(hz) {
+            return Err(MotorError::Start {
+                hz,
+                limit: self.start_limit(hz),
+            });
+        }
+        self.check_ends(per_second, periods)?;
         Ok(worst)
     }
 

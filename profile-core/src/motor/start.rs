@@ -2,10 +2,11 @@
 //! from a datasheet's no-load figure or from the model, and the motor's
 //! stiffness and electromagnetic damping the model uses.
 
-use core::f64::consts::{PI, TAU};
+use core::f64::consts::TAU;
+use core::fmt;
 
-use crate::motor::Motor;
 use crate::motor::simulate::{Rotor, stable_step, substeps};
+use crate::motor::{Motor, MotorError};
 
 /// The fastest step frequency a motor starts at from rest with its load,
 /// and how it was found.
@@ -114,6 +115,29 @@ impl Motor {
         }
         StartLimit::Model { hz: lo }
     }
+
+    /// The ends of a move on `periods`, played to the model's rotor: from
+    /// rest, the start must pull in before the rotor slips; and the shortest
+    /// move on the ramp's start (up its first 16 full steps, down again, the
+    /// field held) must leave the rotor within the field's stable region.
+    pub(super) fn check_ends(&self, per_second: f64, periods: &[u32]) -> Result<(), MotorError> {
+        let hz = per_second / periods.first().map_or(1, |&p| p) as f64;
+        let seconds = |p: &u32| *p as f64 / per_second;
+        let window = 4 * START_FULL_STEPS as usize * self.microsteps.max(1) as usize;
+        let window = &periods[..window.min(periods.len())];
+        if let Some(pulse) = meets(self, window.iter().map(seconds), End::Start) {
+            return Err(MotorError::PullIn { pulse, hz });
+        }
+        let short = window.iter().chain(window.iter().rev()).map(seconds);
+        if let Some(pulse) = meets(self, short, End::Stop) {
+            return Err(MotorError::ShortMove {
+                hz,
+                pulse,
+                steps: 2 * window.len() as u32,
+            });
+        }
+        Ok(())
+    }
 }
 
 /// The most integration steps of one start judged from the model
@@ -122,11 +146,8 @@ pub const START_MAX_STEPS: u64 = 200_000;
 
 /// Whether the rotor, at rest and aligned, pulls in to a field stepping at a
 /// constant `hz` table steps per second: reaches the field's speed without
-/// slipping, within [`START_FULL_STEPS`]
-/// full steps, under the pull-out torque at `hz` over the safety factor. The
-/// integration step is the one
-/// [`SimOptions::suggested`](crate::simulate::SimOptions::suggested) takes
-/// for that pulse train.
+/// slipping, within [`START_FULL_STEPS`] full steps, under the pull-out
+/// torque at `hz` over the safety factor.
 pub(super) fn pulls_in(motor: &Motor, hz: f64) -> bool {
     if hz <= 0.0 {
         return true;
@@ -134,35 +155,58 @@ pub(super) fn pulls_in(motor: &Motor, hz: f64) -> bool {
     if !hz.is_finite() {
         return false;
     }
+    let pulses = START_FULL_STEPS.saturating_mul(motor.microsteps) as usize + 1;
+    let seconds = core::iter::repeat_n(1.0 / hz, pulses);
+    meets(motor, seconds, End::Start).is_none()
+}
+
+/// Which end of a move the model's rotor plays.
+#[derive(Clone, Copy, PartialEq)]
+pub(super) enum End {
+    /// From rest, until the rotor moves as fast as the field: it has pulled
+    /// in. What it does next (ringing, resonance) is not the start's.
+    Start,
+    /// From rest, through the periods, then held for two of the rotor's
+    /// natural periods: the rotor must come to rest within the field's stable
+    /// region.
+    Stop,
+}
+
+/// Plays `seconds` (one period per table step) to the model's rotor for one
+/// [`End`] of a move, under the pull-out torque over the safety factor;
+/// `Some(pulse)` when the rotor slips (its lag passes 180° electrical)
+/// before `pulse`, from 1 (one more than the pulses when it slips while
+/// held). At most [`START_MAX_STEPS`] integration steps:
+/// longer steps, while they are stable, for a slow pulse train; a train too
+/// slow for the budget is not judged (each step is taken from rest, which
+/// the torque check judges).
+pub(super) fn meets<I: Iterator<Item = f64> + Clone>(
+    motor: &Motor,
+    seconds: I,
+    end: End,
+) -> Option<u32> {
     let poles = motor.poles();
     let inertia = motor.rotor_inertia + motor.load_inertia;
-    let period = 1.0 / hz;
     let natural = TAU / libm::sqrt(motor.stiffness() / inertia);
     let natural = if natural.is_finite() && natural > 0.0 {
         natural
     } else {
         1e-3
     };
-    let pulses = START_FULL_STEPS.saturating_mul(motor.microsteps);
+    let hold = if end == End::Stop { 2.0 * natural } else { 0.0 };
+    let (shortest, total) = seconds
+        .clone()
+        .fold((f64::INFINITY, hold), |(s, t), d| (s.min(d), t + d));
+    if !(shortest > 0.0 && total.is_finite()) {
+        return None;
+    }
     let stable = stable_step(motor, poles, inertia);
-    let dt = (period / 50.0).min(natural / 200.0).min(stable / 4.0);
-    // At most START_MAX_STEPS integration steps: longer steps, as long as
-    // they stay stable, for a slow pulse train.
-    let budget = period * (pulses as f64 + 1.0) / START_MAX_STEPS as f64;
-    let dt = dt.max(budget);
+    let dt = (shortest / 50.0).min(natural / 200.0).min(stable / 4.0);
+    let dt = dt.max(total / START_MAX_STEPS as f64);
     if dt > stable || dt.is_nan() {
-        // Pulses so far apart that the rotor's own motion between them
-        // cannot be integrated within the budget: each step is taken from
-        // rest, which the torque check judges.
-        return true;
+        return None;
     }
-    let n = substeps(period, dt);
-    if !(n.is_finite() && n >= 1.0) {
-        return false;
-    }
-    let h = period / n;
     let step = motor.step_radians();
-    let peak = motor.available(hz);
     let mut rotor = Rotor {
         theta: 0.0,
         omega: 0.0,
@@ -177,34 +221,101 @@ pub(super) fn pulls_in(motor: &Motor, hz: f64) -> bool {
         pulses: 0,
         steps: 0,
     };
-    // As `run` plays a table of `pulses` equal periods, and one period more
-    // after the last pulse.
-    let field = step * hz;
-    // The first time the rotor moves as fast as the field, before its lag
-    // passes half an electrical turn (a slip), it has pulled in. What it does
-    // next (ringing, resonance) is not the start's.
-    let mut verdict = None;
-    for k in 0..=pulses {
+    let mut caught_up = false;
+    let mut count = 0u32;
+    for (k, duration) in seconds.enumerate() {
+        let n = substeps(duration, dt);
+        let h = duration / n;
+        let field = step / duration;
+        let peak = motor.available(1.0 / duration);
         rotor.advance(
             (k as f64 * step, field),
             peak,
             n as u64,
             h,
-            |lag, _, omega| {
-                if verdict.is_none() {
-                    if libm::fabs(lag) > PI || lag.is_nan() {
-                        verdict = Some(false);
-                    } else if omega >= field {
-                        verdict = Some(true);
-                    }
-                }
+            |_, _, omega| {
+                caught_up |= omega >= field;
             },
         );
-        if let Some(pulled_in) = verdict {
-            return pulled_in;
+        if rotor.slips > 0 || !rotor.theta.is_finite() {
+            return Some(k as u32 + 1);
+        }
+        if end == End::Start && caught_up {
+            return None;
+        }
+        count = k as u32 + 1;
+        rotor.pulses = count;
+    }
+    if end == End::Stop {
+        let n = substeps(hold, dt);
+        let holding = motor.available(0.0);
+        rotor.advance(
+            (count as f64 * step, 0.0),
+            holding,
+            n as u64,
+            hold / n,
+            |_, _, _| {},
+        );
+        if rotor.slips > 0 || !rotor.theta.is_finite() {
+            return Some(count + 1);
         }
     }
-    // Never as fast as the field within the start, never slipped: a field
-    // too slow to judge (friction holds the rotor) passes to the torque check.
-    true
+    None
+}
+
+/// The message of an error about the ends of a move.
+pub(super) fn describe(error: &MotorError, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+    match *error {
+        MotorError::PullIn { pulse, hz } => write!(
+            f,
+            "the motor cannot start on this ramp with its load: from rest at {hz:.1} Hz the \
+             model's rotor slips before pulse {pulse}, before it reaches the field's speed (the \
+             start and the acceleration right after it are too much together; start slower or \
+             accelerate less at first)"
+        ),
+        MotorError::ShortMove { hz, pulse, steps } => {
+            write!(
+                f,
+                "the motor cannot make the shortest move on this ramp, from rest up its first {} \
+                 steps and down again: ",
+                steps / 2
+            )?;
+            if pulse <= steps {
+                write!(f, "the model's rotor slips before pulse {pulse} of {steps}")?;
+            } else {
+                write!(
+                    f,
+                    "when the field stops at {hz:.1} Hz the model's rotor runs past it by half \
+                     an electrical turn"
+                )?;
+            }
+            f.write_str(" (start slower, or accelerate less near the start)")
+        }
+        MotorError::Start { hz, limit } => {
+            write!(
+                f,
+                "the motor cannot start at {hz:.1} Hz with its load: it starts at {:.1} Hz at most, ",
+                limit.hz()
+            )?;
+            match limit {
+                StartLimit::Corrected {
+                    max_start_hz,
+                    factor,
+                    ..
+                } => write!(
+                    f,
+                    "`max_start_hz = {max_start_hz}` (without load) over \
+                     sqrt(1 + load_inertia / rotor_inertia) = {factor:.3}"
+                ),
+                StartLimit::Model { .. } => write!(
+                    f,
+                    "the fastest rate found (by bisection below {hz:.1} Hz) that the model's \
+                     rotor pulls in to from rest: it reaches the field's speed before lagging \
+                     180° electrical (torque over the safety factor; give `max_start_hz` \
+                     from the datasheet to use it instead)"
+                ),
+            }
+        }
+        _ => Ok(()),
+    }
 }

@@ -39,7 +39,8 @@ pub fn describe(spec: &Spec) -> Vec<(Key, String)> {
 
 /// Places a motor error: at the value of its key, at `motor` for a table the
 /// motor cannot follow (when no `motor` names it: for a start too fast at
-/// `max_start_hz`, or at `fmin` when the model judged it; else at
+/// `max_start_hz`, or at `fmin` when the model judged it or the ends of a
+/// move; else at
 /// `torque_curve`), or on `whole`.
 pub fn locate_motor<L: Clone>(error: &MotorError, args: &[Arg<L>], whole: &L) -> Diagnostic<L> {
     let find = |k: Key| {
@@ -51,7 +52,9 @@ pub fn locate_motor<L: Clone>(error: &MotorError, args: &[Arg<L>], whole: &L) ->
         MotorError::Start {
             limit: StartLimit::Model { .. },
             ..
-        } => Key::FMIN,
+        }
+        | MotorError::PullIn { .. }
+        | MotorError::ShortMove { .. } => Key::FMIN,
         MotorError::Start { .. } => Key::MAX_START_HZ,
         _ => Key::TORQUE_CURVE,
     };
