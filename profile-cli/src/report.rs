@@ -298,13 +298,14 @@ fn print_motors(out: &mut String, profiles: &[Profile]) {
     );
     let _ = writeln!(
         out,
-        "{:<21} {:>10} {:>6} {:>9} {:>9} {:>9}   {:>5} {:>5} {:>8} {:>9}",
+        "{:<21} {:>10} {:>6} {:>9} {:>9} {:>9} {:>9}   {:>5} {:>5} {:>8} {:>9}",
         "profile",
         "margin",
         "step",
         "at Hz",
         "needed",
         "available",
+        "start max",
         "lost",
         "slips",
         "max lag",
@@ -312,8 +313,8 @@ fn print_motors(out: &mut String, profiles: &[Profile]) {
     );
     let _ = writeln!(
         out,
-        "{:<21} {:>10} {:>6} {:>9} {:>9} {:>9}   {:>5} {:>5} {:>8} {:>9}",
-        "", "N·m", "", "", "N·m", "N·m", "steps", "", "°el", "steps"
+        "{:<21} {:>10} {:>6} {:>9} {:>9} {:>9} {:>9}   {:>5} {:>5} {:>8} {:>9}",
+        "", "N·m", "", "", "N·m", "N·m", "Hz", "steps", "", "°el", "steps"
     );
     for p in bound {
         let (Some(motor), Some(t)) = (&p.motor, &p.torque) else {
@@ -326,17 +327,22 @@ fn print_motors(out: &mut String, profiles: &[Profile]) {
             ),
             Err(e) => format!("simulation: {e}"),
         };
+        // The fastest start from rest with the load, searched up to the
+        // curve's last point.
+        let start = motor.start_limit(motor.torque_curve.top()).hz();
         let _ = writeln!(
             out,
-            "{:<21} {:>10.4} {:>6} {:>9.1} {:>9.4} {:>9.4}   {sim}",
-            p.name, t.min_margin_nm, t.step, t.hz, t.needed_nm, t.available_nm
+            "{:<21} {:>10.4} {:>6} {:>9.1} {:>9.4} {:>9.4} {:>9.1}   {sim}",
+            p.name, t.min_margin_nm, t.step, t.hz, t.needed_nm, t.available_nm, start
         );
     }
     let _ = writeln!(
         out,
         "\nmargin: the smallest torque to spare over the ramp, at that step and step \
          frequency, where the step needs `needed` and the motor gives `available` (its \
-         pull-out curve over `safety`).\nlost: table steps the simulated rotor ends behind (or, \
+         pull-out curve over `safety`). start max: the fastest step rate the motor starts \
+         at from rest with its load (`max_start_hz` over sqrt(1 + load_inertia / \
+         rotor_inertia), or the fastest the model's rotor pulls in to, torque over `safety`).\nlost: table steps the simulated rotor ends behind (or, \
          negative, ahead); slips: times it fell into another stable position (a lag past \
          180° electrical); max lag: its largest lag behind the field, electrical degrees \
          (below 90° with torque to spare); overshoot: how far past its final position it \

@@ -288,6 +288,16 @@ fn report_gives_a_compact_layout_flash_against_one_entry_per_step() {
     ] {
         assert!(report.contains(note), "{report}");
     }
+    // The motor's fastest start from rest with its load, from the model.
+    let motors = report
+        .split("\nMotor torque")
+        .nth(1)
+        .unwrap_or_else(|| panic!("{report}"));
+    let row = motors
+        .lines()
+        .find(|l| l.starts_with("linear_exact "))
+        .unwrap_or_else(|| panic!("{report}"));
+    assert_eq!(row.split_whitespace().nth(6), Some("7070.3"), "{row}");
 }
 
 #[test]
