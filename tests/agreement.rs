@@ -12,20 +12,12 @@
 //! cargo test --test agreement -- --nocapture
 //! ```
 
-use profile_core::motor::{Motor, MotorError, TorqueCurve};
+mod common;
+
+use profile_core::motor::{Motor, MotorError};
 use profile_core::player::{Player, Ramp};
 use profile_core::simulate::{self, SimOptions};
 use profile_core::{Curve, Linear, LinearExtent, Spec, Timer};
-
-/// Pull-out torque against full steps per second, N·m.
-const CURVE: [(f64, f64); 6] = [
-    (0.0, 0.40),
-    (500.0, 0.38),
-    (1000.0, 0.33),
-    (2000.0, 0.24),
-    (4000.0, 0.12),
-    (6000.0, 0.06),
-];
 
 const ACCELS: [f64; 10] = [
     50_000.0, 80_000.0, 100_000.0, 120_000.0, 140_000.0, 160_000.0, 180_000.0, 220_000.0,
@@ -36,21 +28,9 @@ const LOADS: [f64; 3] = [0.0, 1.0e-5, 2.0e-5];
 const MICROSTEPS: [u32; 2] = [1, 8];
 
 fn motor(load: f64, microsteps: u32) -> Motor {
-    let points: Vec<(f64, f64)> = CURVE
-        .iter()
-        .map(|&(hz, nm)| (hz * microsteps as f64, nm))
-        .collect();
     Motor {
-        step_angle: 1.8,
-        microsteps,
-        rotor_inertia: 5.4e-6,
-        load_inertia: load,
-        torque_curve: TorqueCurve::new(&points).unwrap(),
-        friction: 0.02,
-        damping: 0.0,
         damping_ratio: 0.1,
-        safety: 1.0,
-        max_start_hz: None,
+        ..common::motors::nema17(microsteps, load)
     }
 }
 

@@ -8,6 +8,9 @@
 //!
 //! Simulations print their figures (`cargo test --test motor -- --nocapture`).
 
+mod common;
+
+use common::motors::CURVE;
 use profile_core::Generated;
 use profile_core::build::Profiles;
 use profile_core::motor::{MAX_CURVE_POINTS, Motor, MotorError, StartLimit, TorqueCurve};
@@ -16,33 +19,14 @@ use profile_core::simulate::{self, MAX_STEPS, SimError, SimOptions, SimResult};
 use profile_core::{Curve, Key, Linear, LinearExtent, Spec, Timer};
 use stepper_profiles::period_table;
 
-/// Pull-out torque against full steps per second, N·m.
-const CURVE: [(f64, f64); 6] = [
-    (0.0, 0.40),
-    (500.0, 0.38),
-    (1000.0, 0.33),
-    (2000.0, 0.24),
-    (4000.0, 0.12),
-    (6000.0, 0.06),
-];
-
-/// The tests' motor at `microsteps`: its curve in the table's step frequency.
+/// The tests' motor at `microsteps`: its curve in the table's step
+/// frequency, a 2.0e-5 kg·m² load, `safety = 1.5`, `max_start_hz = 1200`
+/// full steps/s.
 fn nema17(microsteps: u32) -> Motor {
-    let points: Vec<(f64, f64)> = CURVE
-        .iter()
-        .map(|&(hz, nm)| (hz * microsteps as f64, nm))
-        .collect();
     Motor {
-        step_angle: 1.8,
-        microsteps,
-        rotor_inertia: 5.4e-6,
-        load_inertia: 2.0e-5,
-        torque_curve: TorqueCurve::new(&points).unwrap(),
-        friction: 0.02,
-        damping: 0.0,
-        damping_ratio: 0.0,
         safety: 1.5,
         max_start_hz: Some(1200.0 * microsteps as f64),
+        ..common::motors::nema17(microsteps, 2.0e-5)
     }
 }
 

@@ -34,6 +34,30 @@ fn find<'a>(profiles: &'a Profiles, name: &str) -> &'a Generated {
         .table
 }
 
+/// The constants every layout's module has, of the documented types,
+/// against the loaded table's spec and figures `f` (`total_ticks`,
+/// `duration_s`).
+macro_rules! timer_constants {
+    ($name:ident, $spec:expr, $f:expr) => {{
+        let name = stringify!($name);
+        let timer_hz: u32 = $name::TIMER_HZ;
+        let ticks_per_step: u8 = $name::TICKS_PER_STEP;
+        let total_ticks: u64 = $name::TOTAL_TICKS;
+        let duration_s: f64 = $name::DURATION_S;
+        assert_eq!(timer_hz, $spec.timer.timer_hz, "`{name}`: TIMER_HZ");
+        assert_eq!(
+            ticks_per_step, $spec.timer.ticks_per_step,
+            "`{name}`: TICKS_PER_STEP"
+        );
+        assert_eq!(total_ticks, $f.total_ticks, "`{name}`: TOTAL_TICKS");
+        assert_eq!(
+            duration_s.to_bits(),
+            $f.duration_s.to_bits(),
+            "`{name}`: DURATION_S"
+        );
+    }};
+}
+
 /// A per-step profile: the macro's module, the loaded table and a run-time
 /// `Spec::generate` into a fixed-size buffer agree; returns the name checked.
 macro_rules! steps {
@@ -46,8 +70,6 @@ macro_rules! steps {
 
         // Types of the constants, as documented.
         let len: usize = $name::LEN;
-        let timer_hz: u32 = $name::TIMER_HZ;
-        let ticks_per_step: u8 = $name::TICKS_PER_STEP;
         let total_ticks: u64 = $name::TOTAL_TICKS;
         let first_ticks: u32 = $name::FIRST_TICKS;
         let last_ticks: u32 = $name::LAST_TICKS;
@@ -60,19 +82,9 @@ macro_rules! steps {
         );
         assert_eq!(len, table.periods.len(), "`{name}`: LEN");
         assert_eq!(len, f.len as usize, "`{name}`: LEN vs figures");
-        assert_eq!(timer_hz, table.spec.timer.timer_hz, "`{name}`: TIMER_HZ");
-        assert_eq!(
-            ticks_per_step, table.spec.timer.ticks_per_step,
-            "`{name}`: TICKS_PER_STEP"
-        );
-        assert_eq!(total_ticks, f.total_ticks, "`{name}`: TOTAL_TICKS");
+        timer_constants!($name, table.spec, f);
         assert_eq!(first_ticks, f.first_ticks, "`{name}`: FIRST_TICKS");
         assert_eq!(last_ticks, f.last_ticks, "`{name}`: LAST_TICKS");
-        assert_eq!(
-            $name::DURATION_S.to_bits(),
-            f.duration_s.to_bits(),
-            "`{name}`: DURATION_S"
-        );
         assert_eq!(
             $name::START_HZ.to_bits(),
             f.start_hz.to_bits(),
@@ -137,8 +149,6 @@ macro_rules! segments {
 
         let count: usize = $name::SEGMENT_COUNT;
         let len: usize = $name::LEN;
-        let timer_hz: u32 = $name::TIMER_HZ;
-        let ticks_per_step: u8 = $name::TICKS_PER_STEP;
         let total_ticks: u64 = $name::TOTAL_TICKS;
 
         let macro_pairs: Vec<(u32, u32)> = $name::SEGMENTS
@@ -155,17 +165,7 @@ macro_rules! segments {
             "`{name}`: SEGMENT_COUNT vs figures"
         );
         assert_eq!(len, f.steps as usize, "`{name}`: LEN");
-        assert_eq!(timer_hz, table.spec.timer.timer_hz, "`{name}`: TIMER_HZ");
-        assert_eq!(
-            ticks_per_step, table.spec.timer.ticks_per_step,
-            "`{name}`: TICKS_PER_STEP"
-        );
-        assert_eq!(total_ticks, f.total_ticks, "`{name}`: TOTAL_TICKS");
-        assert_eq!(
-            $name::DURATION_S.to_bits(),
-            f.duration_s.to_bits(),
-            "`{name}`: DURATION_S"
-        );
+        timer_constants!($name, table.spec, f);
 
         assert_eq!(
             len,
@@ -211,8 +211,6 @@ macro_rules! runs {
 
         let count: usize = $name::RUN_COUNT;
         let len: usize = $name::LEN;
-        let timer_hz: u32 = $name::TIMER_HZ;
-        let ticks_per_step: u8 = $name::TICKS_PER_STEP;
         let total_ticks: u64 = $name::TOTAL_TICKS;
         let edge: f64 = $name::MAX_EDGE_ERROR_TICKS;
 
@@ -223,17 +221,7 @@ macro_rules! runs {
         );
         assert_eq!(count, f.runs as usize, "`{name}`: RUN_COUNT vs figures");
         assert_eq!(len, f.steps as usize, "`{name}`: LEN");
-        assert_eq!(timer_hz, table.spec.timer.timer_hz, "`{name}`: TIMER_HZ");
-        assert_eq!(
-            ticks_per_step, table.spec.timer.ticks_per_step,
-            "`{name}`: TICKS_PER_STEP"
-        );
-        assert_eq!(total_ticks, f.total_ticks, "`{name}`: TOTAL_TICKS");
-        assert_eq!(
-            $name::DURATION_S.to_bits(),
-            f.duration_s.to_bits(),
-            "`{name}`: DURATION_S"
-        );
+        timer_constants!($name, table.spec, f);
         assert_eq!(
             edge.to_bits(),
             f.max_edge_error_ticks.to_bits(),

@@ -10,6 +10,7 @@
 //! - [`scratch`]: user crates on disk, depending on this package by path,
 //!   built by Cargo into one shared target directory;
 //! - [`lcg`]: a fixed, dependency-free stream of pseudo-random numbers;
+//! - [`motors`]: the NEMA 17 of the motor tests;
 //! - [`seeds`]: the seeds' own curves and calls, as specs and as
 //!   `period_table!` expands them.
 //!
@@ -22,6 +23,8 @@ pub mod cc;
 pub mod golden;
 #[allow(dead_code)]
 pub mod lcg;
+#[allow(dead_code)]
+pub mod motors;
 #[allow(dead_code)]
 pub mod oracle;
 #[allow(dead_code)]

@@ -314,6 +314,24 @@ pub(super) struct Rotor {
 }
 
 impl Rotor {
+    /// `motor`'s rotor and load, at rest and aligned with the field.
+    pub(super) fn at_rest(motor: &Motor) -> Self {
+        Rotor {
+            theta: 0.0,
+            omega: 0.0,
+            poles: motor.poles(),
+            inertia: motor.rotor_inertia + motor.load_inertia,
+            friction: motor.friction,
+            damping: motor.damping,
+            field_damping: motor.field_damping(),
+            well: 0,
+            slips: 0,
+            first_slip: None,
+            pulses: 0,
+            steps: 0,
+        }
+    }
+
     /// Integrates `settle_s` with the command held at `cmd` and the holding
     /// torque; returns the largest swing past `cmd`, in radians.
     fn settle(&mut self, cmd: f64, holding: f64, settle_s: f64, dt_s: f64) -> f64 {
@@ -446,20 +464,7 @@ pub fn run(
     let step = motor.step_radians();
     // Electrical radians to table steps.
     let to_steps = 1.0 / (poles * step);
-    let mut rotor = Rotor {
-        theta: 0.0,
-        omega: 0.0,
-        poles,
-        inertia,
-        friction: motor.friction,
-        damping: motor.damping,
-        field_damping: motor.field_damping(),
-        well: 0,
-        slips: 0,
-        first_slip: None,
-        pulses: 0,
-        steps: 0,
-    };
+    let mut rotor = Rotor::at_rest(motor);
     let mut max_lag = 0.0f64;
     let mut max_lag_pulse = 0u32;
     for (k, &p) in periods.iter().enumerate() {

@@ -207,20 +207,7 @@ pub(super) fn meets<I: Iterator<Item = f64> + Clone>(
         return None;
     }
     let step = motor.step_radians();
-    let mut rotor = Rotor {
-        theta: 0.0,
-        omega: 0.0,
-        poles,
-        inertia,
-        friction: motor.friction,
-        damping: motor.damping,
-        field_damping: motor.field_damping(),
-        well: 0,
-        slips: 0,
-        first_slip: None,
-        pulses: 0,
-        steps: 0,
-    };
+    let mut rotor = Rotor::at_rest(motor);
     let mut caught_up = false;
     let mut count = 0u32;
     for (k, duration) in seconds.enumerate() {

@@ -1,0 +1,36 @@
+//! The NEMA 17 of the motor tests: a 1.8° motor, 0.40 N·m holding torque,
+//! rotor inertia 5.4e-6 kg·m², friction 0.02 N·m, its pull-out curve in full
+//! steps per second scaled to the table's steps.
+
+use profile_core::motor::{Motor, TorqueCurve};
+
+/// Pull-out torque against full steps per second, N·m.
+pub const CURVE: [(f64, f64); 6] = [
+    (0.0, 0.40),
+    (500.0, 0.38),
+    (1000.0, 0.33),
+    (2000.0, 0.24),
+    (4000.0, 0.12),
+    (6000.0, 0.06),
+];
+
+/// The motor at `microsteps` with a load of `load` kg·m²: undamped, no
+/// safety factor, no `max_start_hz` (each test sets what it judges).
+pub fn nema17(microsteps: u32, load: f64) -> Motor {
+    let points: Vec<(f64, f64)> = CURVE
+        .iter()
+        .map(|&(hz, nm)| (hz * microsteps as f64, nm))
+        .collect();
+    Motor {
+        step_angle: 1.8,
+        microsteps,
+        rotor_inertia: 5.4e-6,
+        load_inertia: load,
+        torque_curve: TorqueCurve::new(&points).unwrap(),
+        friction: 0.02,
+        damping: 0.0,
+        damping_ratio: 0.0,
+        safety: 1.0,
+        max_start_hz: None,
+    }
+}
