@@ -28,7 +28,7 @@
 pub mod simulate;
 mod start;
 
-pub use start::{START_FULL_STEPS, START_MAX_STEPS, START_RESOLUTION, StartLimit};
+pub use start::{END_FULL_STEPS, START_FULL_STEPS, START_MAX_STEPS, START_RESOLUTION, StartLimit};
 
 use core::fmt;
 

@@ -83,7 +83,7 @@
 //! # Ok::<(), profile_core::Error>(())
 //! ```
 
-use core::f64::consts::{FRAC_PI_2, PI, TAU};
+use core::f64::consts::{PI, TAU};
 use core::fmt;
 
 use crate::motor::{Motor, MotorError};
@@ -119,19 +119,9 @@ impl SimOptions {
             .filter(|&&p| p > 0)
             .min()
             .map_or(f64::INFINITY, |&p| p as f64 / per_second);
-        let inertia = motor.rotor_inertia + motor.load_inertia;
-        let stiffness = motor.torque_curve.torque(0.0) * FRAC_PI_2 / motor.step_angle.to_radians();
-        let natural = TAU / libm::sqrt(stiffness / inertia);
-        let natural = if natural.is_finite() && natural > 0.0 {
-            natural
-        } else {
-            1e-3
-        };
-        let poles = FRAC_PI_2 / motor.step_angle.to_radians();
-        let stable = stable_step(motor, poles, inertia);
         SimOptions {
-            dt_s: (shortest / 50.0).min(natural / 200.0).min(stable / 4.0),
-            settle_s: (10.0 * natural).max(0.01),
+            dt_s: step_for(motor, shortest),
+            settle_s: (10.0 * natural_period(motor)).max(0.01),
         }
     }
 }
@@ -267,12 +257,33 @@ fn ticks_per_second(spec: &Spec) -> f64 {
     spec.timer.timer_hz as f64 / spec.timer.ticks_per_step as f64
 }
 
+/// The rotor's natural period at holding torque, `2π / sqrt(K / J)` in s
+/// ([`Motor::stiffness`]); 1 ms when that is not a finite number above 0.
+pub(super) fn natural_period(motor: &Motor) -> f64 {
+    let natural = TAU / libm::sqrt(motor.stiffness() / (motor.rotor_inertia + motor.load_inertia));
+    if natural.is_finite() && natural > 0.0 {
+        natural
+    } else {
+        1e-3
+    }
+}
+
+/// The integration step for pulses of at least `shortest` s: a fiftieth of
+/// that, a two-hundredth of the natural period, a quarter of the longest
+/// stable step, whichever is shortest.
+pub(super) fn step_for(motor: &Motor, shortest: f64) -> f64 {
+    (shortest / 50.0)
+        .min(natural_period(motor) / 200.0)
+        .min(stable_step(motor) / 4.0)
+}
+
 /// The longest integration step the semi-implicit Euler integrator takes
 /// stably, in s, with a factor of 2 to spare: `1/ω` where `ω` is the rotor's
 /// natural angular frequency at the curve's largest torque (the method is
 /// stable for `h ω < 2`), and `J / (β + D)` for the viscous and the
 /// electromagnetic damping (explicit in both, stable for `h (β + D) / J < 2`).
-pub(super) fn stable_step(motor: &Motor, poles: f64, inertia: f64) -> f64 {
+pub(super) fn stable_step(motor: &Motor) -> f64 {
+    let (poles, inertia) = (motor.poles(), motor.rotor_inertia + motor.load_inertia);
     let peak = motor
         .torque_curve
         .points()
@@ -453,8 +464,7 @@ pub fn run(
     }
     let per_second = ticks_per_second(spec);
     let poles = motor.poles();
-    let inertia = motor.rotor_inertia + motor.load_inertia;
-    let max_dt_s = stable_step(motor, poles, inertia);
+    let max_dt_s = stable_step(motor);
     if dt_s > max_dt_s {
         return Err(SimError::StepTooLong { dt_s, max_dt_s });
     }

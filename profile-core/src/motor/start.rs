@@ -2,10 +2,9 @@
 //! from a datasheet's no-load figure or from the model, and the motor's
 //! stiffness and electromagnetic damping the model uses.
 
-use core::f64::consts::TAU;
 use core::fmt;
 
-use crate::motor::simulate::{Rotor, stable_step, substeps};
+use crate::motor::simulate::{Rotor, natural_period, stable_step, step_for, substeps};
 use crate::motor::{Motor, MotorError};
 
 /// The fastest step frequency a motor starts at from rest with its load,
@@ -47,6 +46,11 @@ impl StartLimit {
 /// one electrical turn, in which a rotor that cannot pull in falls behind
 /// the field by more than half a turn.
 pub const START_FULL_STEPS: u32 = 4;
+
+/// Full steps of each end of a move the check plays to the model's rotor
+/// ([`Motor::check`]): from rest up the ramp's first entries, and the
+/// shortest move up them and down again.
+pub const END_FULL_STEPS: u32 = 4 * START_FULL_STEPS;
 
 /// The relative resolution of a start limit found from the model.
 pub const START_RESOLUTION: f64 = 1e-3;
@@ -118,12 +122,12 @@ impl Motor {
 
     /// The ends of a move on `periods`, played to the model's rotor: from
     /// rest, the start must pull in before the rotor slips; and the shortest
-    /// move on the ramp's start (up its first 16 full steps, down again, the
-    /// field held) must leave the rotor within the field's stable region.
+    /// move on the ramp's start (up its first [`END_FULL_STEPS`] full steps,
+    /// down again, the field held) must leave the rotor within the field's stable region.
     pub(super) fn check_ends(&self, per_second: f64, periods: &[u32]) -> Result<(), MotorError> {
         let hz = per_second / periods.first().map_or(1, |&p| p) as f64;
         let seconds = |p: &u32| *p as f64 / per_second;
-        let window = 4 * START_FULL_STEPS as usize * self.microsteps.max(1) as usize;
+        let window = END_FULL_STEPS as usize * self.microsteps.max(1) as usize;
         let window = &periods[..window.min(periods.len())];
         if let Some(pulse) = meets(self, window.iter().map(seconds), End::Start) {
             return Err(MotorError::PullIn { pulse, hz });
@@ -185,25 +189,19 @@ pub(super) fn meets<I: Iterator<Item = f64> + Clone>(
     seconds: I,
     end: End,
 ) -> Option<u32> {
-    let poles = motor.poles();
-    let inertia = motor.rotor_inertia + motor.load_inertia;
-    let natural = TAU / libm::sqrt(motor.stiffness() / inertia);
-    let natural = if natural.is_finite() && natural > 0.0 {
-        natural
+    let hold = if end == End::Stop {
+        2.0 * natural_period(motor)
     } else {
-        1e-3
+        0.0
     };
-    let hold = if end == End::Stop { 2.0 * natural } else { 0.0 };
     let (shortest, total) = seconds
         .clone()
         .fold((f64::INFINITY, hold), |(s, t), d| (s.min(d), t + d));
     if !(shortest > 0.0 && total.is_finite()) {
         return None;
     }
-    let stable = stable_step(motor, poles, inertia);
-    let dt = (shortest / 50.0).min(natural / 200.0).min(stable / 4.0);
-    let dt = dt.max(total / START_MAX_STEPS as f64);
-    if dt > stable || dt.is_nan() {
+    let dt = step_for(motor, shortest).max(total / START_MAX_STEPS as f64);
+    if dt > stable_step(motor) || dt.is_nan() {
         return None;
     }
     let step = motor.step_radians();
