@@ -92,17 +92,10 @@ fn write_compact_plot(
     path: &Path,
 ) -> Result<(), Box<dyn std::error::Error>> {
     let spec = p.table.spec();
-    let (layout, bound) = match &p.table {
-        Generated::Runs(t) => (
-            format!("{} runs", t.figures.runs),
-            t.figures.max_edge_error_ticks,
-        ),
-        Generated::Segments(t) => (
-            format!("{} segments", t.figures.segments),
-            t.figures.max_edge_error_ticks,
-        ),
-        Generated::Steps(_) => return Ok(()),
+    let Some(c) = p.table.compact() else {
+        return Ok(());
     };
+    let (layout, bound) = (format!("{} {}", c.entries, c.kind), c.max_edge_error_ticks);
     let compact = p.table.step_periods();
     let per_step = spec.table()?.periods;
     let mut edges = vec![0.0];
@@ -167,7 +160,7 @@ pub fn write_plots(
         let csv_path = out.join(format!("{}.csv", p.name));
         std::fs::write(&csv_path, csv)?;
         written.push(csv_path);
-        if !matches!(p.table, Generated::Steps(_)) {
+        if p.table.compact().is_some() {
             let edges = out.join(format!("{}_edges.svg", p.name));
             write_compact_plot(p, color, &edges)?;
             written.push(edges);

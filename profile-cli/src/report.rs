@@ -4,13 +4,13 @@
 
 use std::fmt::Write as _;
 
-use profile_core::Generated;
 use profile_core::build::Profiles;
 use profile_core::emit::{Profile, start_note};
 use profile_core::motor::Motor;
 use profile_core::player::{Player, Ramp};
 use profile_core::schema::describe;
 use profile_core::simulate::{self, SimOptions, SimResult};
+use profile_core::{Compact, Generated};
 use profile_core::{Discretization, Error, Rounding, Spec};
 
 /// The whole report of `profiles`, read from `path`.
@@ -112,20 +112,10 @@ fn print_table(out: &mut String, profiles: &[Profile]) -> Result<(), Error> {
                     ],
                 );
             }
-            Generated::Runs(t) => {
-                let f = &t.figures;
-                let (steps, flash, edge) = (f.steps, f.flash_bytes, f.max_edge_error_ticks);
-                compact_row(out, p, &format!("{} runs", f.runs), (steps, flash, edge));
-            }
-            Generated::Segments(t) => {
-                let f = &t.figures;
-                let (steps, flash, edge) = (f.steps, f.flash_bytes, f.max_edge_error_ticks);
-                compact_row(
-                    out,
-                    p,
-                    &format!("{} segments", f.segments),
-                    (steps, flash, edge),
-                );
+            Generated::Runs(_) | Generated::Segments(_) => {
+                if let Some(c) = p.table.compact() {
+                    compact_row(out, p, &c);
+                }
             }
         }
     }
@@ -156,35 +146,19 @@ fn print_table(out: &mut String, profiles: &[Profile]) -> Result<(), Error> {
 /// A compact layout's flash against one entry per step, and its edge error
 /// against what it was asked for.
 fn compact_note(table: &Generated) -> Option<String> {
-    let (layout, flash, per_step, edge, asked) = match table {
-        Generated::Steps(_) => return None,
-        Generated::Runs(t) => {
-            let f = &t.figures;
-            let asked = format!(" (`compress = {}`)", f.tolerance_ticks);
-            (
-                format!("{} runs", f.runs),
-                f.flash_bytes,
-                f.per_step_flash_bytes,
-                f.max_edge_error_ticks,
-                asked,
-            )
-        }
-        Generated::Segments(t) => {
-            let f = &t.figures;
-            let layout = format!("{} segments", f.segments);
-            (
-                layout,
-                f.flash_bytes,
-                f.per_step_flash_bytes,
-                f.max_edge_error_ticks,
-                String::new(),
-            )
-        }
-    };
+    let c = table.compact()?;
+    let asked = c
+        .tolerance_ticks
+        .map_or(String::new(), |e| format!(" (`compress = {e}`)"));
     Some(format!(
-        "{layout} take {flash} bytes of flash against {per_step} for one entry per step \
-         ({:.1} times less); every pulse edge is within {edge:.3} ticks of the curve{asked}.",
-        f64::from(per_step) / f64::from(flash.max(1))
+        "{} {} take {} bytes of flash against {} for one entry per step ({:.1} times less); \
+         every pulse edge is within {:.3} ticks of the curve{asked}.",
+        c.entries,
+        c.kind,
+        c.flash_bytes,
+        c.per_step_flash_bytes,
+        f64::from(c.per_step_flash_bytes) / f64::from(c.flash_bytes.max(1)),
+        c.max_edge_error_ticks
     ))
 }
 
@@ -198,28 +172,27 @@ fn table_row(out: &mut String, c: [&str; 13]) {
 }
 
 /// A row of a compact layout (segments, runs): its frequencies from the
-/// periods it plays; `(steps, flash bytes, largest edge error)`.
-fn compact_row(out: &mut String, p: &Profile, layout: &str, (steps, flash, edge): (u32, u32, f64)) {
+/// periods it plays.
+fn compact_row(out: &mut String, p: &Profile, c: &Compact) {
     let s = p.table.spec();
     let periods = p.table.step_periods();
     let hz = |ticks: Option<&u32>| s.timer.ticks_per_second() / f64::from(*ticks.unwrap_or(&1));
     let top = periods.iter().copied().max().unwrap_or(0);
-    let total: u64 = periods.iter().map(|&t| u64::from(t)).sum();
     table_row(
         out,
         [
             &p.name,
             s.curve.name(),
-            layout,
-            &steps.to_string(),
+            &format!("{} {}", c.entries, c.kind),
+            &c.steps.to_string(),
             &format!("{:.1}", hz(periods.first())),
             &format!("{:.1}", hz(periods.last())),
-            &format!("{:.4}", total as f64 / s.timer.ticks_per_second()),
-            &flash.to_string(),
+            &format!("{:.4}", c.total_ticks as f64 / s.timer.ticks_per_second()),
+            &c.flash_bytes.to_string(),
             "-",
             "-",
             "-",
-            &format!("{edge:.3}"),
+            &format!("{:.3}", c.max_edge_error_ticks),
             &(s.timer.word.max() - top).to_string(),
         ],
     );

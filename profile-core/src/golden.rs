@@ -51,7 +51,7 @@ use std::vec::Vec;
 use crate::base::key::Key;
 use crate::build::Profiles;
 use crate::schema::describe;
-use crate::table::owned::{Generated, expand};
+use crate::table::owned::{Compact, Generated, expand};
 
 /// A table as a golden file holds it.
 #[derive(Clone, Debug, PartialEq)]
@@ -200,29 +200,12 @@ impl Golden for Generated {
                 ));
                 Body::Periods(t.periods.clone())
             }
-            Generated::Segments(t) => {
-                let f = &t.figures;
-                header.extend(compact(
-                    f.steps,
-                    f.flash_bytes,
-                    f.duration_s,
-                    f.max_edge_error_ticks,
-                    f.total_error_ticks,
-                ));
-                Body::Segments(t.pairs.clone())
-            }
-            Generated::Runs(t) => {
-                let f = &t.figures;
-                header.extend(compact(
-                    f.steps,
-                    f.flash_bytes,
-                    f.duration_s,
-                    f.max_edge_error_ticks,
-                    f.total_error_ticks,
-                ));
-                Body::Runs(t.runs.clone())
-            }
+            Generated::Segments(t) => Body::Segments(t.pairs.clone()),
+            Generated::Runs(t) => Body::Runs(t.runs.clone()),
         };
+        if let Some(c) = self.compact() {
+            header.extend(compact(&c));
+        }
         Entries {
             header,
             body,
@@ -234,19 +217,17 @@ impl Golden for Generated {
 
 /// The figures of a compact layout (segments, runs): the steps it plays,
 /// its flash, then the timing.
-fn compact(
-    steps: u32,
-    flash_bytes: u32,
-    duration_s: f64,
-    max_edge: f64,
-    total_error: f64,
-) -> impl Iterator<Item = (String, String)> {
+fn compact(c: &Compact) -> impl Iterator<Item = (String, String)> {
     [
-        ("steps".to_string(), steps.to_string()),
-        ("flash_bytes".to_string(), flash_bytes.to_string()),
+        ("steps".to_string(), c.steps.to_string()),
+        ("flash_bytes".to_string(), c.flash_bytes.to_string()),
     ]
     .into_iter()
-    .chain(timing(duration_s, max_edge, total_error))
+    .chain(timing(
+        c.duration_s,
+        c.max_edge_error_ticks,
+        c.total_error_ticks,
+    ))
 }
 
 /// The figures every layout has: how long it plays and how far its edges

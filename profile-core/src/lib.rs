@@ -56,7 +56,7 @@ pub use motor::simulate;
 #[cfg(feature = "std")]
 pub use table::compress::{MIN_COMPRESS_TICKS, RunFigures, RunTable};
 #[cfg(feature = "std")]
-pub use table::owned::{Generated, SegmentTable, Table};
+pub use table::owned::{Compact, Generated, SegmentTable, Table};
 pub use table::quantize::{ACCEL_WINDOW, Figures};
 pub use table::runs;
 pub use table::segments::SegmentFigures;

@@ -42,6 +42,31 @@ pub enum Generated {
     Runs(RunTable),
 }
 
+/// What a compact layout (segments or runs) amounts to, whichever it is.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Compact {
+    /// The layout: `"segments"` or `"runs"`.
+    pub kind: &'static str,
+    /// Its entries: segments or runs.
+    pub entries: u32,
+    /// Steps in the ramp.
+    pub steps: u32,
+    /// Flash of the table, in bytes.
+    pub flash_bytes: u32,
+    /// Flash of the per-step table of the same ramp, in bytes.
+    pub per_step_flash_bytes: u32,
+    /// Sum of the periods played, in ticks.
+    pub total_ticks: u64,
+    /// Ramp duration as played, in s.
+    pub duration_s: f64,
+    /// Largest distance of a played pulse edge from the curve's, in ticks.
+    pub max_edge_error_ticks: f64,
+    /// Last played edge minus the exact end of the ramp, in ticks.
+    pub total_error_ticks: f64,
+    /// The largest edge error asked for (`compress`), for runs.
+    pub tolerance_ticks: Option<f64>,
+}
+
 /// `(period, count)` segments as one period per step: the one place a
 /// segment table is expanded.
 pub(crate) fn expand(pairs: &[(u32, u32)]) -> Vec<u32> {
@@ -58,6 +83,44 @@ impl Generated {
             Generated::Steps(t) => t.periods.clone(),
             Generated::Segments(t) => expand(&t.pairs),
             Generated::Runs(t) => crate::table::runs::Expand::new(&t.runs).collect(),
+        }
+    }
+
+    /// The figures a compact layout (segments, runs) shares; `None` for one
+    /// entry per step.
+    pub fn compact(&self) -> Option<Compact> {
+        match self {
+            Generated::Steps(_) => None,
+            Generated::Segments(t) => {
+                let f = &t.figures;
+                Some(Compact {
+                    kind: "segments",
+                    entries: f.segments,
+                    steps: f.steps,
+                    flash_bytes: f.flash_bytes,
+                    per_step_flash_bytes: f.per_step_flash_bytes,
+                    total_ticks: f.total_ticks,
+                    duration_s: f.duration_s,
+                    max_edge_error_ticks: f.max_edge_error_ticks,
+                    total_error_ticks: f.total_error_ticks,
+                    tolerance_ticks: None,
+                })
+            }
+            Generated::Runs(t) => {
+                let f = &t.figures;
+                Some(Compact {
+                    kind: "runs",
+                    entries: f.runs,
+                    steps: f.steps,
+                    flash_bytes: f.flash_bytes,
+                    per_step_flash_bytes: f.per_step_flash_bytes,
+                    total_ticks: f.total_ticks,
+                    duration_s: f.duration_s,
+                    max_edge_error_ticks: f.max_edge_error_ticks,
+                    total_error_ticks: f.total_error_ticks,
+                    tolerance_ticks: Some(f.tolerance_ticks),
+                })
+            }
         }
     }
 
