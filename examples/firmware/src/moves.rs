@@ -6,8 +6,6 @@ use cortex_m::peripheral::SYST;
 use cortex_m_semihosting::hprintln;
 use stepper_profiles::player::{Player, Ramp};
 
-use stepper_profiles::{Curve, Linear, LinearExtent, Spec, Timer};
-
 use crate::profiles::{exponential_segments, microstep_runs, sigmoid_exact, sigmoid_orange};
 use crate::step::{self, Stepper};
 use crate::{DECEL, Report};
@@ -633,13 +631,11 @@ const RUNS_MOVE: &str = "runs (microstep_runs)";
 /// curve's, computed here on the target: within the `compress` the table
 /// was built for.
 fn check_edges(log: &[u16], report: &mut Report) {
-    let spec = Spec::new(
-        Curve::Linear(Linear {
-            fmin: 1600.0,
-            fmax: 48_000.0,
-            extent: LinearExtent::Accel(160_000.0),
-        }),
-        Timer::new(microstep_runs::TIMER_HZ),
+    let spec = crate::regen::microstep_spec();
+    report.equal(
+        "microstep_runs timer",
+        spec.timer.timer_hz.into(),
+        microstep_runs::TIMER_HZ.into(),
     );
     let scale = spec.timer.ticks_per_second();
     let (mut played, mut worst, mut edges) = (0u64, 0.0f64, 0u32);

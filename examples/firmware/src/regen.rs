@@ -48,6 +48,19 @@ fn exponential_spec() -> Spec {
     )
 }
 
+/// `microstep` and `microstep_runs`: 1600 Hz to 48 kHz at 160 000 Hz/s on
+/// the 10 MHz timer of `[defaults]`.
+pub fn microstep_spec() -> Spec {
+    Spec::new(
+        Curve::Linear(Linear {
+            fmin: 1600.0,
+            fmax: 48_000.0,
+            extent: LinearExtent::Accel(160_000.0),
+        }),
+        TIMER,
+    )
+}
+
 fn linear(len: u32) -> Spec {
     Spec::new(
         Curve::Linear(Linear {
@@ -143,19 +156,7 @@ pub fn run(report: &mut Report) {
         &linear_integer::PERIODS,
     );
     same(report, "linear_exact", &linear(200), &linear_exact::PERIODS);
-    same(
-        report,
-        "microstep",
-        &Spec::new(
-            Curve::Linear(Linear {
-                fmin: 1600.0,
-                fmax: 48_000.0,
-                extent: LinearExtent::Accel(160_000.0),
-            }),
-            TIMER,
-        ),
-        &microstep::PERIODS,
-    );
+    same(report, "microstep", &microstep_spec(), &microstep::PERIODS);
     same(
         report,
         "three_stage",
