@@ -2,7 +2,7 @@
 //!
 //! `PROPTEST_CASES` sets the number of cases (default 256 per property here).
 
-use profile_core::player::{Player, Ramp};
+use profile_core::player::{Compressed, Player, Ramp};
 use profile_core::runs::{Expand, Run as RunWords};
 use proptest::prelude::*;
 
@@ -400,25 +400,37 @@ fn compare<W: TableWord + core::fmt::Debug + PartialEq>(
         ramp(accel, &a_steps, &a_pairs, false),
         ramp(decel, &d_steps, &d_pairs, false),
     );
+    // Two compressed ramps: the player of compressed tables as well.
+    let mut compressed: Option<Player<'_, W, Compressed>> = match (accel, decel) {
+        (Shape::Runs(a), Shape::Runs(d)) => Some(Player::compressed_with_decel(a, d)),
+        _ => None,
+    };
     let mut steps = 0u64;
     for (i, op) in ops.iter().enumerate() {
         match *op {
             Op::Start(n) => {
                 planned.start(n);
                 model.start(n);
+                compressed.iter_mut().for_each(|c| c.start(n));
             }
             Op::Stop => {
                 planned.stop();
                 model.stop();
+                compressed.iter_mut().for_each(|c| c.stop());
             }
             Op::Cruise(pos) => {
                 planned.set_cruise(pos);
                 model.set_cruise(pos);
+                compressed.iter_mut().for_each(|c| c.set_cruise(pos));
             }
             Op::Play(n) => {
                 for k in 0..n {
                     let (got, want) = (planned.next_period(), model.next_period());
                     prop_assert_eq!(got, want, "op {} ({:?}), step {}", i, op, k);
+                    if let Some(c) = compressed.as_mut() {
+                        let got = c.next_period();
+                        prop_assert_eq!(got, want, "compressed: op {} ({:?}), step {}", i, op, k);
+                    }
                     steps += 1;
                     if want.is_none() {
                         break;
@@ -433,6 +445,14 @@ fn compare<W: TableWord + core::fmt::Debug + PartialEq>(
             i,
             op
         );
+        if let Some(c) = &compressed {
+            prop_assert_eq!(
+                c.remaining(),
+                model.remaining(),
+                "compressed: after op {}",
+                i
+            );
+        }
     }
     Ok(steps)
 }
@@ -473,6 +493,47 @@ fn plays_exactly_as_the_per_step_model() {
         .unwrap_or_else(|e| panic!("{e}"));
     println!(
         "planned player == per-step model: {} random operation sequences, {} steps compared",
+        sequences.get(),
+        steps.get()
+    );
+}
+
+/// The player of compressed tables ([`Player::compressed`]) plays every
+/// move exactly as the per-step model plays the runs' expansion (and as the
+/// player of any layout does): random runs (empty ones included), one ramp
+/// or two, u16 and u32, random operations. Prints the sequences and steps
+/// compared (`-- --nocapture`); `PROPTEST_CASES` times 4 sequences.
+#[test]
+fn the_compressed_player_plays_exactly_as_the_per_step_model() {
+    use proptest::test_runner::{Config, TestRunner};
+    let mut runner = TestRunner::new(Config {
+        cases: cases() * 4,
+        failure_persistence: None,
+        ..Config::default()
+    });
+    let strategy = (
+        any_runs(),
+        prop_oneof![1 => Just(None), 1 => any_runs().prop_map(Some)],
+        ops(),
+        any::<bool>(),
+    );
+    let (sequences, steps) = (std::cell::Cell::new(0u64), std::cell::Cell::new(0u64));
+    runner
+        .run(&strategy, |(accel, decel, ops, wide)| {
+            let accel = Shape::Runs(accel);
+            let decel = decel.map_or_else(|| accel.clone(), Shape::Runs);
+            let n = if wide {
+                compare::<u32>(&accel, &decel, &ops)?
+            } else {
+                compare::<u16>(&accel, &decel, &ops)?
+            };
+            sequences.set(sequences.get() + 1);
+            steps.set(steps.get() + n);
+            Ok(())
+        })
+        .unwrap_or_else(|e| panic!("{e}"));
+    println!(
+        "compressed player == per-step model: {} random operation sequences, {} steps compared",
         sequences.get(),
         steps.get()
     );

@@ -15,7 +15,7 @@ use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprintln};
 use panic_semihosting as _;
 use stepgen::Stepgen;
-use stepper_profiles::player::{Axis, Player, Ramp};
+use stepper_profiles::player::{Axis, Compressed, Player, Ramp};
 
 /// The tables of the root `profiles.toml`.
 mod profiles {
@@ -67,6 +67,13 @@ pub fn iter_step(periods: &mut core::slice::Iter<'_, u16>, timer: &mut SYST) {
 #[inline(never)]
 #[unsafe(no_mangle)]
 pub fn player_step(player: &mut Player<'_, u16>, timer: &mut SYST) {
+    player.step(|period| timer.set_reload(u32::from(period)));
+}
+
+/// The same for a player of compressed tables.
+#[inline(never)]
+#[unsafe(no_mangle)]
+pub fn player_runs_step(player: &mut Player<'_, u16, Compressed>, timer: &mut SYST) {
     player.step(|period| timer.set_reload(u32::from(period)));
 }
 
@@ -180,6 +187,23 @@ fn main() -> ! {
         (microstep_runs::LEN as u32, 1000),
         timer,
     );
+    // The player of compressed tables on the same move.
+    let mut player = Player::compressed(&microstep_runs::RUNS);
+    let up = microstep_runs::LEN as u32;
+    player.start(2 * up + 1000);
+    for (phase, n) in [
+        ("accelerating", up),
+        ("cruising", 1000),
+        ("decelerating", up),
+    ] {
+        steps(
+            "Player::compressed (microstep, compress = 1)",
+            phase,
+            n,
+            || player_runs_step(&mut player, timer),
+        );
+    }
+    check(player.is_done(), "compressed player");
     player_move(
         "player, segments (exponential_segments)",
         Ramp::segments(&exponential_segments::SEGMENTS),

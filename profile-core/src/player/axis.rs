@@ -1,6 +1,6 @@
 //! Where the motor is: a player that knows its position and its direction.
 
-use super::Player;
+use super::{AnyLayout, Layout, Player};
 use crate::base::timer::TableWord;
 
 /// The way a move turns the motor, for the driver's direction pin.
@@ -64,16 +64,16 @@ impl core::fmt::Display for Moving {
 // The player first, so that its step path keeps its offsets.
 #[derive(Clone, Debug)]
 #[repr(C)]
-pub struct Axis<'a, W> {
-    player: Player<'a, W>,
+pub struct Axis<'a, W, L = AnyLayout> {
+    player: Player<'a, W, L>,
     /// Where the move playing ends, in steps.
     end: i64,
     direction: Direction,
 }
 
-impl<'a, W: TableWord> Axis<'a, W> {
+impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
     /// An axis at `position` with its player at rest.
-    pub fn new(player: Player<'a, W>, position: i64) -> Self {
+    pub fn new(player: Player<'a, W, L>, position: i64) -> Self {
         Axis {
             player,
             end: position,
@@ -161,7 +161,7 @@ impl<'a, W: TableWord> Axis<'a, W> {
     }
 
     /// The player.
-    pub fn player(&self) -> &Player<'a, W> {
+    pub fn player(&self) -> &Player<'a, W, L> {
         &self.player
     }
 

@@ -42,19 +42,28 @@
 //! ```
 
 mod axis;
+mod layout;
 mod plan;
 mod ramp;
 
+use core::marker::PhantomData;
+
 use crate::base::timer::TableWord;
 pub use axis::{Axis, Direction, Moving};
+pub use layout::{AnyLayout, Compressed, Layout};
 use plan::{Plan, Run, RunState, Sides};
 pub use ramp::Ramp;
 
 /// Plays moves from an acceleration ramp and a deceleration ramp.
-// The run's fields come first, at the smallest offsets, for the step path.
+///
+/// `L` says which ramps it plays, and so which path its step takes first:
+/// [`AnyLayout`] (the default, from [`Player::new`]) plays every layout,
+/// [`Compressed`] (from [`Player::compressed`]) only compressed tables,
+/// at the least cost per step.
+// The runs' fields come first, at the smallest offsets, for the step paths.
 #[derive(Clone, Debug)]
 #[repr(C)]
-pub struct Player<'a, W> {
+pub struct Player<'a, W, L = AnyLayout> {
     /// The run being played: what is left of it.
     run: Run<'a, W>,
     /// The run of a compressed ramp being played (`run` is then empty).
@@ -73,6 +82,7 @@ pub struct Player<'a, W> {
     /// The first acceleration step faster than `decel_fastest`.
     cap: u32,
     cruise: u32,
+    layout: PhantomData<L>,
 }
 
 impl<'a, W: TableWord> Player<'a, W> {
@@ -84,6 +94,46 @@ impl<'a, W: TableWord> Player<'a, W> {
     /// A player with its own deceleration ramp (also ordered slow to fast),
     /// for asymmetric moves.
     pub fn with_decel(accel: Ramp<'a, W>, decel: Ramp<'a, W>) -> Self {
+        Self::build(accel, decel)
+    }
+}
+
+impl<'a, W: TableWord> Player<'a, W, Compressed> {
+    /// A player of a compressed table (a profile's `RUNS`, or
+    /// `period_table!(.., compress = E)`), decelerating along it read
+    /// backwards. It plays what `Player::new(Ramp::runs(runs))` plays,
+    /// period for period, with a step path that knows its ramps are runs.
+    ///
+    /// ```
+    /// use profile_core::player::{Player, Ramp};
+    ///
+    /// // 3 steps from 4000.5 ticks, 500 shorter each, then 2 of 2000.
+    /// static RUNS: [[u16; 5]; 2] = [[3, 4000, 0x8000, 0xFE0C, 0], [2, 2000, 0, 0, 0]];
+    /// let mut fast = Player::<u16, _>::compressed(&RUNS);
+    /// let mut any = Player::new(Ramp::runs(&RUNS));
+    /// fast.start(12);
+    /// any.start(12);
+    /// let mut periods = [0u16; 12];
+    /// for p in periods.iter_mut() {
+    ///     *p = fast.next_period().unwrap();
+    ///     assert_eq!(Some(*p), any.next_period());
+    /// }
+    /// assert_eq!(fast.next_period(), None);
+    /// assert_eq!(periods[..6], [4001, 3500, 3001, 2000, 2000, 2000]);
+    /// ```
+    pub fn compressed(runs: &'a [[u16; 5]]) -> Self {
+        Self::compressed_with_decel(runs, runs)
+    }
+
+    /// A player of two compressed tables, one to accelerate and one to
+    /// decelerate (also ordered slow to fast).
+    pub fn compressed_with_decel(accel: &'a [[u16; 5]], decel: &'a [[u16; 5]]) -> Self {
+        Self::build(Ramp::runs(accel), Ramp::runs(decel))
+    }
+}
+
+impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
+    fn build(accel: Ramp<'a, W>, decel: Ramp<'a, W>) -> Self {
         let accel_last = accel.len_steps().saturating_sub(1);
         let decel_fastest = decel.fastest();
         Player {
@@ -98,6 +148,7 @@ impl<'a, W: TableWord> Player<'a, W> {
             computed: RunState::default(),
             before: 0,
             plan: Plan::EMPTY,
+            layout: PhantomData,
         }
     }
 
@@ -120,7 +171,9 @@ impl<'a, W: TableWord> Player<'a, W> {
         self.computed = RunState::default();
         self.before = before;
         // The first run now, so that the first step plays at once.
-        if let Some(run) = self.next_run() {
+        if L::COMPRESSED {
+            self.refill_runs();
+        } else if let Some(run) = self.next_run() {
             self.run = run;
         }
     }
@@ -279,6 +332,9 @@ impl<'a, W: TableWord> Player<'a, W> {
     /// ```
     #[inline]
     pub fn step(&mut self, write: impl FnOnce(W)) -> bool {
+        if L::COMPRESSED {
+            return self.step_runs(write);
+        }
         // `refill` hands the player back, so that the step path keeps no
         // register across its call.
         let mut this = self;
@@ -321,6 +377,38 @@ impl<'a, W: TableWord> Player<'a, W> {
         }
     }
 
+    /// The step path of a player of compressed tables: its run first.
+    #[inline(always)]
+    fn step_runs(&mut self, write: impl FnOnce(W)) -> bool {
+        let mut this = self;
+        loop {
+            if let Some(ticks) = this.computed.next() {
+                write(W::from_ticks(ticks));
+                return true;
+            }
+            match this.refill_runs() {
+                Some(player) => this = player,
+                None => return false,
+            }
+        }
+    }
+
+    /// Begins the plan's next run of a compressed table; `None` when the
+    /// plan is played (or a ramp is not compressed, which the constructors
+    /// of a [`Compressed`] player rule out).
+    #[cold]
+    #[inline(never)]
+    fn refill_runs(&mut self) -> Option<&mut Self> {
+        let next = self.next_stretch()?;
+        let s = self.plan.stretches.get_mut(next)?;
+        let Ramp::Runs(runs) = (if s.decel { &self.decel } else { &self.accel }) else {
+            return None;
+        };
+        self.computed = s.at.take_run(runs, s.dir, s.count);
+        s.count -= self.computed.left;
+        Some(self)
+    }
+
     /// Begins the plan's next run; `None` when the plan is played.
     #[cold]
     #[inline(never)]
@@ -342,21 +430,26 @@ impl<'a, W: TableWord> Player<'a, W> {
         Some(self)
     }
 
-    /// The plan's next run, or `None` when the plan is played.
-    fn next_run(&mut self) -> Option<Run<'a, W>> {
-        // The next stretch with steps not yet handed out.
+    /// The next stretch with steps not yet handed out, now the one being
+    /// played; `None` when the plan is played.
+    #[inline(always)]
+    fn next_stretch(&mut self) -> Option<usize> {
         loop {
             let next = self.plan.next;
             if next >= self.plan.len {
                 return None;
             }
             if self.plan.stretches.get(next)?.count > 0 {
-                break;
+                self.plan.at = next;
+                return Some(next);
             }
             self.plan.next = next + 1;
         }
-        let next = self.plan.next;
-        self.plan.at = next;
+    }
+
+    /// The plan's next run, or `None` when the plan is played.
+    fn next_run(&mut self) -> Option<Run<'a, W>> {
+        let next = self.next_stretch()?;
         let s = self.plan.stretches.get_mut(next)?;
         if let Some(run) = s.run.take() {
             s.count = 0;
@@ -364,8 +457,15 @@ impl<'a, W: TableWord> Player<'a, W> {
             return Some(run);
         }
         let ramp = if s.decel { self.decel } else { self.accel };
+        if let Ramp::Runs(runs) = ramp {
+            // A compressed table: one run at a time, played by the step path
+            // from `computed` (behind an empty `Down` for any layout).
+            self.computed = s.at.take_run(runs, s.dir, s.count);
+            s.count -= self.computed.left;
+            return Some(Run::Down([].iter()));
+        }
         let forward = s.dir > 0;
-        // A held, segment or compressed table: one entry (run) at a time.
+        // A held or segment table: one entry at a time.
         let n = if s.dir == 0 {
             s.count
         } else {
@@ -375,17 +475,7 @@ impl<'a, W: TableWord> Player<'a, W> {
         let run = match ramp {
             Ramp::Steps { periods, .. } => periods.get(entry).map(|p| Run::Hold(p, n)),
             Ramp::Segments(pairs) => pairs.get(entry).map(|p| Run::Hold(&p.0, n)),
-            Ramp::Runs(runs) => {
-                let (frac, interval, add) = s.at.run_state(runs, s.dir);
-                self.computed = RunState {
-                    left: n,
-                    frac,
-                    interval,
-                    add,
-                };
-                // The step path plays `computed` behind an empty `Down`.
-                Some(Run::Down([].iter()))
-            }
+            Ramp::Runs(_) => None,
         };
         // On to the next entry in the stretch's direction: to this entry's
         // last step that way, then one more.

@@ -12,6 +12,7 @@ use core::slice;
 
 use super::ramp::{Cursor, Ramp};
 use crate::base::timer::TableWord;
+use crate::table::runs::{FRACTION_MASK, RUN_FRACTION_BITS};
 
 /// A run of steps, as the step path plays it.
 #[derive(Clone, Debug)]
@@ -34,6 +35,21 @@ pub(crate) struct RunState {
     pub(crate) frac: u32,
     pub(crate) interval: u32,
     pub(crate) add: u32,
+}
+
+impl RunState {
+    /// The next step's period, in ticks, or `None` when the run is played.
+    #[inline(always)]
+    pub(crate) fn next(&mut self) -> Option<u32> {
+        if self.left == 0 {
+            return None;
+        }
+        self.left -= 1;
+        let x = self.frac.wrapping_add(self.interval);
+        self.frac = x & FRACTION_MASK;
+        self.interval = self.interval.wrapping_add(self.add);
+        Some(x >> RUN_FRACTION_BITS)
+    }
 }
 
 impl<'a, W: TableWord> Run<'a, W> {

@@ -1,18 +1,18 @@
 //! A ramp to play, and positions along it.
 
+use super::plan::RunState;
 use crate::base::timer::TableWord;
-use crate::table::runs::{Expand, RUN_FRACTION_BITS, RUN_START_FRACTION, Run};
-
-const FRACTION_MASK: u32 = (1 << RUN_FRACTION_BITS) - 1;
+use crate::table::runs::{Expand, FRACTION_MASK, RUN_FRACTION_BITS, RUN_START_FRACTION, Run};
 
 /// Run `index` of `runs`, decoded.
 fn run_at(runs: &[[u16; 5]], index: u32) -> Option<Run> {
     runs.get(index as usize).map(Run::decode)
 }
 
-/// `n (n - 1) / 2`, exact for any `n` a run count holds.
+/// `n (n - 1) / 2`, exact for any `n` up to 65 536 (a run's count is at
+/// most 65 535), in 32-bit arithmetic.
 fn triangle(n: u32) -> u32 {
-    ((n as u64 * n.saturating_sub(1) as u64) >> 1) as u32
+    n.wrapping_mul(n.saturating_sub(1)) >> 1
 }
 
 /// A run's state `(frac, interval)` `n` steps later.
@@ -372,27 +372,74 @@ impl Cursor {
         }
     }
 
-    /// The run under the cursor from here towards the fast end (`dir` 1),
-    /// the slow end (-1), or held (0), as `(frac, interval, add)` for the
-    /// forward recurrence `x = frac + interval; period = x >> 16; frac = x
-    /// & 0xFFFF; interval += add`. Only for a compressed ramp.
+    /// Hands out the run under the cursor to a stretch reading towards the
+    /// fast end (`dir` 1), the slow end (-1) or held (0): at most `limit`
+    /// steps of it, as the state the step path plays (the forward
+    /// recurrence `x = frac + interval; period = x >> 16; frac = x &
+    /// 0xFFFF; interval += add`), and moves the cursor past them when the
+    /// stretch goes on. At least one step when `limit` is not 0. One
+    /// decoding of the run, and of the next one when the cursor moves to it.
     ///
     /// Backwards, the periods are the ceiling differences of the reflected
     /// edges, which the same recurrence gives from the remainder's
     /// complement after this step, this step's interval and `-add`.
-    pub(crate) fn run_state(&self, runs: &[[u16; 5]], dir: i8) -> (u32, u32, u32) {
-        let add = run_at(runs, self.entry).map_or(0, |r| r.add as u32);
+    pub(crate) fn take_run(&mut self, runs: &[[u16; 5]], dir: i8, limit: u32) -> RunState {
+        let run = run_at(runs, self.entry);
+        let add = run.map_or(0, |r| r.add as u32);
+        let (frac, interval) = (self.frac, self.interval);
         match dir {
-            1 => (self.frac, self.interval, add),
+            1 => {
+                let count = run.map_or(limit, |r| u32::from(r.count));
+                let n = count.saturating_sub(self.within).max(1).min(limit);
+                if n < limit {
+                    // On to the first step of the next run that holds one.
+                    self.pos += n;
+                    self.within = 0;
+                    self.frac = ahead(frac, interval, add, n).0;
+                    loop {
+                        self.entry += 1;
+                        match run_at(runs, self.entry) {
+                            Some(r) if r.count == 0 => continue,
+                            Some(r) => self.interval = r.interval,
+                            None => {}
+                        }
+                        break;
+                    }
+                }
+                RunState {
+                    left: n,
+                    frac,
+                    interval,
+                    add,
+                }
+            }
             -1 => {
-                let end = self.frac.wrapping_add(self.interval);
-                let frac = FRACTION_MASK.wrapping_sub(end) & FRACTION_MASK;
-                (frac, self.interval, add.wrapping_neg())
+                let n = (self.within + 1).min(limit);
+                if n < limit {
+                    // To the run's first step, then the last step of the
+                    // previous run that holds one.
+                    self.pos -= n;
+                    (self.frac, self.interval) = behind(frac, interval, add, self.within);
+                    self.within = 0;
+                    self.run_backward(runs);
+                }
+                let end = frac.wrapping_add(interval);
+                RunState {
+                    left: n,
+                    frac: FRACTION_MASK.wrapping_sub(end) & FRACTION_MASK,
+                    interval,
+                    add: add.wrapping_neg(),
+                }
             }
             _ => {
                 // One period, again and again: no remainder, no change.
-                let period = self.frac.wrapping_add(self.interval) >> RUN_FRACTION_BITS;
-                (0, period << RUN_FRACTION_BITS, 0)
+                let period = frac.wrapping_add(interval) >> RUN_FRACTION_BITS;
+                RunState {
+                    left: limit,
+                    frac: 0,
+                    interval: period << RUN_FRACTION_BITS,
+                    add: 0,
+                }
             }
         }
     }

@@ -22,7 +22,7 @@ pub const RUN_FRACTION_BITS: u32 = 16;
 /// The sub-tick remainder before the first step: half a tick.
 pub const RUN_START_FRACTION: u32 = 1 << (RUN_FRACTION_BITS - 1);
 
-const FRACTION_MASK: u32 = (1 << RUN_FRACTION_BITS) - 1;
+pub(crate) const FRACTION_MASK: u32 = (1 << RUN_FRACTION_BITS) - 1;
 
 /// One run, decoded: steps, first period and per-step change, in ticks
 /// scaled by `2^RUN_FRACTION_BITS`.
