@@ -7,8 +7,9 @@
 //! toggles a GPIO step pin; the main program starts each move and waits.
 //! The moves cover a trapezoid, a triangle, an asymmetric ramp pair, stops,
 //! cruise changes, a held (divider) ramp, a segment table and a compressed
-//! (runs) table, whose every accelerating pulse edge is also checked against
-//! the exact curve computed on the target; each is compared
+//! (runs) table, played by `Player::compressed` and by the player of any
+//! layout, whose every accelerating pulse edge is also checked against the
+//! exact curve computed on the target; each is compared
 //! step by step with a plain reference reading of the tables and with the
 //! figures the macros emit (`TOTAL_TICKS`, `LAST_TICKS`, ...). Then the tables
 //! are generated again on the target with `Spec::generate` and compared bit

@@ -7,7 +7,7 @@ use cortex_m_semihosting::hprintln;
 use stepper_profiles::player::{Player, Ramp};
 
 use crate::profiles::{exponential_segments, microstep_runs, sigmoid_exact, sigmoid_orange};
-use crate::step::{self, Stepper};
+use crate::step::{self, Players, Stepper};
 use crate::{DECEL, Report};
 
 /// A ramp as the reference model reads it.
@@ -215,6 +215,9 @@ pub struct Move<'a> {
     pub steps: u32,
     /// Events before given steps.
     pub events: &'static [(u32, Event)],
+    /// Played by `Player::compressed` (both ramps are runs), else by
+    /// `Player::with_decel`.
+    pub compressed: bool,
 }
 
 /// What a move amounted to.
@@ -243,8 +246,16 @@ pub fn play(
     log: &'static mut [u16; step::MAX_STEPS],
     report: &mut Report,
 ) -> (Played, SYST, &'static mut [u16; step::MAX_STEPS]) {
-    let mut player = Player::with_decel(m.accel.ramp(), m.decel.ramp());
-    player.start(m.steps);
+    let mut player = match (m.compressed, m.accel, m.decel) {
+        (true, Table::Runs(a), Table::Runs(d)) => {
+            Players::Compressed(Player::compressed_with_decel(a, d))
+        }
+        _ => Players::Any(Player::with_decel(m.accel.ramp(), m.decel.ramp())),
+    };
+    match &mut player {
+        Players::Any(p) => p.start(m.steps),
+        Players::Compressed(p) => p.start(m.steps),
+    }
     let s = step::run(Stepper {
         player,
         timer,
@@ -326,6 +337,7 @@ fn floored(periods: &[u16], floor: u16) -> u64 {
 }
 
 /// What a move must amount to.
+#[derive(Clone, Copy)]
 struct Expect {
     /// Steps played, at least and at most.
     steps: (u32, u32),
@@ -360,8 +372,9 @@ impl Expect {
 
 /// Every move the firmware plays, with what it must amount to: a
 /// trapezoid, a triangle, stops, a held ramp, the diffused default table,
-/// an asymmetric move, cruise changes and a segment table.
-fn scenarios() -> [Scenario<'static>; 13] {
+/// an asymmetric move, cruise changes, a segment table and compressed runs
+/// played by both players.
+fn scenarios() -> [Scenario<'static>; 15] {
     // Monotone tables first: the C-compatible orange S-curve (truncated, so
     // its periods never rise).
     let o: &'static [u16] = &sigmoid_orange::PERIODS;
@@ -377,6 +390,7 @@ fn scenarios() -> [Scenario<'static>; 13] {
         decel,
         steps,
         events,
+        compressed: false,
     };
     // The default mode: diffused rounding keeps every pulse edge within half
     // a tick, so the table is not monotone near the top (156, 157, 156, ...);
@@ -425,6 +439,21 @@ fn scenarios() -> [Scenario<'static>; 13] {
     let runs = Table::Runs(&microstep_runs::RUNS);
     let r_len = microstep_runs::LEN as u32;
     let r_top = (0..r_len).map(|p| runs.at(p)).min().unwrap_or(0);
+    let runs_move = Expect {
+        top: Some(r_top),
+        ..Expect::exact(
+            2 * r_len + 200,
+            2 * microstep_runs::TOTAL_TICKS + 200 * u64::from(r_top),
+            runs.at(0),
+        )
+    };
+    let runs_stop = Expect {
+        steps: (3001, 2 * r_len),
+        ticks: None,
+        top: None,
+        end: runs.at(0),
+        stops: true,
+    };
     [
         Scenario {
             play: mv(
@@ -595,15 +624,34 @@ fn scenarios() -> [Scenario<'static>; 13] {
             },
         },
         Scenario {
-            play: mv(RUNS_MOVE, runs, runs, 2 * r_len + 200, &[]),
-            expect: Expect {
-                top: Some(r_top),
-                ..Expect::exact(
-                    2 * r_len + 200,
-                    2 * microstep_runs::TOTAL_TICKS + 200 * u64::from(r_top),
-                    runs.at(0),
+            play: Move {
+                compressed: true,
+                ..mv(RUNS_MOVE, runs, runs, 2 * r_len + 200, &[])
+            },
+            expect: runs_move,
+        },
+        Scenario {
+            play: mv(
+                "runs, Player::new(Ramp::runs)",
+                runs,
+                runs,
+                2 * r_len + 200,
+                &[],
+            ),
+            expect: runs_move,
+        },
+        Scenario {
+            play: Move {
+                compressed: true,
+                ..mv(
+                    "compressed, stop accelerating",
+                    runs,
+                    runs,
+                    2 * r_len,
+                    &[(3000, Event::Stop)],
                 )
             },
+            expect: runs_stop,
         },
         Scenario {
             play: mv(
@@ -613,19 +661,13 @@ fn scenarios() -> [Scenario<'static>; 13] {
                 2 * r_len,
                 &[(3000, Event::Stop)],
             ),
-            expect: Expect {
-                steps: (3001, 2 * r_len),
-                ticks: None,
-                top: None,
-                end: runs.at(0),
-                stops: true,
-            },
+            expect: runs_stop,
         },
     ]
 }
 
 /// The move whose accelerating edges are also checked against the curve.
-const RUNS_MOVE: &str = "runs (microstep_runs)";
+const RUNS_MOVE: &str = "runs, Player::compressed";
 
 /// Every accelerating pulse edge of the compressed move against the exact
 /// curve's, computed here on the target: within the `compress` the table

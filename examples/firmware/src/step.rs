@@ -13,7 +13,7 @@ use cortex_m::peripheral::SYST;
 use cortex_m::peripheral::syst::SystClkSource;
 use cortex_m_rt::exception;
 use critical_section::Mutex;
-use stepper_profiles::player::Player;
+use stepper_profiles::player::{Compressed, Player};
 
 use crate::moves::Event;
 
@@ -28,9 +28,40 @@ const GPIO_DIR: usize = GPIO_F + 0x400;
 const GPIO_DEN: usize = GPIO_F + 0x51C;
 const SYSCTL_RCGC2: usize = 0x400F_E108;
 
+/// The player the interrupt plays from: of any layout, or of compressed
+/// tables only.
+pub enum Players {
+    Any(Player<'static, u16>),
+    Compressed(Player<'static, u16, Compressed>),
+}
+
+/// `$body` on whichever player `$players` holds, bound to `$p`.
+macro_rules! with_player {
+    ($players:expr, $p:ident => $body:expr) => {
+        match $players {
+            Players::Any($p) => $body,
+            Players::Compressed($p) => $body,
+        }
+    };
+}
+
+impl Players {
+    pub fn remaining(&self) -> u32 {
+        with_player!(self, p => p.remaining())
+    }
+
+    pub fn is_done(&self) -> bool {
+        with_player!(self, p => p.is_done())
+    }
+
+    fn next_period(&mut self) -> Option<u16> {
+        with_player!(self, p => p.next_period())
+    }
+}
+
 /// What the step interrupt plays and records.
 pub struct Stepper {
-    pub player: Player<'static, u16>,
+    pub player: Players,
     pub timer: SYST,
     /// Events before given steps, in order.
     pub events: &'static [(u32, Event)],
@@ -79,8 +110,8 @@ fn SysTick() {
         for (i, &(at, event)) in s.events.iter().enumerate() {
             if at == k {
                 match event {
-                    Event::Cruise(pos) => s.player.set_cruise(pos),
-                    Event::Stop => s.player.stop(),
+                    Event::Cruise(pos) => with_player!(&mut s.player, p => p.set_cruise(pos)),
+                    Event::Stop => with_player!(&mut s.player, p => p.stop()),
                 }
                 if let Some(slot) = s.after_events.get_mut(i) {
                     *slot = s.player.remaining();
@@ -90,13 +121,14 @@ fn SysTick() {
         let (timer, log, steps) = (&mut s.timer, &mut *s.log, &mut s.steps);
         // SysTick counts from its reload value down to 0: a period of n
         // ticks is a reload of n - 1.
-        let stepped = s.player.step(|period| {
+        let write = |period: u16| {
             timer.set_reload(u32::from(period) - 1);
             if let Some(slot) = log.get_mut(*steps) {
                 *slot = period;
             }
             *steps += 1;
-        });
+        };
+        let stepped = with_player!(&mut s.player, p => p.step(write));
         if stepped {
             toggle_step_pin();
             s.toggles += 1;
