@@ -27,6 +27,11 @@
 //! entry). No division, no floating point and no panic in playing, on any
 //! input.
 //!
+//! A player knows from its type which tables it plays ([`Layout`]):
+//! [`Player::new`] plays every layout and tries the per-step table's runs
+//! first; [`Player::compressed`] plays compressed tables only and tries their
+//! run first, so that each kind of table plays at nearly the cost of a load.
+//!
 //! ```
 //! use profile_core::player::{Player, Ramp};
 //!
