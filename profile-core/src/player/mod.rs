@@ -56,8 +56,9 @@ use core::marker::PhantomData;
 use crate::base::timer::TableWord;
 pub use axis::{Axis, Direction, Moving};
 pub use layout::{AnyLayout, Compressed, Layout};
-use plan::{Plan, Run, RunState, Sides};
+use plan::{Plan, Run, Sides};
 pub use ramp::Ramp;
+use ramp::RunState;
 
 /// Plays moves from an acceleration ramp and a deceleration ramp.
 ///

@@ -12,7 +12,6 @@ use core::slice;
 
 use super::ramp::{Cursor, Ramp};
 use crate::base::timer::TableWord;
-use crate::table::runs::{FRACTION_MASK, RUN_FRACTION_BITS};
 
 /// A run of steps, as the step path plays it.
 #[derive(Clone, Debug)]
@@ -23,33 +22,6 @@ pub(crate) enum Run<'a, W> {
     Hold(&'a W, u32),
     /// Periods played first to last.
     Up(slice::Iter<'a, W>),
-}
-
-/// Where a run of a compressed ramp stands: `left` steps to play, the
-/// next one's period `(frac + interval) >> 16`. Either way along the ramp
-/// the same recurrence plays it (see `Cursor::run_state`). The step path
-/// plays it when its `Up` run is empty, so that tables pay nothing for it.
-#[derive(Clone, Copy, Debug, Default)]
-pub(crate) struct RunState {
-    pub(crate) left: u32,
-    pub(crate) frac: u32,
-    pub(crate) interval: u32,
-    pub(crate) add: u32,
-}
-
-impl RunState {
-    /// The next step's period, in ticks, or `None` when the run is played.
-    #[inline(always)]
-    pub(crate) fn next(&mut self) -> Option<u32> {
-        if self.left == 0 {
-            return None;
-        }
-        self.left -= 1;
-        let x = self.frac.wrapping_add(self.interval);
-        self.frac = x & FRACTION_MASK;
-        self.interval = self.interval.wrapping_add(self.add);
-        Some(x >> RUN_FRACTION_BITS)
-    }
 }
 
 impl<'a, W: TableWord> Run<'a, W> {

@@ -1,6 +1,5 @@
 //! A ramp to play, and positions along it.
 
-use super::plan::RunState;
 use crate::base::timer::TableWord;
 use crate::table::runs::{Expand, FRACTION_MASK, RUN_FRACTION_BITS, RUN_START_FRACTION, Run};
 
@@ -33,6 +32,33 @@ fn behind(frac: u32, interval: u32, add: u32, n: u32) -> (u32, u32) {
         .wrapping_sub(n.wrapping_mul(start))
         .wrapping_sub(triangle(n).wrapping_mul(add));
     (frac & FRACTION_MASK, start)
+}
+
+/// Where a run of a compressed ramp stands: `left` steps to play, the
+/// next one's period `(frac + interval) >> 16`. Either way along the ramp
+/// the same recurrence plays it (see `Cursor::run_state`). The step path
+/// plays it when its `Up` run is empty, so that tables pay nothing for it.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct RunState {
+    pub(crate) left: u32,
+    pub(crate) frac: u32,
+    pub(crate) interval: u32,
+    pub(crate) add: u32,
+}
+
+impl RunState {
+    /// The next step's period, in ticks, or `None` when the run is played.
+    #[inline(always)]
+    pub(crate) fn next(&mut self) -> Option<u32> {
+        if self.left == 0 {
+            return None;
+        }
+        self.left -= 1;
+        let x = self.frac.wrapping_add(self.interval);
+        self.frac = x & FRACTION_MASK;
+        self.interval = self.interval.wrapping_add(self.add);
+        Some(x >> RUN_FRACTION_BITS)
+    }
 }
 
 /// A ramp to play: a table ordered from slow (rest) to fast.
