@@ -352,6 +352,8 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
                         return true;
                     }
                     // A compressed ramp's run: an empty `Down` and the state.
+                    // `RunState::next` written out: through the call, the
+                    // per-step table's paths are laid out a branch longer.
                     let r = &mut this.computed;
                     if r.left > 0 {
                         r.left -= 1;
