@@ -457,86 +457,63 @@ fn compare<W: TableWord + core::fmt::Debug + PartialEq>(
     Ok(steps)
 }
 
-/// The planned player plays every move exactly as the per-step model does:
-/// random tables (falling with ties, arbitrary, one entry, held, segments
-/// with empty ones), u16 and u32, random operations (starts of 0 and
-/// `u32::MAX` steps, stops, twice too, cruise changes mid-ramp). Prints the
-/// sequences and steps compared (`-- --nocapture`); `PROPTEST_CASES` times 8
-/// sequences.
-#[test]
-fn plays_exactly_as_the_per_step_model() {
+/// Runs `cases` random operation sequences on the ramps `ramps` draws
+/// (the deceleration ramp the acceleration ramp's when `None`), u16 and u32,
+/// each through [`compare`]; prints the sequences and steps compared under
+/// `what`.
+fn compare_random(what: &str, cases: u32, ramps: impl Strategy<Value = (Shape, Option<Shape>)>) {
     use proptest::test_runner::{Config, TestRunner};
     let mut runner = TestRunner::new(Config {
-        cases: cases() * 8,
+        cases,
         failure_persistence: None,
         ..Config::default()
     });
-    let strategy = (
-        shape(),
-        prop_oneof![1 => Just(None), 1 => shape().prop_map(Some)],
-        ops(),
-        any::<bool>(),
-    );
     let (sequences, steps) = (std::cell::Cell::new(0u64), std::cell::Cell::new(0u64));
     runner
-        .run(&strategy, |(accel, decel, ops, wide)| {
-            let decel = decel.unwrap_or_else(|| accel.clone());
-            let n = if wide {
-                compare::<u32>(&accel, &decel, &ops)?
-            } else {
-                compare::<u16>(&accel, &decel, &ops)?
-            };
-            sequences.set(sequences.get() + 1);
-            steps.set(steps.get() + n);
-            Ok(())
-        })
+        .run(
+            &(ramps, ops(), any::<bool>()),
+            |((accel, decel), ops, wide)| {
+                let decel = decel.unwrap_or_else(|| accel.clone());
+                let n = if wide {
+                    compare::<u32>(&accel, &decel, &ops)?
+                } else {
+                    compare::<u16>(&accel, &decel, &ops)?
+                };
+                sequences.set(sequences.get() + 1);
+                steps.set(steps.get() + n);
+                Ok(())
+            },
+        )
         .unwrap_or_else(|e| panic!("{e}"));
     println!(
-        "planned player == per-step model: {} random operation sequences, {} steps compared",
+        "{what} == per-step model: {} random operation sequences, {} steps compared",
         sequences.get(),
         steps.get()
     );
 }
 
+/// The planned player plays every move exactly as the per-step model does:
+/// random tables (falling with ties, arbitrary, one entry, held, segments
+/// with empty ones, runs), u16 and u32, random operations (starts of 0 and
+/// `u32::MAX` steps, stops, twice too, cruise changes mid-ramp). Prints the
+/// sequences and steps compared (`-- --nocapture`); `PROPTEST_CASES` times 8
+/// sequences.
+#[test]
+fn plays_exactly_as_the_per_step_model() {
+    let decel = prop_oneof![1 => Just(None), 1 => shape().prop_map(Some)];
+    compare_random("planned player", cases() * 8, (shape(), decel));
+}
+
 /// The player of compressed tables ([`Player::compressed`]) plays every
 /// move exactly as the per-step model plays the runs' expansion (and as the
 /// player of any layout does): random runs (empty ones included), one ramp
-/// or two, u16 and u32, random operations. Prints the sequences and steps
-/// compared (`-- --nocapture`); `PROPTEST_CASES` times 4 sequences.
+/// or two, u16 and u32, random operations. `PROPTEST_CASES` times 4
+/// sequences.
 #[test]
 fn the_compressed_player_plays_exactly_as_the_per_step_model() {
-    use proptest::test_runner::{Config, TestRunner};
-    let mut runner = TestRunner::new(Config {
-        cases: cases() * 4,
-        failure_persistence: None,
-        ..Config::default()
-    });
-    let strategy = (
-        any_runs(),
-        prop_oneof![1 => Just(None), 1 => any_runs().prop_map(Some)],
-        ops(),
-        any::<bool>(),
-    );
-    let (sequences, steps) = (std::cell::Cell::new(0u64), std::cell::Cell::new(0u64));
-    runner
-        .run(&strategy, |(accel, decel, ops, wide)| {
-            let accel = Shape::Runs(accel);
-            let decel = decel.map_or_else(|| accel.clone(), Shape::Runs);
-            let n = if wide {
-                compare::<u32>(&accel, &decel, &ops)?
-            } else {
-                compare::<u16>(&accel, &decel, &ops)?
-            };
-            sequences.set(sequences.get() + 1);
-            steps.set(steps.get() + n);
-            Ok(())
-        })
-        .unwrap_or_else(|e| panic!("{e}"));
-    println!(
-        "compressed player == per-step model: {} random operation sequences, {} steps compared",
-        sequences.get(),
-        steps.get()
-    );
+    let runs = || any_runs().prop_map(Shape::Runs);
+    let decel = prop_oneof![1 => Just(None), 1 => runs().prop_map(Some)];
+    compare_random("compressed player", cases() * 4, (runs(), decel));
 }
 
 /// The two faults of the per-step player, pinned.

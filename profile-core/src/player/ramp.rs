@@ -282,17 +282,7 @@ impl Cursor {
                 let add = run.map_or(0, |r| r.add as u32);
                 (self.frac, self.interval) = ahead(self.frac, self.interval, add, 1);
                 if self.within >= run.map_or(u32::MAX, |r| u32::from(r.count)) {
-                    // On to the next run that holds a step.
-                    self.within = 0;
-                    loop {
-                        self.entry += 1;
-                        match run_at(runs, self.entry) {
-                            Some(r) if r.count == 0 => continue,
-                            Some(r) => self.interval = r.interval,
-                            None => {}
-                        }
-                        break;
-                    }
+                    self.enter_next_run(runs);
                 }
             }
             Ramp::Steps { hold, .. } => {
@@ -351,6 +341,21 @@ impl Cursor {
             }
         }
         true
+    }
+
+    /// On to the first step of the next run that holds one, the remainder
+    /// carried.
+    fn enter_next_run(&mut self, runs: &[[u16; 5]]) {
+        self.within = 0;
+        loop {
+            self.entry += 1;
+            match run_at(runs, self.entry) {
+                Some(r) if r.count == 0 => continue,
+                Some(r) => self.interval = r.interval,
+                None => {}
+            }
+            break;
+        }
     }
 
     /// One step back on runs: within the run, or to the last step of the
@@ -418,19 +423,9 @@ impl Cursor {
                 let count = run.map_or(limit, |r| u32::from(r.count));
                 let n = count.saturating_sub(self.within).max(1).min(limit);
                 if n < limit {
-                    // On to the first step of the next run that holds one.
                     self.pos += n;
-                    self.within = 0;
                     self.frac = ahead(frac, interval, add, n).0;
-                    loop {
-                        self.entry += 1;
-                        match run_at(runs, self.entry) {
-                            Some(r) if r.count == 0 => continue,
-                            Some(r) => self.interval = r.interval,
-                            None => {}
-                        }
-                        break;
-                    }
+                    self.enter_next_run(runs);
                 }
                 RunState {
                     left: n,
