@@ -83,19 +83,36 @@ pub(crate) fn logistic(x: f64) -> f64 {
     1.0 / (1.0 + libm::exp(-x))
 }
 
-/// `softplus(s0 + d) - softplus(s0)` for `d >= 0`: the integral of the
-/// logistic over `[s0, s0 + d]`.
+/// `softplus(s0 + d) - softplus(s0)` for `d >= 0`, `s0` fixed: the
+/// integral of the logistic over `[s0, s0 + d]`.
 ///
 /// Written as `ln(1 + logistic(s0) · expm1(d))`, which keeps full relative
 /// precision when `d` is small (a flat sigmoid, or the first steps of any
 /// sigmoid), where the difference of two softplus values would cancel. For
 /// `d` large enough to overflow `expm1`, the two values differ by far more
-/// than their rounding, and the difference is taken directly.
-pub(crate) fn softplus_rise(s0: f64, d: f64) -> f64 {
-    if d < 700.0 {
-        libm::log1p(logistic(s0) * libm::expm1(d))
-    } else {
-        softplus(s0 + d) - softplus(s0)
+/// than their rounding, and the difference is taken directly. `logistic(s0)`
+/// is worked out once, for every `d` a pulse-time solve tries.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct SoftplusRise {
+    s0: f64,
+    logistic_s0: f64,
+}
+
+impl SoftplusRise {
+    pub(crate) fn new(s0: f64) -> Self {
+        SoftplusRise {
+            s0,
+            logistic_s0: logistic(s0),
+        }
+    }
+
+    /// The rise over `[s0, s0 + d]`.
+    pub(crate) fn over(&self, d: f64) -> f64 {
+        if d < 700.0 {
+            libm::log1p(self.logistic_s0 * libm::expm1(d))
+        } else {
+            softplus(self.s0 + d) - softplus(self.s0)
+        }
     }
 }
 
@@ -136,7 +153,7 @@ mod tests {
     fn softplus_rise_is_the_difference_of_softplus() {
         for (s0, d) in [(-8.0, 16.0), (-500.0, 1000.0), (-0.01, 0.02), (-3.0, 1e-9)] {
             let direct = softplus(s0 + d) - softplus(s0);
-            let rise = softplus_rise(s0, d);
+            let rise = SoftplusRise::new(s0).over(d);
             assert!(
                 (rise / direct - 1.0).abs() < 1e-6,
                 "{s0} {d}: {rise} {direct}"
@@ -144,7 +161,7 @@ mod tests {
         }
         // Where the direct difference cancels, the rise keeps its digits:
         // logistic(-0.01) · 1e-12 to first order.
-        let rise = softplus_rise(-0.01, 1e-12);
+        let rise = SoftplusRise::new(-0.01).over(1e-12);
         assert!((rise / (logistic(-0.01) * 1e-12) - 1.0).abs() < 1e-11);
     }
 }

@@ -4,7 +4,7 @@ use super::check::{len, positive, range};
 use super::kind::{CurveKind, IndexEntry, Length, Modes, Param, Reader};
 use crate::base::error::Error;
 use crate::base::key::Key;
-use crate::base::math::{logistic, softplus_rise};
+use crate::base::math::{SoftplusRise, logistic};
 use crate::base::modes::{Arithmetic, Discretization};
 use crate::base::solve::TimeCurve;
 
@@ -77,6 +77,8 @@ pub(crate) struct SigmoidInTime {
     half: f64,
     duration: f64,
     len: f64,
+    /// The softplus's rise from the curve's start, `s = -flexible`.
+    rise: SoftplusRise,
 }
 
 impl SigmoidInTime {
@@ -89,6 +91,7 @@ impl SigmoidInTime {
             half: duration / 2.0,
             duration,
             len: s.len as f64,
+            rise: SoftplusRise::new(-s.flexible),
         }
     }
 
@@ -107,7 +110,7 @@ impl TimeCurve for SigmoidInTime {
     /// = flexible t / (T/2)`, so that a flat curve (small `flexible`) keeps
     /// its digits.
     fn steps(&self, t: f64) -> f64 {
-        let rise = softplus_rise(-self.flexible, self.flexible * t / self.half);
+        let rise = self.rise.over(self.flexible * t / self.half);
         self.fmin * t + self.delt * (self.half / self.flexible) * rise
     }
 

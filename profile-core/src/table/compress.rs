@@ -60,9 +60,16 @@ type Polygon = Vec<(f64, f64)>;
 /// Keeps the part of `poly` where `a x + b y <= c`, into `out`.
 fn clip(poly: &Polygon, a: f64, b: f64, c: f64, out: &mut Polygon) {
     out.clear();
-    for (i, &p) in poly.iter().enumerate() {
-        let q = poly[(i + 1) % poly.len()];
-        let (vp, vq) = (a * p.0 + b * p.1 - c, a * q.0 + b * q.1 - c);
+    let side = |p: (f64, f64)| a * p.0 + b * p.1 - c;
+    let Some(&first) = poly.first() else {
+        return;
+    };
+    // Each edge `p -> q` in turn, the last one back to the first vertex;
+    // each vertex's side worked out once.
+    let (mut p, mut vp) = (first, side(first));
+    for k in 1..=poly.len() {
+        let q = if k == poly.len() { first } else { poly[k] };
+        let vq = side(q);
         if vp <= 0.0 {
             out.push(p);
         }
@@ -70,6 +77,7 @@ fn clip(poly: &Polygon, a: f64, b: f64, c: f64, out: &mut Polygon) {
             let t = vp / (vp - vq);
             out.push((p.0 + t * (q.0 - p.0), p.1 + t * (q.1 - p.1)));
         }
+        (p, vp) = (q, vq);
     }
 }
 
@@ -172,6 +180,9 @@ struct Fit<'a> {
     /// Exact edge `k + 1` in ticks, at index `k`.
     exact: &'a [f64],
     tolerance: f64,
+    /// Edge `k`'s band of fixed-point positions (see [`Fit::band`]), at
+    /// index `k`: worked out once, read for every run tried.
+    bands: Vec<(i64, i64)>,
 }
 
 /// How far the look at the next run goes: beyond, any choice is as good.
@@ -181,14 +192,29 @@ const REACH: usize = 256;
 /// one has room can beat the longest one that leaves none.
 const SHORTER: [usize; 7] = [0, 1, 2, 4, 8, 16, 32];
 
-impl Fit<'_> {
+impl<'a> Fit<'a> {
+    fn new(exact: &'a [f64], tolerance: f64) -> Self {
+        let bands = exact
+            .iter()
+            .map(|&t| {
+                let lo = libm::ceil(t - tolerance) as i64;
+                let hi = libm::floor(t + tolerance) as i64;
+                (lo << RUN_FRACTION_BITS, ((hi + 1) << RUN_FRACTION_BITS) - 1)
+            })
+            .collect();
+        Fit {
+            exact,
+            tolerance,
+            bands,
+        }
+    }
+
     /// The band of fixed-point positions that puts edge index `k` within
-    /// the tolerance.
+    /// the tolerance: from the first whole tick at least `tolerance` before
+    /// the exact edge to the last fraction of the last whole tick at most
+    /// `tolerance` after it.
     fn band(&self, k: usize) -> (i64, i64) {
-        let t = self.exact[k];
-        let lo = libm::ceil(t - self.tolerance) as i64;
-        let hi = libm::floor(t + self.tolerance) as i64;
-        (lo << RUN_FRACTION_BITS, ((hi + 1) << RUN_FRACTION_BITS) - 1)
+        self.bands[k]
     }
 
     /// Plays `len` steps of a run from `at` with the player's arithmetic:
@@ -372,10 +398,7 @@ impl CheckedSpec {
         let scale = self.spec().timer.ticks_per_second();
         let mut exact = Vec::with_capacity(self.len() as usize);
         self.for_each_exact_edge(|_, t| exact.push(t * scale))?;
-        let fit = Fit {
-            exact: &exact,
-            tolerance,
-        };
+        let fit = Fit::new(&exact, tolerance);
         let mut at = At {
             done: 0,
             pos: RUN_START_FRACTION as i64,
