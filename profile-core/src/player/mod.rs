@@ -464,38 +464,17 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             self.plan.next = next + 1;
             return Some(run);
         }
-        let ramp = if s.decel { self.decel } else { self.accel };
-        if let Ramp::Runs(runs) = ramp {
+        let ramp = if s.decel { &self.decel } else { &self.accel };
+        if let Ramp::Runs(runs) = *ramp {
             // A compressed table: one run at a time, played by the step path
             // from `computed` (behind an empty `Down` for any layout).
             self.computed = s.at.take_run(runs, s.dir, s.count);
             s.count -= self.computed.left;
             return Some(Run::Down([].iter()));
         }
-        let forward = s.dir > 0;
         // A held or segment table: one entry at a time.
-        let n = if s.dir == 0 {
-            s.count
-        } else {
-            s.at.left_in_entry(&ramp, forward).min(s.count)
-        };
-        let entry = s.at.entry as usize;
-        let run = match ramp {
-            Ramp::Steps { periods, .. } => periods.get(entry).map(|p| Run::Hold(p, n)),
-            Ramp::Segments(pairs) => pairs.get(entry).map(|p| Run::Hold(&p.0, n)),
-            Ramp::Runs(_) => None,
-        };
-        // On to the next entry in the stretch's direction: to this entry's
-        // last step that way, then one more.
-        if s.dir != 0 && n < s.count {
-            s.at.jump_within(&ramp, n - 1, forward);
-            if forward {
-                s.at.forward(&ramp, u32::MAX);
-            } else {
-                s.at.backward(&ramp);
-            }
-        }
+        let (period, n) = s.at.take_entry(ramp, s.dir, s.count)?;
         s.count -= n;
-        run
+        Some(Run::Hold(period, n))
     }
 }

@@ -253,22 +253,6 @@ impl Cursor {
         found.unwrap_or(W::from_ticks(0))
     }
 
-    /// Steps left in the cursor's entry, this one included, towards the
-    /// fast end (`forward`) or the slow end.
-    pub(crate) fn left_in_entry<W: TableWord>(&self, ramp: &Ramp<'_, W>, forward: bool) -> u32 {
-        if !forward {
-            return self.within + 1;
-        }
-        let size = match *ramp {
-            Ramp::Steps { hold, .. } => hold.max(1),
-            Ramp::Segments(pairs) => pairs
-                .get(self.entry as usize)
-                .map_or(0, |p| p.1.into_ticks()),
-            Ramp::Runs(runs) => run_at(runs, self.entry).map_or(0, |r| u32::from(r.count)),
-        };
-        size - self.within
-    }
-
     /// One step towards the fast end, up to step `last`; `false` at `last`.
     pub(crate) fn forward<W: TableWord>(&mut self, ramp: &Ramp<'_, W>, last: u32) -> bool {
         if self.pos >= last {
@@ -382,25 +366,68 @@ impl Cursor {
         }
     }
 
-    /// Moves `k` steps within the cursor's entry, towards the fast end
-    /// (`forward`) or the slow end; `k` is less than
-    /// [`left_in_entry`](Self::left_in_entry).
-    pub(crate) fn jump_within<W: TableWord>(&mut self, ramp: &Ramp<'_, W>, k: u32, forward: bool) {
-        if let Ramp::Runs(runs) = *ramp {
-            let add = run_at(runs, self.entry).map_or(0, |r| r.add as u32);
-            (self.frac, self.interval) = if forward {
-                ahead(self.frac, self.interval, add, k)
-            } else {
-                behind(self.frac, self.interval, add, k)
-            };
+    /// Hands out the entry under the cursor of a held or segment table to a
+    /// stretch reading towards the fast end (`dir` 1), the slow end (-1) or
+    /// held (0): its period and at most `limit` steps of it, and moves the
+    /// cursor past them when the stretch goes on (past empty segments). At
+    /// least one step when `limit` is not 0; `None` on a compressed table
+    /// (see [`take_run`](Self::take_run)) or past the table's end.
+    pub(crate) fn take_entry<'r, W: TableWord>(
+        &mut self,
+        ramp: &Ramp<'r, W>,
+        dir: i8,
+        limit: u32,
+    ) -> Option<(&'r W, u32)> {
+        let (period, size) = match *ramp {
+            Ramp::Steps { periods, hold } => (periods.get(self.entry as usize)?, hold.max(1)),
+            Ramp::Segments(pairs) => {
+                let pair = pairs.get(self.entry as usize)?;
+                (&pair.0, pair.1.into_ticks())
+            }
+            Ramp::Runs(_) => return None,
+        };
+        let n = match dir {
+            1 => size.saturating_sub(self.within).max(1).min(limit),
+            -1 => (self.within + 1).min(limit),
+            _ => limit,
+        };
+        if n < limit && dir == 1 {
+            // On to the next entry that holds a step.
+            self.pos += n;
+            self.within = 0;
+            self.entry += 1;
+            if let Ramp::Segments(pairs) = *ramp {
+                while pairs
+                    .get(self.entry as usize)
+                    .is_some_and(|p| p.1.into_ticks() == 0)
+                {
+                    self.entry += 1;
+                }
+            }
+        } else if n < limit && dir == -1 {
+            // Back to the last step of the previous entry that holds one.
+            self.pos -= n;
+            match *ramp {
+                Ramp::Steps { hold, .. } => {
+                    self.entry = self.entry.saturating_sub(1);
+                    self.within = hold.max(1) - 1;
+                }
+                Ramp::Segments(pairs) => {
+                    while self.entry > 0 {
+                        self.entry -= 1;
+                        let count = pairs
+                            .get(self.entry as usize)
+                            .map_or(0, |p| p.1.into_ticks());
+                        if count > 0 {
+                            self.within = count - 1;
+                            break;
+                        }
+                    }
+                }
+                Ramp::Runs(_) => {}
+            }
         }
-        if forward {
-            self.pos += k;
-            self.within += k;
-        } else {
-            self.pos -= k;
-            self.within -= k;
-        }
+        Some((period, n))
     }
 
     /// Hands out the run under the cursor to a stretch reading towards the
