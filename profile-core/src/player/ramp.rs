@@ -304,6 +304,14 @@ impl Cursor {
             self.within -= 1;
             return true;
         }
+        self.enter_previous_entry(ramp);
+        true
+    }
+
+    /// Back to the last step of the previous entry of a held or segment
+    /// table that holds one.
+    #[inline(always)]
+    fn enter_previous_entry<W: TableWord>(&mut self, ramp: &Ramp<'_, W>) {
         match *ramp {
             Ramp::Steps { hold, .. } => {
                 self.entry = self.entry.saturating_sub(1);
@@ -311,7 +319,6 @@ impl Cursor {
             }
             Ramp::Runs(_) => {}
             Ramp::Segments(pairs) => {
-                // The previous segment that holds a step.
                 while self.entry > 0 {
                     self.entry -= 1;
                     let count = pairs
@@ -324,7 +331,6 @@ impl Cursor {
                 }
             }
         }
-        true
     }
 
     /// On to the first step of the next run that holds one, the remainder
@@ -405,27 +411,8 @@ impl Cursor {
                 }
             }
         } else if n < limit && dir == -1 {
-            // Back to the last step of the previous entry that holds one.
             self.pos -= n;
-            match *ramp {
-                Ramp::Steps { hold, .. } => {
-                    self.entry = self.entry.saturating_sub(1);
-                    self.within = hold.max(1) - 1;
-                }
-                Ramp::Segments(pairs) => {
-                    while self.entry > 0 {
-                        self.entry -= 1;
-                        let count = pairs
-                            .get(self.entry as usize)
-                            .map_or(0, |p| p.1.into_ticks());
-                        if count > 0 {
-                            self.within = count - 1;
-                            break;
-                        }
-                    }
-                }
-                Ramp::Runs(_) => {}
-            }
+            self.enter_previous_entry(ramp);
         }
         Some((period, n))
     }
