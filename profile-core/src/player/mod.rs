@@ -28,9 +28,10 @@
 //! input.
 //!
 //! A player knows from its type which tables it plays ([`Layout`]):
-//! [`Player::new`] plays every layout and tries the per-step table's runs
-//! first; [`Player::compressed`] plays compressed tables only and tries their
-//! run first, so that each kind of table plays at nearly the cost of a load.
+//! [`Player::new`] plays every layout, its step path trying the per-step
+//! table's way first; [`Player::compressed`] plays compressed tables only,
+//! its step path trying their run first. Each plays at nearly the cost of
+//! a load.
 //!
 //! ```
 //! use profile_core::player::{Player, Ramp};
@@ -66,7 +67,8 @@ use ramp::RunState;
 /// [`AnyLayout`] (the default, from [`Player::new`]) plays every layout,
 /// [`Compressed`] (from [`Player::compressed`]) only compressed tables,
 /// at the least cost per step.
-// The runs' fields come first, at the smallest offsets, for the step paths.
+// The fields of the run being played come first, at the smallest offsets,
+// for the step paths.
 #[derive(Clone, Debug)]
 #[repr(C)]
 pub struct Player<'a, W, L = AnyLayout> {

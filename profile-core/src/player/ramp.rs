@@ -36,8 +36,10 @@ fn behind(frac: u32, interval: u32, add: u32, n: u32) -> (u32, u32) {
 
 /// Where a run of a compressed ramp stands: `left` steps to play, the
 /// next one's period `(frac + interval) >> 16`. Either way along the ramp
-/// the same recurrence plays it (see `Cursor::run_state`). The step path
-/// plays it when its `Up` run is empty, so that tables pay nothing for it.
+/// the same recurrence plays it (see [`Cursor::take_run`]). The step path
+/// of a player of any layout plays it behind an empty `Down` run, so that
+/// tables pay nothing for it; a compressed player's step path plays it
+/// first.
 #[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct RunState {
     pub(crate) left: u32,
