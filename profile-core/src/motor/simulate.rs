@@ -70,9 +70,11 @@
 //!     Curve::Linear(Linear { fmin: 300.0, fmax: 1000.0, extent: LinearExtent::Len(200) }),
 //!     Timer::new(1_000_000),
 //! );
-//! let table = spec.table()?;
+//! let mut table = [0u16; 200];
+//! spec.generate(&mut table)?;
+//! let periods = table.map(u32::from);
 //! let options = SimOptions { dt_s: 2e-6, settle_s: 0.05 };
-//! let result = simulate::run(&motor, &spec, &table.periods, &options).expect("valid input");
+//! let result = simulate::run(&motor, &spec, &periods, &options).expect("valid input");
 //! // The rotor follows the ramp, then stops from 1000 full steps/s at once:
 //! // it swings past its final position but falls back into it.
 //! assert_eq!((result.lost_steps, result.slips), (0, 0));
