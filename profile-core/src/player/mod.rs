@@ -423,15 +423,16 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     #[cold]
     #[inline(never)]
     fn refill(&mut self) -> Option<&mut Self> {
-        // Most stretches are a whole run, made when the move was planned.
+        // Most stretches of a per-step table are a whole run, made when the
+        // move was planned: taken at once.
         let next = self.plan.next;
         if next < self.plan.len {
             if let Some(s) = self.plan.stretches.get_mut(next) {
-                if let Some(run) = s.run.take() {
+                if s.run.is_some() {
+                    self.run = s.run.take()?;
                     s.count = 0;
                     self.plan.at = next;
                     self.plan.next = next + 1;
-                    self.run = run;
                     return Some(self);
                 }
             }
@@ -461,10 +462,12 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     fn next_run(&mut self) -> Option<Run<'a, W>> {
         let next = self.next_stretch()?;
         let s = self.plan.stretches.get_mut(next)?;
-        if let Some(run) = s.run.take() {
+        // A whole run made when the move was planned.
+        if s.run.is_some() {
+            let run = s.run.take();
             s.count = 0;
             self.plan.next = next + 1;
-            return Some(run);
+            return run;
         }
         let ramp = if s.decel { &self.decel } else { &self.accel };
         if let Ramp::Runs(runs) = *ramp {
