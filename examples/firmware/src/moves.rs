@@ -252,10 +252,7 @@ pub fn play(
         }
         _ => Players::Any(Player::with_decel(m.accel.ramp(), m.decel.ramp())),
     };
-    match &mut player {
-        Players::Any(p) => p.start(m.steps),
-        Players::Compressed(p) => p.start(m.steps),
-    }
+    player.start(m.steps);
     let s = step::run(Stepper {
         player,
         timer,

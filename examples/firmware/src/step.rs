@@ -46,6 +46,10 @@ macro_rules! with_player {
 }
 
 impl Players {
+    pub fn start(&mut self, steps: u32) {
+        with_player!(self, p => p.start(steps))
+    }
+
     pub fn remaining(&self) -> u32 {
         with_player!(self, p => p.remaining())
     }

@@ -123,17 +123,23 @@ fn steps(label: &str, phase: &str, n: u32, mut step: impl FnMut()) {
     measure_end();
 }
 
-/// A move of the player on `ramp`, phase by phase.
-fn player_move(label: &str, ramp: Ramp<'_, u16>, (up, cruise): (u32, u32), timer: &mut SYST) {
-    let mut player = Player::new(ramp);
-    player.start(2 * up + cruise);
+/// A move's three phases, `up` steps accelerating, `cruise` cruising and
+/// `up` decelerating, each measured on its own.
+fn phases(label: &str, (up, cruise): (u32, u32), mut step: impl FnMut()) {
     for (phase, n) in [
         ("accelerating", up),
         ("cruising", cruise),
         ("decelerating", up),
     ] {
-        steps(label, phase, n, || player_step(&mut player, timer));
+        steps(label, phase, n, &mut step);
     }
+}
+
+/// A move of the player on `ramp`, phase by phase.
+fn player_move(label: &str, ramp: Ramp<'_, u16>, (up, cruise): (u32, u32), timer: &mut SYST) {
+    let mut player = Player::new(ramp);
+    player.start(2 * up + cruise);
+    phases(label, (up, cruise), || player_step(&mut player, timer));
     check(player.is_done(), label);
 }
 
@@ -191,18 +197,11 @@ fn main() -> ! {
     let mut player = Player::compressed(&microstep_runs::RUNS);
     let up = microstep_runs::LEN as u32;
     player.start(2 * up + 1000);
-    for (phase, n) in [
-        ("accelerating", up),
-        ("cruising", 1000),
-        ("decelerating", up),
-    ] {
-        steps(
-            "Player::compressed (microstep, compress = 1)",
-            phase,
-            n,
-            || player_runs_step(&mut player, timer),
-        );
-    }
+    phases(
+        "Player::compressed (microstep, compress = 1)",
+        (up, 1000),
+        || player_runs_step(&mut player, timer),
+    );
     check(player.is_done(), "compressed player");
     player_move(
         "player, segments (exponential_segments)",
@@ -217,15 +216,9 @@ fn main() -> ! {
         axis.move_by(-i64::from(2 * UP + CRUISE)).is_ok(),
         "axis move",
     );
-    for (phase, n) in [
-        ("accelerating", UP),
-        ("cruising", CRUISE),
-        ("decelerating", UP),
-    ] {
-        steps("axis, per-step table (sigmoid_exact)", phase, n, || {
-            axis_step(&mut axis, timer)
-        });
-    }
+    phases("axis, per-step table (sigmoid_exact)", (UP, CRUISE), || {
+        axis_step(&mut axis, timer)
+    });
     check(
         axis.position() == -i64::from(2 * UP + CRUISE),
         "axis position",
@@ -241,15 +234,9 @@ fn main() -> ! {
         && stepgen.set_target_speed(top << 8).is_ok()
         && stepgen.set_target_step(2 * UP + CRUISE).is_ok();
     check(set, "stepgen settings");
-    for (phase, n) in [
-        ("accelerating", UP),
-        ("cruising", CRUISE),
-        ("decelerating", UP),
-    ] {
-        steps("stepgen 0.1.3", phase, n, || {
-            stepgen_step(&mut stepgen, timer)
-        });
-    }
+    phases("stepgen 0.1.3", (UP, CRUISE), || {
+        stepgen_step(&mut stepgen, timer)
+    });
 
     // Planning: a move starts, changes its cruise speed, stops.
     let mut player = Player::new(Ramp::steps(&sigmoid_exact::PERIODS));
