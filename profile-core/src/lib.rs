@@ -54,7 +54,7 @@ pub use base::timer::{TableWord, Timer, Word};
 pub use curves::public::*;
 pub use motor::simulate;
 #[cfg(feature = "std")]
-pub use table::compress::{MIN_COMPRESS_TICKS, RunFigures, RunTable};
+pub use table::compress::{MAX_COMPRESS_TICKS, MIN_COMPRESS_TICKS, RunFigures, RunTable};
 #[cfg(feature = "std")]
 pub use table::owned::{Compact, Generated, SegmentTable, Table};
 pub use table::quantize::{ACCEL_WINDOW, Figures};

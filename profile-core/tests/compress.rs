@@ -151,3 +151,56 @@ fn a_tolerance_below_half_a_tick_is_refused() {
          `compress` ticks)"
     );
 }
+
+#[test]
+fn the_largest_tolerance_fits_and_a_larger_one_is_refused() {
+    // At the bound the band arithmetic stays in range on the longest table
+    // the linear ramp gives: every edge within the bound, no panic.
+    let t = linear()
+        .run_table(profile_core::MAX_COMPRESS_TICKS)
+        .unwrap();
+    assert!(
+        t.figures.max_edge_error_ticks <= 65_535.0,
+        "{:?}",
+        t.figures
+    );
+    assert_eq!(Expand::new(&t.runs).count(), 10_200);
+    for huge in [65_535.5, 1e20, 1e300, f64::INFINITY] {
+        let e = linear().run_table(huge).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            format!(
+                "`compress` is the largest pulse-edge error allowed, in ticks, and must be at \
+                 most 65535, the longest period a run's 16-bit word holds (got {})",
+                match huge {
+                    1e20 => "1e20",
+                    1e300 => "1e300",
+                    x if x.is_infinite() => "inf",
+                    _ => "65535.5",
+                }
+            )
+        );
+    }
+}
+
+#[test]
+fn a_period_the_per_step_table_refuses_is_refused_before_fitting() {
+    // 1 000 -> 20 000 Hz on a 10 kHz timer: the per-step table's error, at
+    // once, whatever the tolerance.
+    let spec = Spec::new(
+        Curve::Linear(Linear {
+            fmin: 1000.0,
+            fmax: 20_000.0,
+            extent: LinearExtent::Accel(20_000.0),
+        }),
+        timer(10_000),
+    );
+    let per_step = spec.figures().unwrap_err();
+    for compress in [0.5, 100.0, 65_535.0] {
+        assert_eq!(spec.run_table(compress).unwrap_err(), per_step);
+    }
+    assert_eq!(
+        per_step.to_string(),
+        "entry 2546 rounds to 0 ticks; the timer resolves step frequencies up to 10000 Hz"
+    );
+}

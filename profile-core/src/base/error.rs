@@ -123,6 +123,11 @@ pub enum Error {
         /// The value given.
         value: f64,
     },
+    /// `compress` above [`MAX_COMPRESS_TICKS`](crate::MAX_COMPRESS_TICKS).
+    CompressTooLarge {
+        /// The value given.
+        value: f64,
+    },
     /// No run keeps an edge within `compress` ticks of the curve.
     CompressUnreachable {
         /// The edge (1-based step).
@@ -226,9 +231,9 @@ impl Error {
             Error::EmptySegment { .. }
             | Error::SegmentTooLong { .. }
             | Error::SegmentsNeedTime { .. } => Some(Key::SEGMENTS),
-            Error::CompressBelowHalf { .. } | Error::CompressUnreachable { .. } => {
-                Some(Key::COMPRESS)
-            }
+            Error::CompressBelowHalf { .. }
+            | Error::CompressTooLarge { .. }
+            | Error::CompressUnreachable { .. } => Some(Key::COMPRESS),
             Error::BufferLength { .. } | Error::WordMismatch { .. } => None,
             Error::NoConvergence { .. } => None,
         }
@@ -388,6 +393,12 @@ impl Error {
                 f,
                 "`compress` is the largest pulse-edge error allowed, in ticks, and must be at \
                  least 0.5: a whole tick cannot land nearer to every edge (got {})",
+                Num(value)
+            ),
+            Error::CompressTooLarge { value } => write!(
+                f,
+                "`compress` is the largest pulse-edge error allowed, in ticks, and must be at \
+                 most 65535, the longest period a run's 16-bit word holds (got {})",
                 Num(value)
             ),
             Error::CompressUnreachable { step, tolerance } => write!(

@@ -176,6 +176,10 @@ fn examples() -> Vec<(Error, &'static str)> {
             "`compress` is the largest pulse-edge error allowed, in ticks, and must be at least 0.5: a whole tick cannot land nearer to every edge (got 0.25)",
         ),
         (
+            Error::CompressTooLarge { value: 1e20 },
+            "`compress` is the largest pulse-edge error allowed, in ticks, and must be at most 65535, the longest period a run's 16-bit word holds (got 1e20)",
+        ),
+        (
             Error::CompressUnreachable {
                 step: 12,
                 tolerance: 0.5
@@ -212,13 +216,14 @@ fn covered(e: &Error) -> usize {
         Error::SegmentTooLong { .. } => 22,
         Error::CompressBelowHalf { .. } => 23,
         Error::CompressUnreachable { .. } => 24,
+        Error::CompressTooLarge { .. } => 25,
     }
 }
 
 #[test]
 fn every_variant_has_a_pinned_message() {
     let examples = examples();
-    let mut seen = [false; 25];
+    let mut seen = [false; 26];
     for (error, message) in &examples {
         assert_eq!(error.to_string(), *message);
         seen[covered(error)] = true;

@@ -26,6 +26,11 @@ use crate::table::spec::{CheckedSpec, Spec};
 /// half a tick to every point of the curve.
 pub const MIN_COMPRESS_TICKS: f64 = 0.5;
 
+/// The largest `compress` allowed: the longest period a run's 16-bit word
+/// holds. An edge allowed further from the curve could lag it by more than
+/// any step of the ramp.
+pub const MAX_COMPRESS_TICKS: f64 = u16::MAX as f64;
+
 /// What a compressed table amounts to.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RunFigures {
@@ -185,6 +190,13 @@ struct Fit<'a> {
     bands: Vec<(i64, i64)>,
 }
 
+/// The longest run fitted. A run's polygon gains a vertex every few
+/// edges while the band is wide, so fitting a run costs about the square of
+/// its length: this bounds the work for the longest table at the largest
+/// `compress` to a fraction of a second (optimised), at a cost of at most
+/// 64 runs (640 bytes, against 131 072 per step) on a 65 536-step table.
+const MAX_RUN_STEPS: usize = 1024;
+
 /// How far the look at the next run goes: beyond, any choice is as good.
 const REACH: usize = 256;
 
@@ -193,13 +205,17 @@ const REACH: usize = 256;
 const SHORTER: [usize; 7] = [0, 1, 2, 4, 8, 16, 32];
 
 impl<'a> Fit<'a> {
+    /// `exact` holds at most [`MAX_LEN`](crate::MAX_LEN) edges of periods
+    /// a word holds, and `tolerance` is at most [`MAX_COMPRESS_TICKS`]: every
+    /// band lies below 2^33 ticks, 2^49 in fixed point.
     fn new(exact: &'a [f64], tolerance: f64) -> Self {
+        let fixed = |ticks: f64| (ticks as i64).saturating_mul(1 << RUN_FRACTION_BITS);
         let bands = exact
             .iter()
             .map(|&t| {
-                let lo = libm::ceil(t - tolerance) as i64;
-                let hi = libm::floor(t + tolerance) as i64;
-                (lo << RUN_FRACTION_BITS, ((hi + 1) << RUN_FRACTION_BITS) - 1)
+                let lo = fixed(libm::ceil(t - tolerance));
+                let hi = fixed(libm::floor(t + tolerance) + 1.0);
+                (lo, hi.saturating_sub(1))
             })
             .collect();
         Fit {
@@ -317,7 +333,7 @@ impl<'a> Fit<'a> {
     /// The next run from `at`: of the longest runs and a few shorter ones,
     /// the one that takes this run and the next furthest.
     fn next_run(&self, at: At) -> Result<(Run, i64), Error> {
-        let kept = self.polygons(at, BACKTRACK, u16::MAX as usize);
+        let kept = self.polygons(at, BACKTRACK, MAX_RUN_STEPS);
         let longest = kept.back().map_or(0, |(len, _)| *len);
         let mut best: Option<(usize, Run, i64)> = None;
         let mut tried = 0;
@@ -360,10 +376,14 @@ impl<'a> Fit<'a> {
 
 impl CheckedSpec {
     /// Checks that the table can be compressed with edges within
-    /// `tolerance` ticks: at least half a tick, 16-bit periods.
+    /// `tolerance` ticks: from half a tick to [`MAX_COMPRESS_TICKS`], 16-bit
+    /// periods.
     pub fn check_compress(&self, tolerance: f64) -> Result<(), Error> {
-        if !tolerance.is_finite() || tolerance < MIN_COMPRESS_TICKS {
+        if tolerance.is_nan() || tolerance < MIN_COMPRESS_TICKS {
             return Err(Error::CompressBelowHalf { value: tolerance });
+        }
+        if tolerance > MAX_COMPRESS_TICKS {
+            return Err(Error::CompressTooLarge { value: tolerance });
         }
         let spec = self.spec();
         if spec.discretization == Discretization::LeftEndpoint {
@@ -393,8 +413,14 @@ impl CheckedSpec {
 
     /// Fits runs to the curve's exact edges, each played edge within
     /// `tolerance` ticks of its exact time.
+    ///
+    /// The runs stand for the per-step table of the same spec and hold the
+    /// same 16-bit periods: a period that table refuses (longer than the
+    /// word holds, or rounding to 0 ticks) is refused here first, at its
+    /// step, before any run is fitted.
     pub fn run_table(&self, tolerance: f64) -> Result<RunTable, Error> {
         self.check_compress(tolerance)?;
+        self.figures()?;
         let scale = self.spec().timer.ticks_per_second();
         let mut exact = Vec::with_capacity(self.len() as usize);
         self.for_each_exact_edge(|_, t| exact.push(t * scale))?;
