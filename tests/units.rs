@@ -35,8 +35,19 @@ static EXPONENTIAL_PLAIN: [u16; 106] = period_table!(
     timer_hz = 2_500_000,
 );
 
+// Integer keys written as whole floats, as `1e7` is in Rust and TOML.
+static SIGMOID_FLOATS: [u16; 1000] = period_table!(
+    curve = sigmoid,
+    len = 1e3,
+    fmin = 500,
+    fmax = 64e3,
+    flexible = 8,
+    timer_hz = 1e7,
+);
+
 #[test]
 fn the_macro_reads_units_as_the_numbers_they_stand_for() {
+    assert_eq!(SIGMOID_FLOATS, SIGMOID_PLAIN);
     assert_eq!(SIGMOID_UNITS, SIGMOID_PLAIN);
     assert_eq!(EXPONENTIAL_UNITS, EXPONENTIAL_PLAIN);
 }
@@ -75,4 +86,16 @@ fn a_profiles_file_reads_units_as_the_numbers_they_stand_for() {
     );
     assert_eq!(units, plain);
     assert_eq!(units, EXPONENTIAL_PLAIN.map(u32::from).to_vec());
+    let floats = periods(
+        r#"
+        [profiles.ramp]
+        curve = "exponential"
+        fmin = 2e2
+        fmax = 1.2e3
+        f_inf = 1300.0
+        tau = 5e-2
+        timer_hz = 2.5e6
+        "#,
+    );
+    assert_eq!(floats, plain);
 }

@@ -338,6 +338,28 @@ mod tests {
     }
 
     #[test]
+    fn whole_floats_are_integers() {
+        let mut list = orange();
+        list[1].1 = Value::Float(1e3);
+        list[5].1 = Value::Float(1e7);
+        let spec = read(&args(&list), &999, &[]).unwrap().spec;
+        assert_eq!((spec.len(), spec.timer), (1000, Timer::new(10_000_000)));
+        // Beyond 2^53 the range says so, with the value as written.
+        list[1].1 = Value::Float(1e20);
+        list[5].1 = Value::Float(-1e300);
+        assert_eq!(
+            errors(&list),
+            vec![
+                (3, "`len` must be at most 65536 (got 1e20)".to_string()),
+                (
+                    11,
+                    "`timer_hz` must be greater than 0 (got -1e300)".to_string()
+                ),
+            ]
+        );
+    }
+
+    #[test]
     fn wrong_kinds() {
         let mut list = orange();
         list[1].1 = Value::Float(1000.5);

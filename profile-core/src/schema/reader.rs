@@ -8,10 +8,13 @@ use std::vec::Vec;
 use super::suggest::{Hint, did_you_mean};
 use super::{Arg, Diagnostic, Value, quoted, unit, units};
 use crate::base::MAX_LEN;
-use crate::base::error::Error;
+use crate::base::error::{Error, Num};
 use crate::base::key::Key;
 use crate::curves::Reader;
 use crate::motor::{MAX_CURVE_POINTS, Motor, TorqueCurve};
+
+/// 2^53: every integer up to it is exactly a `f64`.
+const EXACT_FLOAT_INT: f64 = 9_007_199_254_740_992.0;
 
 /// Arguments being read, and what is wrong with them so far.
 pub(crate) struct Collector<'a, L> {
@@ -95,10 +98,17 @@ impl<L: Clone> Collector<'_, L> {
         }
     }
 
+    /// An integer key's value. A float literal with a whole value (`1e7`,
+    /// `1000.0`) counts as that integer, as TOML and Rust write `1e3` as a
+    /// float; beyond 2^53, where floats skip integers, as 2^53 (out of every
+    /// key's range: [`Collector::ranged`] then quotes the value as written).
     pub(crate) fn int(&mut self, key: Key, expected: &str) -> Option<i128> {
         let (i, value) = self.numeric(key)?;
         match &value {
             Value::Int(v) => Some(*v),
+            Value::Float(v) if v.is_finite() && libm::trunc(*v) == *v => {
+                Some(v.clamp(-EXACT_FLOAT_INT, EXACT_FLOAT_INT) as i128)
+            }
             other => {
                 let message = format!("`{key}` expects {expected}, got {}", other.quoted());
                 self.at_arg(i, false, message);
@@ -115,14 +125,24 @@ impl<L: Clone> Collector<'_, L> {
         check: impl Fn(i128) -> Result<T, String>,
     ) -> Option<T> {
         let v = self.int(key, expected)?;
-        match check(v) {
-            Ok(t) => Some(t),
-            Err(message) => {
-                let (i, _) = self.find(key)?;
-                self.at_arg(i, false, message);
-                None
-            }
-        }
+        let (i, arg) = self.find(key)?;
+        let beyond = match arg.value {
+            Value::Float(f) if libm::fabs(f) > EXACT_FLOAT_INT => Some(f),
+            _ => None,
+        };
+        let message = match (check(v), beyond) {
+            (Ok(t), None) => return Some(t),
+            (Err(message), None) => message,
+            // A whole float beyond 2^53 was read as 2^53: the range's
+            // message, with the value as written.
+            (Err(message), Some(f)) => message.replace(
+                &(v.unsigned_abs()).to_string(),
+                &Num(libm::fabs(f)).to_string(),
+            ),
+            (Ok(_), Some(f)) => format!("`{key}` expects {expected}, got `{}`", Num(f)),
+        };
+        self.at_arg(i, false, message);
+        None
     }
 
     pub(crate) fn name<T: Copy>(&mut self, key: Key, choices: &[(&'static str, T)]) -> Option<T> {
