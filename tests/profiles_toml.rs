@@ -537,3 +537,57 @@ fn write_rust_asks_cargo_to_watch_the_file() {
         "loaded: the file is watched"
     );
 }
+
+/// A profile's own `accel`, `tau` or `segments` displaces a default `len`
+/// or `compress`: the default applies only where it does not contradict the
+/// profile.
+#[test]
+fn a_profile_s_own_length_and_layout_displace_the_defaults() {
+    let source = r#"
+[defaults]
+timer_hz = 1_000_000
+len = 500
+compress = 1
+
+[profiles.by_accel]
+curve = "linear"
+fmin = 200
+fmax = 2000
+accel = 5000
+
+[profiles.by_tau]
+curve = "exponential"
+fmin = 200
+fmax = 2000
+f_inf = 2100
+tau = 0.1
+segments = 8
+
+[profiles.by_default]
+curve = "linear"
+fmin = 200
+fmax = 2000
+"#;
+    let profiles = Profiles::parse("profiles.toml", source).unwrap_or_else(|e| panic!("{e}"));
+    let by_accel = profiles.profiles()[0].table.spec().curve;
+    assert_eq!(
+        by_accel,
+        Curve::Linear(Linear {
+            fmin: 200.0,
+            fmax: 2000.0,
+            extent: LinearExtent::Accel(5000.0),
+        })
+    );
+    assert!(matches!(profiles.profiles()[0].table, Generated::Runs(_)));
+    let by_tau = &profiles.profiles()[1].table;
+    assert!(matches!(by_tau, Generated::Segments(_)));
+    assert!(matches!(
+        by_tau.spec().curve,
+        Curve::Exponential(Exponential {
+            extent: ExponentialExtent::Tau(_),
+            ..
+        })
+    ));
+    let by_default = profiles.profiles()[2].table.spec();
+    assert_eq!(by_default.len(), 500);
+}

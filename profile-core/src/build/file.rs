@@ -11,6 +11,7 @@ use serde::Deserialize;
 use toml::Spanned;
 
 use crate::base::key::Key;
+use crate::curves::Room;
 use crate::schema::{self, Arg, Diagnostic, Hint, Value, did_you_mean, units};
 
 type Table = BTreeMap<Spanned<String>, Spanned<toml::Value>>;
@@ -373,30 +374,50 @@ fn profile(
             }
         }
     }
-    let curve = args
+    let room = args
         .iter()
         .chain(defaults)
         .find(|a| a.key == Key::CURVE.name())
         .and_then(|a| match &a.value {
-            Value::Name(n) if schema::curve_names().any(|c| c == n) => Some(schema::keys_for(n)),
+            Value::Name(n) => Room::named(n),
             _ => None,
         });
+    let curve_keys = room.map(|r| schema::keys_for(r.name));
     let has_motor = named.is_some()
         || args
             .iter()
             .any(|a| Key::from_name(&a.key).is_some_and(Key::is_motor));
+    let own: Vec<String> = args.iter().map(|a| a.key.clone()).collect();
+    let given = |key: Key| own.iter().any(|k| k == key.name());
     for d in defaults {
         let applies = match Key::from_name(&d.key) {
             Some(k) if k.is_motor() => has_motor,
-            _ => curve
-                .as_ref()
-                .is_none_or(|keys| keys.iter().any(|k| k.name() == d.key)),
+            Some(k) => {
+                curve_keys.as_ref().is_none_or(|keys| keys.contains(&k))
+                    && !displaced(k, room).any(given)
+            }
+            None => room.is_none(),
         };
-        if applies && !args.iter().any(|a| a.key == d.key) {
+        if applies && !own.contains(&d.key) {
             args.push(d.clone());
         }
     }
     Ok(args)
+}
+
+/// The keys that, given in a profile, displace a default `key`: the other
+/// of the curve's pair that sets the ramp's length (`len` or `accel`, `len`
+/// or `tau`), the other layout (`segments` or `compress`).
+fn displaced(key: Key, room: Option<&Room>) -> impl Iterator<Item = Key> {
+    let pairs = room
+        .and_then(|r| r.one_of)
+        .into_iter()
+        .chain([[Key::SEGMENTS, Key::COMPRESS]]);
+    pairs.filter_map(move |[a, b]| match key {
+        k if k == a => Some(b),
+        k if k == b => Some(a),
+        _ => None,
+    })
 }
 
 #[cfg(test)]

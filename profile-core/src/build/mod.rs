@@ -15,7 +15,9 @@
 //!
 //! A profile takes exactly the keys of `period_table!`; names (`curve`,
 //! `rounding`, ...) are strings. A default that does not apply to a
-//! profile's curve (`flexible` for a linear ramp) is ignored for it.
+//! profile is ignored for it: a key its curve does not take (`flexible` for
+//! a linear ramp), `len` where the profile sets its length by `accel` or
+//! `tau`, `compress` where it gives `segments`, and the reverse.
 //!
 //! In a build script, one call reads the file, writes `OUT_DIR/profiles.rs`,
 //! asks Cargo to rerun when the file changes and reports a mistake as
