@@ -158,11 +158,33 @@ fn checksum(periods: &[u32]) -> u64 {
 
 /// The run player's prefix: the profiles file's stem.
 fn prefix(profiles: &Profiles) -> String {
-    Path::new(profiles.file())
+    let stem = Path::new(profiles.file())
         .file_stem()
         .unwrap()
         .to_string_lossy()
-        .to_lowercase()
+        .to_lowercase();
+    // Stems that are no C identifier, as the README names their prefixes.
+    match stem.as_str() {
+        "3d_printer" => "profiles_3d_printer".to_string(),
+        "é" | "__" => "profiles".to_string(),
+        "x--y_" => "x_y".to_string(),
+        _ => stem,
+    }
+}
+
+/// The include guard's stem: the file stem in upper case, every other
+/// character than a letter or digit made `_`.
+fn guard_stem(profiles: &Profiles) -> String {
+    let stem = Path::new(profiles.file())
+        .file_stem()
+        .unwrap()
+        .to_string_lossy()
+        .to_uppercase();
+    match stem.as_str() {
+        "É" => "_".to_string(),
+        "X--Y_" => "X__Y_".to_string(),
+        _ => stem,
+    }
 }
 
 /// `#define NAME_FIGURE value` lines of the header, per profile, in order:
@@ -208,7 +230,7 @@ fn program(profiles: &Profiles, defines: &BTreeMap<String, Vec<(String, bool)>>)
     let mut c = String::new();
     c.push_str("#include <stdio.h>\n#include <stddef.h>\n");
     // The one file that defines a single header's run player.
-    let stem = prefix(profiles).to_uppercase();
+    let stem = guard_stem(profiles);
     let _ = writeln!(c, "#define STEPPER_PROFILES_{stem}_IMPLEMENTATION");
     c.push_str("#include \"profiles.h\"\n#include \"profiles.h\" /* the guard */\n\n");
     c.push_str("unsigned long other_first(void);\n\n");
@@ -710,5 +732,40 @@ len = 100
             printed["microstep"]["steps"],
             Figure::Int(u64::from(micro.figures.steps))
         );
+    }
+}
+
+/// A file whose name is no C identifier still gives a player whose names
+/// are identifiers C leaves to programs: no leading digit, no leading or
+/// double `_`; the C compiles and plays as with any other name.
+#[test]
+fn run_players_of_files_named_like_no_identifier() {
+    let source = r#"
+[profiles.ramp]
+curve = "linear"
+fmin = 500
+fmax = 5000
+len = 300
+timer_hz = 1_000_000
+compress = 1
+"#;
+    for (file, dir, expected) in [
+        (
+            "3d_printer.toml",
+            "runs_digit",
+            "profiles_3d_printer_runs_start",
+        ),
+        ("é.toml", "runs_accent", "profiles_runs_start"),
+        ("__.toml", "runs_underscores", "profiles_runs_start"),
+        ("x--y_.toml", "runs_dashes", "x_y_runs_start"),
+    ] {
+        let profiles = Profiles::parse(file, source).unwrap_or_else(|e| panic!("{e}"));
+        let split = profiles.c_split("profiles.h", &CStyle::default());
+        assert!(split.header.contains(expected), "{}", split.header);
+        assert!(profiles.c_header().contains(expected));
+        for layout in [Layout::Single, Layout::Split(CStyle::default())] {
+            let printed = check_header(&profiles, dir, &layout);
+            assert_eq!(printed["ramp"]["steps"], Figure::Int(300));
+        }
     }
 }

@@ -71,13 +71,25 @@ struct Names<'a> {
 
 impl Names<'_> {
     /// The run player's prefix: the guard's stem in lower case
-    /// (`STEPPER_PROFILES_RAMPS_H` gives `ramps`).
+    /// (`STEPPER_PROFILES_RAMPS_H` gives `ramps`), made an identifier C
+    /// leaves to programs: runs of `_` made one, none leading or trailing,
+    /// `profiles_` before a leading digit (`3d_printer.toml` gives
+    /// `profiles_3d_printer`), `profiles` for a stem with no letter or
+    /// digit (`é.toml`).
     fn prefix(&self) -> String {
         let stem = self
             .guard
             .strip_prefix("STEPPER_PROFILES_")
             .unwrap_or(self.guard);
-        stem.strip_suffix("_H").unwrap_or(stem).to_lowercase()
+        let stem = stem.strip_suffix("_H").unwrap_or(stem).to_lowercase();
+        let words: Vec<&str> = stem.split('_').filter(|w| !w.is_empty()).collect();
+        match words.first() {
+            None => "profiles".to_string(),
+            Some(w) if w.starts_with(|c: char| c.is_ascii_digit()) => {
+                format!("profiles_{}", words.join("_"))
+            }
+            Some(_) => words.join("_"),
+        }
     }
 
     /// The macro that asks a single header for the player's definitions.
