@@ -86,8 +86,7 @@ impl ThreeStageInTime {
         curve.n1 = curve.stage1_steps(t1);
         let d = t2 - t1;
         curve.n2 = curve.n1 + f1 * d + a * d * d / 2.0;
-        let d = t2 - tc;
-        curve.nc = curve.n2 + fc * (tc - t2) + b / 3.0 * d * d * d;
+        curve.nc = curve.n2 + fc * (tc - t2) + curve.parabola_steps(t2 - tc);
         curve
     }
 
@@ -97,6 +96,13 @@ impl ThreeStageInTime {
     fn stage1_steps(&self, t: f64) -> f64 {
         let h = crate::base::math::exp_excess_ratio(self.shape * t);
         self.f0 * t + (self.a + self.shape * (self.f1 - self.f0)) * t * t * h
+    }
+
+    /// `b d³ / 3`, the parabola's steps term `d` before `tc`, as
+    /// `(a d)³ / (12 a (fc - f2))`: finite wherever the ramp is.
+    fn parabola_steps(&self, d: f64) -> f64 {
+        let ad = self.a * d;
+        ad * ad * ad / (12.0 * self.a * (self.fc - self.f2))
     }
 
     /// Steps until `fmax`.
@@ -126,8 +132,10 @@ impl TimeCurve for ThreeStageInTime {
         } else if t < self.t2 {
             self.f1 + self.a * (t - self.t1)
         } else if t < self.tc {
-            let d = t - self.tc;
-            self.fc - self.b * d * d
+            // `b d²` as `(a d)² / 4 (fc - f2)`: `b` overflows for a huge `a`
+            // while `a d` stays within `2 (fc - f2)`.
+            let ad = self.a * (t - self.tc);
+            self.fc - ad * ad / (4.0 * (self.fc - self.f2))
         } else {
             self.fc
         }
@@ -140,9 +148,8 @@ impl TimeCurve for ThreeStageInTime {
             let d = t - self.t1;
             self.n1 + self.f1 * d + self.a * d * d / 2.0
         } else if t < self.tc {
-            let d = t - self.tc;
-            let d2 = self.t2 - self.tc;
-            self.n2 + self.fc * (t - self.t2) - self.b / 3.0 * (d * d * d - d2 * d2 * d2)
+            self.n2 + self.fc * (t - self.t2) - self.parabola_steps(t - self.tc)
+                + self.parabola_steps(self.t2 - self.tc)
         } else {
             self.nc + self.fc * (t - self.tc)
         }
@@ -301,5 +308,28 @@ mod tests {
             "{sum} {}",
             c.steps(c.tc)
         );
+    }
+
+    /// An acceleration whose square overflows still gives a finite ramp:
+    /// the stages take next to no time, the steps are those of the first
+    /// stage's instant rise, and the frequency stays within `fmin..=fmax`.
+    #[test]
+    fn a_huge_acceleration_keeps_the_ramp_finite() {
+        for accel in [1e10, 1e160, 1e200, 1e300] {
+            let c = ThreeStageInTime::new(&ThreeStage {
+                fmin: 100.0,
+                fmax: 5000.0,
+                accel,
+                f1: 1000.0,
+                f2: 3000.0,
+                shape: 5.0,
+            });
+            let n = c.ramp_steps();
+            assert!(n.is_finite() && (0.0..1e-2).contains(&n), "{accel}: {n}");
+            for t in [c.t1, (c.t2 + c.tc) / 2.0, c.tc, 2.0 * c.tc] {
+                let f = c.freq(t);
+                assert!((100.0..=5000.0).contains(&f), "{accel}: f({t}) = {f}");
+            }
+        }
     }
 }
