@@ -98,4 +98,17 @@ fn a_profiles_file_reads_units_as_the_numbers_they_stand_for() {
         "#,
     );
     assert_eq!(floats, plain);
+    // Digit separators inside a string, as in the literal `1_200Hz`.
+    let separated = periods(
+        r#"
+        [profiles.ramp]
+        curve = "exponential"
+        fmin = "200 Hz"
+        fmax = "1_200 Hz"
+        f_inf = "1_300Hz"
+        tau = "50 ms"
+        timer_hz = "2_500 kHz"
+        "#,
+    );
+    assert_eq!(separated, plain);
 }

@@ -118,6 +118,7 @@ fn no_suffix_is_ever_ignored() {
         args[slot].1 = Value::Quantity {
             number: number.clone(),
             unit: unit.clone(),
+            written: format!("{number}{unit}"),
         };
         let with_unit = read(&args);
         match exponent(key, &unit) {

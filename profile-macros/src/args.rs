@@ -62,6 +62,8 @@ fn parse_value(input: ParseStream, key: &Ident) -> syn::Result<(Value, Loc)> {
         .map_err(|e| syn::Error::new(e.span(), expected()))?;
     let mut loc = minus.to_token_stream();
     lit.to_tokens(&mut loc);
+    let sign = if minus.is_some() { "-" } else { "" };
+    let written = format!("{sign}{lit}");
     let negative = minus.is_some();
     let (text, suffix) = match Lit::new(lit) {
         Lit::Int(i) => (i.base10_digits().to_string(), i.suffix().to_string()),
@@ -76,13 +78,14 @@ fn parse_value(input: ParseStream, key: &Ident) -> syn::Result<(Value, Loc)> {
         text.clone()
     };
     if !suffix.is_empty() {
-        return Ok((quantity(number, &suffix), loc));
+        return Ok((quantity(number, &suffix, written), loc));
     }
     // A unit after a space, `64 kHz`, reads as `64kHz`.
     if input.peek(Ident) {
         let unit: Ident = input.parse()?;
         unit.to_tokens(&mut loc);
-        return Ok((quantity(number, &unit.to_string()), loc));
+        let written = format!("{written} {unit}");
+        return Ok((quantity(number, &unit.to_string(), written), loc));
     }
     let integer = text.bytes().all(|b| b.is_ascii_digit());
     let value = match text.parse::<i128>() {
@@ -92,11 +95,13 @@ fn parse_value(input: ParseStream, key: &Ident) -> syn::Result<(Value, Loc)> {
     Ok((value, loc))
 }
 
-/// A number with a unit or a suffix, which the schema reads for its key.
-fn quantity(number: String, unit: &str) -> Value {
+/// A number with a unit or a suffix, which the schema reads for its key;
+/// `written` as the source has it, for messages.
+fn quantity(number: String, unit: &str, written: String) -> Value {
     Value::Quantity {
         number,
         unit: unit.to_string(),
+        written,
     }
 }
 
@@ -236,20 +241,24 @@ mod tests {
             curve[0].value,
             Value::Points(vec![(500.0, 0.4), (2e6, 0.1)])
         );
-        let units =
-            parse(quote::quote!(fmax = 64kHz, tau = 5 ms, fmin = -1.5e3Hz, len = 10u32)).unwrap();
-        let quantity = |n: &str, u: &str| Value::Quantity {
+        let units = parse(quote::quote!(
+            fmax = 64_000Hz, tau = 5 ms, fmin = -1.5e3Hz, len = 10u32, fmax = 10 khz
+        ))
+        .unwrap();
+        let quantity = |n: &str, u: &str, w: &str| Value::Quantity {
             number: n.into(),
             unit: u.into(),
+            written: w.into(),
         };
         let values: Vec<_> = units.iter().map(|a| a.value.clone()).collect();
         assert_eq!(
             values,
             vec![
-                quantity("64", "kHz"),
-                quantity("5", "ms"),
-                quantity("-1.5e3", "Hz"),
-                quantity("10", "u32"),
+                quantity("64000", "Hz", "64_000Hz"),
+                quantity("5", "ms", "5 ms"),
+                quantity("-1.5e3", "Hz", "-1.5e3Hz"),
+                quantity("10", "u32", "10u32"),
+                quantity("10", "khz", "10 khz"),
             ]
         );
         assert_eq!(units[1].value_loc.to_string(), "5 ms");

@@ -257,6 +257,20 @@ impl fmt::Display for Num {
     }
 }
 
+/// A frequency to two decimals (`152.59`), or to six significant digits
+/// where two decimals would read 0 (`0.00232831`).
+struct Hundredths(f64);
+
+impl fmt::Display for Hundredths {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if libm::fabs(self.0) >= 0.01 || self.0 == 0.0 {
+            write!(f, "{:.2}", self.0)
+        } else {
+            Significant(self.0).fmt(f)
+        }
+    }
+}
+
 /// A number with at most six significant digits, trailing zeros dropped.
 struct Significant(f64);
 
@@ -369,15 +383,35 @@ impl fmt::Display for Error {
     }
 }
 
+/// [`Error::RampTooLong`]'s message: the length in exponent form beyond
+/// 1e16 steps, and said so where it is no length at all.
+fn ramp_too_long(f: &mut fmt::Formatter<'_>, key: Key, steps: f64, max: u32) -> fmt::Result {
+    if steps == f64::INFINITY {
+        write!(
+            f,
+            "`{key}` makes the ramp longer than a float counts (1.8e308 steps); at most {max} \
+             are allowed"
+        )
+    } else if steps.is_nan() || steps <= 0.0 {
+        write!(
+            f,
+            "`{key}` gives the ramp no length in steps (got {steps}); from 1 to {max} are allowed"
+        )
+    } else {
+        write!(
+            f,
+            "`{key}` makes the ramp {} steps long; at most {max} are allowed",
+            Num(libm::round(steps))
+        )
+    }
+}
+
 impl Error {
     /// The messages of the errors about lengths, layouts, the timer and the
     /// table itself.
     fn fmt_table(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match *self {
-            Error::RampTooLong { key, steps, max } => write!(
-                f,
-                "`{key}` makes the ramp {steps:.0} steps long; at most {max} are allowed"
-            ),
+            Error::RampTooLong { key, steps, max } => ramp_too_long(f, key, steps, max),
             Error::EmptySegment { index, steps } => write!(
                 f,
                 "segment {index} holds no step of the {steps}-step ramp; use fewer `segments`"
@@ -433,10 +467,12 @@ impl Error {
                 lowest_hz,
             } => write!(
                 f,
-                "entry {index} is {ticks:.0} ticks, more than `word = {}` holds ({}); \
-                 at `timer_hz = {timer_hz}` the lowest step frequency that fits is {lowest_hz:.2} Hz",
+                "entry {index} is {} ticks, more than `word = {}` holds ({}); \
+                 at `timer_hz = {timer_hz}` the lowest step frequency that fits is {} Hz",
+                Num(libm::round(ticks)),
                 word.name(),
                 word.max(),
+                Hundredths(lowest_hz),
             ),
             Error::PeriodZero { index, highest_hz } => write!(
                 f,

@@ -89,6 +89,30 @@ fn examples() -> Vec<(Error, &'static str)> {
             "`tau` makes the ramp 123456 steps long; at most 65536 are allowed",
         ),
         (
+            Error::RampTooLong {
+                key: Key::ACCEL,
+                steps: 1.25e200,
+                max: 65_536
+            },
+            "`accel` makes the ramp 1.25e200 steps long; at most 65536 are allowed",
+        ),
+        (
+            Error::RampTooLong {
+                key: Key::ACCEL,
+                steps: f64::INFINITY,
+                max: 65_536
+            },
+            "`accel` makes the ramp longer than a float counts (1.8e308 steps); at most 65536 are allowed",
+        ),
+        (
+            Error::RampTooLong {
+                key: Key::ACCEL,
+                steps: f64::NAN,
+                max: 65_536
+            },
+            "`accel` gives the ramp no length in steps (got NaN); from 1 to 65536 are allowed",
+        ),
+        (
             Error::EmptySegment {
                 index: 0,
                 steps: 120
@@ -142,6 +166,16 @@ fn examples() -> Vec<(Error, &'static str)> {
                 lowest_hz: 152.590218
             },
             "entry 0 is 99980 ticks, more than `word = u16` holds (65535); at `timer_hz = 10000000` the lowest step frequency that fits is 152.59 Hz",
+        ),
+        (
+            Error::PeriodOverflow {
+                index: 3,
+                ticks: 1e300,
+                word: Word::U32,
+                timer_hz: 10_000_000,
+                lowest_hz: 10_000_000.0 / 4_294_967_295.0
+            },
+            "entry 3 is 1e300 ticks, more than `word = u32` holds (4294967295); at `timer_hz = 10000000` the lowest step frequency that fits is 0.00232831 Hz",
         ),
         (
             Error::PeriodZero {

@@ -34,13 +34,15 @@ pub enum Value {
     Float(f64),
     /// A bare name or a string: `sigmoid`, `"u16"`.
     Name(String),
-    /// A number written with a unit or a suffix, as written: `64kHz` is
-    /// `number` `"64"` and `unit` `"kHz"`. Keys read it through [`units`].
+    /// A number written with a unit or a suffix: `64kHz` is `number` `"64"`
+    /// and `unit` `"kHz"`. Keys read it through [`units`].
     Quantity {
         /// The number: sign, digits, point and exponent, without `_`.
         number: String,
         /// The unit or suffix.
         unit: String,
+        /// The value as written, for messages: `64_000 Hz`, `10 khz`.
+        written: String,
     },
     /// A list of `(x, y)` number pairs: `[(0, 0.4), (1000, 0.3)]`.
     Points(Vec<(f64, f64)>),
@@ -73,7 +75,7 @@ impl core::fmt::Display for Value {
             Value::Int(v) => write!(f, "{v}"),
             Value::Float(v) => write!(f, "{v:?}"),
             Value::Name(v) | Value::Other(v) => f.write_str(v),
-            Value::Quantity { number, unit } => write!(f, "{number}{unit}"),
+            Value::Quantity { written, .. } => f.write_str(written),
             Value::Points(points) => {
                 f.write_str("[")?;
                 for (i, (x, y)) in points.iter().enumerate() {

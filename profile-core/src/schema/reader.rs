@@ -61,7 +61,7 @@ impl<L: Clone> Collector<'_, L> {
         let args = self.args;
         let arg_value = &args[i].value;
         let (number, unit) = match arg_value {
-            Value::Quantity { number, unit } => (number.as_str(), unit.as_str()),
+            Value::Quantity { number, unit, .. } => (number.as_str(), unit.as_str()),
             Value::Name(text) => match units::split(text) {
                 Some(split) => split,
                 None => return Some((i, arg_value.clone())),
@@ -72,7 +72,8 @@ impl<L: Clone> Collector<'_, L> {
             Value::Name(text) => text.trim().to_string(),
             other => other.to_string(),
         };
-        match units::with_unit(key, number, unit, &written) {
+        let number = number.replace('_', "");
+        match units::with_unit(key, &number, unit, &written) {
             Ok(v) => Some((i, v)),
             Err(message) => {
                 self.at_arg(i, false, message);

@@ -11,6 +11,7 @@ use std::string::{String, ToString};
 
 use super::suggest::{Hint, did_you_mean};
 use super::{Value, quoted};
+use crate::base::error::Num;
 use crate::base::key::Key;
 
 /// What a numeric key measures, when it has a unit.
@@ -139,8 +140,9 @@ pub fn scaled(number: &str, exponent: i32) -> Option<Value> {
     v.is_finite().then_some(Value::Float(v))
 }
 
-/// `"64 kHz"`, `"5ms"`: a string read as a number and a unit, split; `None`
-/// when it does not start with a number followed by letters.
+/// `"64 kHz"`, `"5ms"`, `"64_000 Hz"`: a string read as a number and a
+/// unit, split; `None` when it does not start with a number followed by
+/// letters. The number keeps its `_` separators.
 pub fn split(text: &str) -> Option<(&str, &str)> {
     let text = text.trim();
     let bytes = text.as_bytes();
@@ -152,6 +154,8 @@ pub fn split(text: &str) -> Option<(&str, &str)> {
         let sign_ok = i == 0 || (seen_e && matches!(bytes[i - 1], b'e' | b'E'));
         match b {
             b'0'..=b'9' => seen_digit = true,
+            // A digit separator, as in Rust and TOML literals: `64_000 Hz`.
+            b'_' if i > 0 && bytes[i - 1].is_ascii_digit() => {}
             b'.' if !seen_e => {}
             b'+' | b'-' if sign_ok => {}
             // An exponent only when a digit follows it, so `5 e` is not one.
@@ -175,9 +179,22 @@ pub fn split(text: &str) -> Option<(&str, &str)> {
 }
 
 /// `v` of `key` as a user would write it: `64 kHz`, `10 MHz`, `5 ms`,
-/// `1500 Hz/s`; the largest unit that leaves a number of at least 1.
+/// `1500 Hz/s`; the largest unit that leaves a number of at least 1. A
+/// value beyond 1e16 or below 1e-6 in the base unit in exponent form
+/// (`1e200 Hz/s`), not hundreds of digits.
 pub fn show(key: Key, v: f64) -> String {
-    let plain = format!("{v}");
+    let plain = Num(v).to_string();
+    if plain.contains('e') {
+        let unit = match quantity(key) {
+            Some(q) => q.units()[0].0,
+            None => super::unit(key).split(' ').next().unwrap_or(""),
+        };
+        return if unit.is_empty() {
+            plain
+        } else {
+            format!("{plain} {unit}")
+        };
+    }
     let Some(q) = quantity(key) else {
         return match super::unit(key) {
             "" => plain,
@@ -328,6 +345,9 @@ mod tests {
         assert_eq!(show(Key::ACCEL, 1500.0), "1500 Hz/s");
         assert_eq!(show(Key::LEN, 1000.0), "1000");
         assert_eq!(show(Key::TAU, 0.005), "5 ms");
+        assert_eq!(show(Key::ACCEL, 1e200), "1e200 Hz/s");
+        assert_eq!(show(Key::FMAX, 2.5e-9), "2.5e-9 Hz");
+        assert_eq!(show(Key::TAU, 1e20), "1e20 s");
         assert_eq!(show(Key::TAU, 2.0), "2 s");
         assert_eq!(show(Key::TAU, 0.0000125), "12.5 us");
     }
