@@ -63,7 +63,7 @@ enum Command {
     Header {
         /// The profiles file
         file: PathBuf,
-        /// Where to write the header (standard output without it)
+        /// Where to write the header, its folder created if missing (standard output without it)
         #[arg(short, long, value_name = "OUT.h")]
         out: Option<PathBuf>,
         /// Declarations in OUT.h, the tables defined once in OUT.c
@@ -83,7 +83,7 @@ enum Command {
     Rust {
         /// The profiles file
         file: PathBuf,
-        /// Where to write it (standard output without it)
+        /// Where to write it, its folder created if missing (standard output without it)
         #[arg(short, long, value_name = "OUT.rs")]
         out: Option<PathBuf>,
     },
