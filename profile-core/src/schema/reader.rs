@@ -126,8 +126,9 @@ impl<L: Clone> Collector<'_, L> {
         check: impl Fn(i128) -> Result<T, String>,
     ) -> Option<T> {
         let v = self.int(key, expected)?;
-        let (i, arg) = self.find(key)?;
-        let beyond = match arg.value {
+        // Read again, units applied (no diagnostic: it was read once).
+        let (i, value) = self.numeric(key)?;
+        let beyond = match value {
             Value::Float(f) if libm::fabs(f) > EXACT_FLOAT_INT => Some(f),
             _ => None,
         };
