@@ -357,6 +357,20 @@ mod tests {
                 ),
             ]
         );
+        // With a unit too.
+        list[1].1 = Value::Int(1000);
+        list[5].1 = Value::Quantity {
+            number: "1e50".to_string(),
+            unit: "Hz".to_string(),
+            written: "1e50Hz".to_string(),
+        };
+        assert_eq!(
+            errors(&list),
+            vec![(
+                11,
+                "`timer_hz` must be at most 4294967295 (got 1e50)".to_string()
+            )]
+        );
     }
 
     #[test]
