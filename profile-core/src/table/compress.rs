@@ -420,10 +420,9 @@ impl CheckedSpec {
     /// step, before any run is fitted.
     pub fn run_table(&self, tolerance: f64) -> Result<RunTable, Error> {
         self.check_compress(tolerance)?;
-        self.figures()?;
         let scale = self.spec().timer.ticks_per_second();
         let mut exact = Vec::with_capacity(self.len() as usize);
-        self.for_each_exact_edge(|_, t| exact.push(t * scale))?;
+        self.for_each_period_and_edge(|_, _, t| exact.push(t * scale))?;
         let fit = Fit::new(&exact, tolerance);
         let mut at = At {
             done: 0,

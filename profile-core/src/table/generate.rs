@@ -68,18 +68,30 @@ impl CheckedSpec {
     /// Computes the table entry by entry, calling `sink(index, ticks)` for
     /// each, and returns its figures. Stops at the first entry that does not fit.
     pub fn for_each_period<F: FnMut(u32, u32)>(&self, mut sink: F) -> Result<Figures, Error> {
+        self.for_each_period_and_edge(|k, ticks, _| sink(k, ticks))
+    }
+
+    /// [`for_each_period`](Self::for_each_period), with the exact time (in
+    /// s) of the entry's closing edge as
+    /// [`for_each_exact_edge`](Self::for_each_exact_edge) gives it: one
+    /// pass for both.
+    pub(crate) fn for_each_period_and_edge<F: FnMut(u32, u32, f64)>(
+        &self,
+        mut sink: F,
+    ) -> Result<Figures, Error> {
         let spec = self.spec();
         let modes = self.modes();
         let scale = modes.scale();
         let mut quantizer = Quantizer::new(spec);
         if spec.discretization == Discretization::Index {
-            let mut k = 0;
+            let (mut k, mut t) = (0, 0.0);
             spec.curve.index_entries(&modes, &mut |entry| {
                 let ticks = match entry.rounded {
                     Some(ticks) => quantizer.push_rounded(k, ticks, entry.exact)?,
                     None => quantizer.push(k, entry.exact, None)?,
                 };
-                sink(k, ticks);
+                t += entry.exact / scale;
+                sink(k, ticks, t);
                 k += 1;
                 Ok(())
             })?;
@@ -95,7 +107,7 @@ impl CheckedSpec {
                 Discretization::LeftEndpoint => quantizer.push(k, scale / c.freq(t), None)?,
                 _ => quantizer.push(k, (next - t) * scale, Some(next * scale))?,
             };
-            sink(k, ticks);
+            sink(k, ticks, next);
             t = next;
         }
         Ok(quantizer.finish())
