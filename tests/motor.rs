@@ -208,7 +208,7 @@ fn an_aggressive_ramp_fails_the_check() {
     );
     // Beyond the curve's last point the motor gives nothing, and says so.
     let mut short = motor;
-    short.torque_curve = TorqueCurve::new(&CURVE[..3]).unwrap();
+    short.torque_curve = TorqueCurve::new(&CURVE[..3]);
     let (spec, table) = ramp(2_000.0, 1);
     let error = short.check(&spec, &table).unwrap_err();
     assert!(
@@ -418,7 +418,8 @@ fn motor_parameters_are_checked() {
         "`max_start_hz` must be a finite number above 0 (got 0)"
     );
     let curve = |points: &[(f64, f64)]| Motor {
-        torque_curve: TorqueCurve::new(points).unwrap(),
+        torque_curve: Some(TorqueCurve::new(points).unwrap()),
+        windings: None,
         ..good
     };
     assert_eq!(
@@ -831,8 +832,7 @@ fn the_simulation_refuses_unstable_steps_and_says_what_fits() {
     // The suggested options are always accepted, even for a stiff, damped rotor.
     let stiff = Motor {
         damping: 0.5,
-        torque_curve: TorqueCurve::new(&[(0.0, 4000.0), (2000.0, 3000.0), (4000.0, 100.0)])
-            .unwrap(),
+        torque_curve: TorqueCurve::new(&[(0.0, 4000.0), (2000.0, 3000.0), (4000.0, 100.0)]),
         ..motor
     };
     let options = SimOptions::suggested(&stiff, &spec, &table);

@@ -68,7 +68,30 @@ fn write_torque_plot(p: &Profile, path: &Path) -> Result<(), Box<dyn std::error:
         &p.table.step_periods(),
         |step, hz, needed, available| edges.push((step, hz, needed, available)),
     )?;
-    plots::torque(path, &p.name, &edges, motor.torque_curve.points())
+    plots::torque(path, &p.name, &edges, &pull_out_curves(motor, &edges))
+}
+
+/// The pull-out curves to plot: the typed one, and the one the windings
+/// give (sampled finely up to the ramp's fastest step), under each other.
+fn pull_out_curves(
+    motor: &profile_core::motor::Motor,
+    edges: &[(u32, f64, f64, f64)],
+) -> Vec<(&'static str, Vec<(f64, f64)>)> {
+    let mut curves = Vec::new();
+    if let Some(curve) = &motor.torque_curve {
+        curves.push(("pull-out curve", curve.points().to_vec()));
+    }
+    let top = edges.iter().map(|e| e.1).fold(0.0, f64::max);
+    if motor.windings.is_some() {
+        let samples = (0..=200)
+            .filter_map(|k| {
+                let hz = top * k as f64 / 200.0;
+                motor.derived_pull_out(hz).map(|nm| (hz, nm))
+            })
+            .collect();
+        curves.push(("pull-out from the windings", samples));
+    }
+    curves
 }
 
 /// Each pulse edge of `periods` against the curve's, in ticks, by step.

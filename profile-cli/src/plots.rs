@@ -350,14 +350,14 @@ pub fn torque(
     path: &Path,
     title: &str,
     edges: &[(u32, f64, f64, f64)],
-    curve: &[(f64, f64)],
+    curves: &[(&str, Vec<(f64, f64)>)],
 ) -> PlotResult {
     let root = SVGBackend::new(path, (900, 760)).into_drawing_area();
     root.fill(&WHITE)?;
     let areas = root.split_evenly((2, 1));
     let needed = RGBColor(0xd6, 0x27, 0x28);
     let available = RGBColor(0x1f, 0x77, 0xb4);
-    let pull_out = RGBColor(0x80, 0x80, 0x80);
+    let pull_out = [RGBColor(0x80, 0x80, 0x80), RGBColor(0x2c, 0xa0, 0x2c)];
     let line = |label: &str, color, points: Vec<(f64, f64)>| Line {
         label: label.to_string(),
         color,
@@ -382,29 +382,32 @@ pub fn torque(
         ],
         None,
     )?;
-    // The pull-out curve over the frequencies the ramp covers.
+    // The pull-out curves over the frequencies the ramp covers.
     let top = edges.iter().map(|e| e.1).fold(0.0, f64::max);
-    let mut outline: Vec<(f64, f64)> = curve.iter().copied().filter(|p| p.0 <= top).collect();
-    if let Some(&(hz, nm)) = curve.iter().find(|p| p.0 > top) {
-        // Up to the ramp's top, interpolated.
-        let &(h0, n0) = outline.last().unwrap_or(&(hz, nm));
-        let t = if hz > h0 { (top - h0) / (hz - h0) } else { 0.0 };
-        outline.push((top, n0 + (nm - n0) * t));
+    let mut lines = vec![
+        line("needed", needed, edges.iter().map(|e| (e.1, e.2)).collect()),
+        line(
+            "available",
+            available,
+            edges.iter().map(|e| (e.1, e.3)).collect(),
+        ),
+    ];
+    for ((label, curve), color) in curves.iter().zip(pull_out) {
+        let mut outline: Vec<(f64, f64)> = curve.iter().copied().filter(|p| p.0 <= top).collect();
+        if let Some(&(hz, nm)) = curve.iter().find(|p| p.0 > top) {
+            // Up to the ramp's top, interpolated.
+            let &(h0, n0) = outline.last().unwrap_or(&(hz, nm));
+            let t = if hz > h0 { (top - h0) / (hz - h0) } else { 0.0 };
+            outline.push((top, n0 + (nm - n0) * t));
+        }
+        lines.push(line(label, color, outline));
     }
     chart_lines(
         &areas[1],
         &format!("{title}: torque against step frequency"),
         "step frequency (Hz)",
         "torque (N·m)",
-        &[
-            line("needed", needed, edges.iter().map(|e| (e.1, e.2)).collect()),
-            line(
-                "available",
-                available,
-                edges.iter().map(|e| (e.1, e.3)).collect(),
-            ),
-            line("pull-out curve", pull_out, outline),
-        ],
+        &lines,
         None,
     )?;
     root.present()?;

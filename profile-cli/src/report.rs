@@ -289,7 +289,7 @@ fn print_motors(out: &mut String, profiles: &[Profile]) {
         "{:<21} {:>10} {:>6} {:>9} {:>9} {:>9} {:>9}   {:>5} {:>5} {:>8} {:>9}",
         "", "N·m", "", "", "N·m", "N·m", "Hz", "steps", "", "°el", "steps"
     );
-    for p in bound {
+    for p in &bound {
         let (Some(motor), Some(t)) = (&p.motor, &p.torque) else {
             continue;
         };
@@ -300,15 +300,16 @@ fn print_motors(out: &mut String, profiles: &[Profile]) {
             ),
             Err(e) => format!("simulation: {e}"),
         };
-        // The fastest start from rest with the load, searched up to the
-        // curve's last point.
-        let start = motor.start_limit(motor.torque_curve.top()).hz();
+        // The fastest start from rest with the load, searched up to where
+        // the motor is characterised.
+        let start = motor.start_limit(motor.top_hz()).hz();
         let _ = writeln!(
             out,
             "{:<21} {:>10.4} {:>6} {:>9.1} {:>9.4} {:>9.4} {:>9.1}   {sim}",
             p.name, t.min_margin_nm, t.step, t.hz, t.needed_nm, t.available_nm, start
         );
     }
+    print_pull_out(out, &bound);
     let _ = writeln!(
         out,
         "\nmargin: the smallest torque to spare over the ramp, at that step and step \
@@ -321,4 +322,44 @@ fn print_motors(out: &mut String, profiles: &[Profile]) {
          (below 90° with torque to spare); overshoot: how far past its final position it \
          swings after the last pulse, table steps."
     );
+}
+
+/// For each motor-bound profile whose motor gives its windings: the
+/// pull-out torque they give against the typed curve, from rest to the
+/// ramp's fastest step.
+fn print_pull_out(out: &mut String, bound: &[&Profile]) {
+    for p in bound {
+        let Some(motor) = &p.motor else { continue };
+        if motor.windings.is_none() {
+            continue;
+        }
+        // From rest to the ramp's fastest step or the curve's last point.
+        let top = p
+            .table
+            .step_periods()
+            .iter()
+            .map(|&t| p.table.spec().timer.ticks_per_second() / t as f64)
+            .fold(motor.torque_curve.map_or(0.0, |c| c.top()), f64::max);
+        let points: Vec<f64> = (0..=4).map(|k| top * k as f64 / 4.0).collect();
+        let row = |f: &dyn Fn(f64) -> Option<f64>| -> String {
+            points
+                .iter()
+                .map(|&hz| f(hz).map_or(format!("{:>9}", "-"), |nm| format!("{nm:>9.4}")))
+                .collect()
+        };
+        let _ = writeln!(out, "\n`{}`: the motor's pull-out torque, N·m", p.name);
+        let _ = writeln!(
+            out,
+            "{:<50}{}",
+            "  at step frequency (Hz)",
+            points
+                .iter()
+                .map(|hz| format!("{hz:>9.1}"))
+                .collect::<String>()
+        );
+        let typed = row(&|hz| motor.torque_curve.map(|c| c.torque(hz)));
+        let derived = row(&|hz| motor.derived_pull_out(hz));
+        let _ = writeln!(out, "{:<50}{typed}", "  `torque_curve` (used by the check)");
+        let _ = writeln!(out, "{:<50}{derived}", "  derived from the windings");
+    }
 }

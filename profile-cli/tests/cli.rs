@@ -298,6 +298,27 @@ fn report_gives_a_compact_layout_flash_against_one_entry_per_step() {
         .find(|l| l.starts_with("linear_exact "))
         .unwrap_or_else(|| panic!("{report}"));
     assert_eq!(row.split_whitespace().nth(6), Some("7070.3"), "{row}");
+    // The shipped motor gives its windings too: the curve they give, beside
+    // the typed one, up to the typed curve's last point (1200 rpm), where
+    // the 24 V supply still drives the full current.
+    let pull_out = motors
+        .split("`linear_exact`: the motor's pull-out torque, N·m\n")
+        .nth(1)
+        .unwrap_or_else(|| panic!("{report}"));
+    let rows: Vec<Vec<&str>> = pull_out
+        .lines()
+        .take(3)
+        .map(|l| l.split_whitespace().rev().take(5).collect())
+        .collect();
+    assert_eq!(
+        rows,
+        [
+            ["32000.0", "24000.0", "16000.0", "8000.0", "0.0"],
+            ["0.2500", "0.2875", "0.3250", "0.3625", "0.4000"],
+            ["0.4000"; 5],
+        ],
+        "{pull_out}"
+    );
 }
 
 #[test]

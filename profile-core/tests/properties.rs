@@ -399,7 +399,7 @@ proptest! {
 #[cfg(feature = "std")]
 mod motors {
     use super::*;
-    use profile_core::motor::{Motor, TorqueCurve};
+    use profile_core::motor::{Motor, TorqueCurve, Windings};
     use profile_core::simulate::{self, SimOptions};
 
     fn curve() -> impl Strategy<Value = Vec<(f64, f64)>> {
@@ -422,17 +422,28 @@ mod motors {
             periods in proptest::collection::vec(prop_oneof![Just(0u32), Just(1), Just(u32::MAX), 1u32..100_000], 0..40),
             timer_hz in prop_oneof![Just(0u32), Just(1_000_000), Just(u32::MAX)],
             dt in prop_oneof![Just(f64::NAN), Just(0.0), Just(-1.0), Just(1e-3), Just(1e-5)],
+            windings in proptest::option::of((hostile(), hostile(), hostile(), hostile(), hostile(), hostile())),
         ) {
-            let Some(torque_curve) = TorqueCurve::new(&points) else {
-                prop_assert!(points.is_empty() || points.len() > profile_core::motor::MAX_CURVE_POINTS);
-                return Ok(());
-            };
+            let torque_curve = TorqueCurve::new(&points);
+            prop_assert_eq!(
+                torque_curve.is_none(),
+                points.is_empty() || points.len() > profile_core::motor::MAX_CURVE_POINTS
+            );
+            let windings = windings.map(|w| Windings {
+                resistance: w.0,
+                inductance: w.1,
+                rated_current: w.2,
+                holding_torque: w.3,
+                supply_voltage: w.4,
+                detent_torque: w.5,
+            });
             let motor = Motor {
                 step_angle,
                 microsteps,
                 rotor_inertia: inertia.0,
                 load_inertia: inertia.1,
                 torque_curve,
+                windings,
                 friction,
                 damping,
                 damping_ratio: 0.0,

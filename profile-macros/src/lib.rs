@@ -73,7 +73,12 @@ mod include;
 /// | `microsteps` | table steps per full step | `1` |
 /// | `rotor_inertia` | kg·m² | required |
 /// | `load_inertia` | the load's inertia at the shaft, kg·m² | `0` |
-/// | `torque_curve` | pull-out torque, up to 32 `(step frequency, N·m)` pairs with rising frequencies: `[(0, 0.40), (1000, 0.33), (4000, 0.12)]`; no torque beyond the last | required |
+/// | `torque_curve` | pull-out torque, up to 32 `(step frequency, N·m)` pairs with rising frequencies: `[(0, 0.40), (1000, 0.33), (4000, 0.12)]`; no torque beyond the last | required, unless the windings are given |
+/// | `resistance`, `inductance` | phase resistance (Ω) and inductance (H): with `rated_current`, `holding_torque` and `supply_voltage`, the pull-out curve is derived (`profile_core::motor::Windings`) | none |
+/// | `rated_current` | rated phase current, A (RMS, as a microstepping driver is set) | none |
+/// | `holding_torque` | holding torque at rated current, two phases on, N·m | none |
+/// | `supply_voltage` | the driver's supply, V | none |
+/// | `detent_torque` | the unpowered motor's detent torque, N·m, taken off the derived curve | `0` |
 /// | `friction` | constant load and friction torque, N·m | `0` |
 /// | `damping` | viscous damping on the rotor's speed, N·m·s/rad | `0` |
 /// | `damping_ratio` | electromagnetic damping ζ, on the rotor's speed relative to the field's (`simulate`) | `0` |

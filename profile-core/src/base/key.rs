@@ -61,6 +61,18 @@ impl Key {
     pub const SAFETY: Key = Key("safety");
     /// `max_start_hz`
     pub const MAX_START_HZ: Key = Key("max_start_hz");
+    /// `resistance`: phase resistance, Ω.
+    pub const RESISTANCE: Key = Key("resistance");
+    /// `inductance`: phase inductance, H.
+    pub const INDUCTANCE: Key = Key("inductance");
+    /// `rated_current`: rated phase current, A.
+    pub const RATED_CURRENT: Key = Key("rated_current");
+    /// `holding_torque`: holding torque at rated current, N·m.
+    pub const HOLDING_TORQUE: Key = Key("holding_torque");
+    /// `supply_voltage`: the driver's supply, V.
+    pub const SUPPLY_VOLTAGE: Key = Key("supply_voltage");
+    /// `detent_torque`: the unpowered motor's detent torque, N·m.
+    pub const DETENT_TORQUE: Key = Key("detent_torque");
 
     /// The keys every curve takes, after the curve's own, in documentation
     /// order (the motor's keys aside).
@@ -88,6 +100,24 @@ impl Key {
         Key::DAMPING_RATIO,
         Key::SAFETY,
         Key::MAX_START_HZ,
+        Key::RESISTANCE,
+        Key::INDUCTANCE,
+        Key::RATED_CURRENT,
+        Key::HOLDING_TORQUE,
+        Key::SUPPLY_VOLTAGE,
+        Key::DETENT_TORQUE,
+    ];
+
+    /// The keys that describe a motor's windings, from which its pull-out
+    /// curve is derived ([`Windings`](crate::motor::Windings)): all but
+    /// `detent_torque` are required together.
+    pub const WINDINGS_KEYS: &'static [Key] = &[
+        Key::RESISTANCE,
+        Key::INDUCTANCE,
+        Key::RATED_CURRENT,
+        Key::HOLDING_TORQUE,
+        Key::SUPPLY_VOLTAGE,
+        Key::DETENT_TORQUE,
     ];
 
     /// The key as written by users.

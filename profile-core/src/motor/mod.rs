@@ -27,8 +27,10 @@
 
 pub mod simulate;
 mod start;
+mod windings;
 
 pub use start::{END_FULL_STEPS, START_FULL_STEPS, START_MAX_STEPS, START_RESOLUTION, StartLimit};
+pub use windings::Windings;
 
 use core::fmt;
 
@@ -104,8 +106,14 @@ pub struct Motor {
     pub rotor_inertia: f64,
     /// Load inertia seen at the shaft, in kg·m².
     pub load_inertia: f64,
-    /// Pull-out torque against the table's step frequency.
-    pub torque_curve: TorqueCurve,
+    /// Pull-out torque against the table's step frequency, as measured
+    /// (a datasheet's curve). When given, it is the torque the check and the
+    /// simulation use; otherwise the curve is derived from `windings`.
+    pub torque_curve: Option<TorqueCurve>,
+    /// The windings and the driver, from which the pull-out torque is
+    /// derived when `torque_curve` is `None` ([`Windings::pull_out`]). A
+    /// motor needs one or the other.
+    pub windings: Option<Windings>,
     /// Constant load and friction torque, in N·m.
     pub friction: f64,
     /// Viscous damping, in N·m·s/rad: a drag on the rotor's own speed
@@ -177,6 +185,9 @@ pub enum MotorError {
         available_nm: f64,
         /// Whether the frequency is beyond the torque curve's last point.
         beyond_curve: bool,
+        /// Whether the torque available is derived from the windings
+        /// (no `torque_curve` given).
+        from_windings: bool,
     },
     /// A torque the check computes is not a finite number: the motor's
     /// figures are too large for `f64` arithmetic.
@@ -189,6 +200,9 @@ pub enum MotorError {
     },
     /// The table to check has no entries.
     EmptyTable,
+    /// The motor has neither a torque curve nor windings to derive one
+    /// from.
+    NoTorque,
     /// The model's rotor, from rest, slips on the ramp's first steps before
     /// it reaches the field's speed: the start and the acceleration right
     /// after it are too much together.
@@ -224,7 +238,7 @@ impl MotorError {
     pub fn key(&self) -> Key {
         match *self {
             MotorError::Invalid { key, .. } => key,
-            MotorError::Curve { .. } => Key::TORQUE_CURVE,
+            MotorError::Curve { .. } | MotorError::NoTorque => Key::TORQUE_CURVE,
             MotorError::Torque { .. }
             | MotorError::Start { .. }
             | MotorError::PullIn { .. }
@@ -264,6 +278,7 @@ impl fmt::Display for MotorError {
                 needed_nm,
                 available_nm,
                 beyond_curve,
+                from_windings,
             } => {
                 if step == 0 {
                     write!(f, "the motor cannot start at {hz:.1} Hz")?;
@@ -278,6 +293,9 @@ impl fmt::Display for MotorError {
                 if beyond_curve {
                     f.write_str(" (the frequency is beyond the last point of `torque_curve`)")?;
                 }
+                if from_windings {
+                    f.write_str(" (the pull-out torque derived from the windings)")?;
+                }
                 Ok(())
             }
             MotorError::NotFinite { step, what } => write!(
@@ -286,6 +304,11 @@ impl fmt::Display for MotorError {
                  friction, damping or torque is too large to compute with"
             ),
             MotorError::EmptyTable => f.write_str("the table to check has no entries"),
+            MotorError::NoTorque => f.write_str(
+                "the motor has no pull-out torque: give `torque_curve`, or the windings' \
+                 `resistance`, `inductance`, `rated_current`, `holding_torque` and \
+                 `supply_voltage`",
+            ),
             MotorError::PullIn { .. } | MotorError::ShortMove { .. } | MotorError::Start { .. } => {
                 start::describe(self, f)
             }
@@ -296,7 +319,7 @@ impl fmt::Display for MotorError {
 #[cfg(feature = "std")]
 impl std::error::Error for MotorError {}
 
-fn positive(key: Key, value: f64) -> Result<(), MotorError> {
+pub(crate) fn positive(key: Key, value: f64) -> Result<(), MotorError> {
     if value.is_finite() && value > 0.0 {
         Ok(())
     } else {
@@ -308,7 +331,7 @@ fn positive(key: Key, value: f64) -> Result<(), MotorError> {
     }
 }
 
-fn non_negative(key: Key, value: f64) -> Result<(), MotorError> {
+pub(crate) fn non_negative(key: Key, value: f64) -> Result<(), MotorError> {
     if value.is_finite() && value >= 0.0 {
         Ok(())
     } else {
@@ -353,8 +376,17 @@ impl Motor {
         if let Some(hz) = self.max_start_hz {
             positive(Key::MAX_START_HZ, hz)?;
         }
+        if let Some(windings) = &self.windings {
+            windings.validate()?;
+        }
+        let Some(curve) = &self.torque_curve else {
+            return match self.windings {
+                Some(_) => Ok(()),
+                None => Err(MotorError::NoTorque),
+            };
+        };
         let mut prev = f64::NEG_INFINITY;
-        for (index, &(hz, nm)) in self.torque_curve.points().iter().enumerate() {
+        for (index, &(hz, nm)) in curve.points().iter().enumerate() {
             if !(hz.is_finite() && nm.is_finite() && hz >= 0.0 && hz > prev && nm > 0.0) {
                 return Err(MotorError::Curve { index, hz, nm });
             }
@@ -370,7 +402,7 @@ impl Motor {
 
     /// Torque available at step frequency `hz` over the safety factor, in N·m.
     pub fn available(&self, hz: f64) -> f64 {
-        self.torque_curve.torque(hz) / self.safety
+        self.pull_out(hz) / self.safety
     }
 
     /// Checks that the motor can follow `periods` (a table of `spec`): every
@@ -469,7 +501,8 @@ impl Motor {
                 hz,
                 needed_nm: needed,
                 available_nm: available,
-                beyond_curve: hz > self.torque_curve.top(),
+                beyond_curve: self.torque_curve.is_some_and(|c| hz > c.top()),
+                from_windings: self.torque_curve.is_none(),
             });
         }
         let margin = available - needed;

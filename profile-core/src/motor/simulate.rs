@@ -59,7 +59,8 @@
 //!     microsteps: 1,
 //!     rotor_inertia: 5.4e-6,
 //!     load_inertia: 2.0e-5,
-//!     torque_curve: TorqueCurve::new(&[(0.0, 0.40), (1000.0, 0.33), (2000.0, 0.24)]).unwrap(),
+//!     torque_curve: TorqueCurve::new(&[(0.0, 0.40), (1000.0, 0.33), (2000.0, 0.24)]),
+//!     windings: None,
 //!     friction: 0.02,
 //!     damping: 1e-4,
 //!     damping_ratio: 0.0,
@@ -286,11 +287,7 @@ pub(super) fn step_for(motor: &Motor, shortest: f64) -> f64 {
 /// electromagnetic damping (explicit in both, stable for `h (β + D) / J < 2`).
 pub(super) fn stable_step(motor: &Motor) -> f64 {
     let (poles, inertia) = (motor.poles(), motor.rotor_inertia + motor.load_inertia);
-    let peak = motor
-        .torque_curve
-        .points()
-        .iter()
-        .fold(0.0f64, |m, &(_, nm)| m.max(nm));
+    let peak = motor.peak_torque();
     let omega = libm::sqrt(peak * poles / inertia);
     let drag = motor.damping + motor.field_damping();
     let by_damping = if drag > 0.0 {
@@ -484,7 +481,7 @@ pub fn run(
         let duration = p as f64 / per_second;
         let n = substeps(duration, dt_s);
         let h = if n > 0.0 { duration / n } else { 0.0 };
-        let peak = motor.torque_curve.torque(per_second / p as f64);
+        let peak = motor.pull_out(per_second / p as f64);
         let field_omega = step * per_second / p as f64;
         rotor.advance((cmd, field_omega), peak, n as u64, h, |lag, _, _| {
             if lag.abs() > max_lag {
@@ -503,7 +500,7 @@ pub fn run(
 
     // Settle with the command fixed; the motor holds (0 Hz on the curve).
     let cmd = periods.len() as f64 * step;
-    let holding = motor.torque_curve.torque(0.0);
+    let holding = motor.pull_out(0.0);
     let overshoot = rotor.settle(cmd, holding, settle_s, dt_s);
     // Trapped: kinetic plus potential energy within the well below the
     // barrier at ±180° electrical, 2 T / poles above its bottom.

@@ -58,9 +58,9 @@ pub const START_RESOLUTION: f64 = 1e-3;
 impl Motor {
     /// The torque-angle stiffness at rest, `K = N_r · T_hold` in N·m/rad:
     /// `N_r` electrical radians per mechanical radian (90° electrical per
-    /// full step), `T_hold` the torque curve at 0 Hz.
+    /// full step), `T_hold` the pull-out torque at 0 Hz.
     pub fn stiffness(&self) -> f64 {
-        self.poles() * self.torque_curve.torque(0.0)
+        self.poles() * self.pull_out(0.0)
     }
 
     /// Electrical radians per mechanical radian: a full step is 90°

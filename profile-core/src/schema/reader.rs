@@ -3,6 +3,7 @@
 
 use std::format;
 use std::string::{String, ToString};
+use std::vec;
 use std::vec::Vec;
 
 use super::suggest::{Hint, did_you_mean};
@@ -11,7 +12,7 @@ use crate::base::MAX_LEN;
 use crate::base::error::{Error, Num};
 use crate::base::key::Key;
 use crate::curves::Reader;
-use crate::motor::{MAX_CURVE_POINTS, Motor, TorqueCurve};
+use crate::motor::{MAX_CURVE_POINTS, Motor, TorqueCurve, Windings};
 
 /// 2^53: every integer up to it is exactly a `f64`.
 const EXACT_FLOAT_INT: f64 = 9_007_199_254_740_992.0;
@@ -213,20 +214,7 @@ pub(crate) fn motor<L: Clone>(c: &mut Collector<'_, L>) -> Option<Motor> {
         }
         return None;
     }
-    let required = [Key::STEP_ANGLE, Key::ROTOR_INERTIA, Key::TORQUE_CURVE];
-    let missing: Vec<Key> = required
-        .iter()
-        .copied()
-        .filter(|k| c.find(*k).is_none())
-        .collect();
-    if !missing.is_empty() {
-        c.at_whole(format!(
-            "missing motor {} {}: a motor needs {}",
-            if missing.len() == 1 { "key" } else { "keys" },
-            quoted(missing.iter().map(|k| k.name())),
-            quoted(required.iter().map(|k| k.name()))
-        ));
-    }
+    missing_keys(c);
     let step_angle = c.float(Key::STEP_ANGLE);
     let microsteps = c.ranged(
         Key::MICROSTEPS,
@@ -245,11 +233,13 @@ pub(crate) fn motor<L: Clone>(c: &mut Collector<'_, L>) -> Option<Motor> {
     let damping_ratio = c.float(Key::DAMPING_RATIO);
     let safety = c.float(Key::SAFETY);
     let max_start_hz = c.float(Key::MAX_START_HZ);
+    let windings = windings(c);
+    // `Some(None)` without a curve; `None` for a curve in error.
     let curve = match c.find(Key::TORQUE_CURVE) {
-        None => None,
+        None => Some(None),
         Some((i, arg)) => match &arg.value {
             Value::Points(points) => match TorqueCurve::new(points) {
-                Some(curve) => Some(curve),
+                Some(curve) => Some(Some(curve)),
                 None => {
                     let message = format!(
                         "`torque_curve` must have from 1 to {MAX_CURVE_POINTS} points (got {})",
@@ -276,10 +266,77 @@ pub(crate) fn motor<L: Clone>(c: &mut Collector<'_, L>) -> Option<Motor> {
         rotor_inertia: rotor_inertia?,
         load_inertia: load_inertia.unwrap_or(0.0),
         torque_curve: curve?,
+        windings: windings?,
         friction: friction.unwrap_or(0.0),
         damping: damping.unwrap_or(0.0),
         damping_ratio: damping_ratio.unwrap_or(0.0),
         safety: safety.unwrap_or(1.0),
         max_start_hz,
     })
+}
+
+/// The keys a motor lacks, as one error: `step_angle` and `rotor_inertia`,
+/// and its pull-out torque (`torque_curve`, or every required key of the
+/// windings once one is given).
+fn missing_keys<L: Clone>(c: &mut Collector<'_, L>) {
+    let windings = &Key::WINDINGS_KEYS[..5];
+    let any_windings = Key::WINDINGS_KEYS.iter().any(|k| c.find(*k).is_some());
+    let lacking = |c: &Collector<'_, L>, keys: &[Key]| -> Vec<Key> {
+        keys.iter()
+            .copied()
+            .filter(|k| c.find(*k).is_none())
+            .collect()
+    };
+    let mut missing = lacking(c, &[Key::STEP_ANGLE, Key::ROTOR_INERTIA]);
+    let torque = if c.find(Key::TORQUE_CURVE).is_some() && !any_windings {
+        Vec::new()
+    } else if any_windings {
+        lacking(c, windings)
+    } else {
+        vec![Key::TORQUE_CURVE]
+    };
+    let through_windings = any_windings && !torque.is_empty();
+    missing.extend(torque);
+    if missing.is_empty() {
+        return;
+    }
+    let needs = if through_windings {
+        format!(
+            "a motor needs `step_angle`, `rotor_inertia`, and for windings {}",
+            quoted(windings.iter().map(|k| k.name()))
+        )
+    } else {
+        format!(
+            "a motor needs `step_angle`, `rotor_inertia`, and `torque_curve` or the \
+             windings' {}",
+            quoted(windings.iter().map(|k| k.name()))
+        )
+    };
+    c.at_whole(format!(
+        "missing motor {} {}: {needs}",
+        if missing.len() == 1 { "key" } else { "keys" },
+        quoted(missing.iter().map(|k| k.name())),
+    ));
+}
+
+/// The windings the arguments give, if any: `Some(None)` without them,
+/// `None` when a key is missing or in error (reported).
+fn windings<L: Clone>(c: &mut Collector<'_, L>) -> Option<Option<Windings>> {
+    if !Key::WINDINGS_KEYS.iter().any(|k| c.find(*k).is_some()) {
+        return Some(None);
+    }
+    let resistance = c.float(Key::RESISTANCE);
+    let inductance = c.float(Key::INDUCTANCE);
+    let rated_current = c.float(Key::RATED_CURRENT);
+    let holding_torque = c.float(Key::HOLDING_TORQUE);
+    let supply_voltage = c.float(Key::SUPPLY_VOLTAGE);
+    let detent_torque = c.float(Key::DETENT_TORQUE);
+    Some(Some(Windings {
+        resistance: resistance?,
+        inductance: inductance?,
+        rated_current: rated_current?,
+        holding_torque: holding_torque?,
+        supply_voltage: supply_voltage?,
+        detent_torque: detent_torque.unwrap_or(0.0),
+    }))
 }

@@ -1,0 +1,263 @@
+//! The pull-out torque a motor's windings give behind a chopper driver,
+//! derived from the datasheet's electrical figures when no measured curve is
+//! at hand.
+//!
+//! The model is the standard two-phase hybrid stepper (Bodson, Chiasson,
+//! Novotnak and Rekowski, "High-performance nonlinear feedback control of a
+//! permanent magnet stepper motor", IEEE Trans. Control Systems Technology,
+//! 1993), each phase a winding with back-EMF:
+//!
+//! ```text
+//! L di_a/dt = v_a - R i_a + K_m ω sin(N_r θ)
+//! L di_b/dt = v_b - R i_b - K_m ω cos(N_r θ)
+//! T = K_m (i_b cos(N_r θ) - i_a sin(N_r θ)) - T_detent sin(4 N_r θ)
+//! ```
+//!
+//! In the rotor's frame, at a steady speed `ω` (mechanical rad/s), the
+//! currents are constant: `v = Z i + j E` in complex form, with
+//! `Z = R + j X`, `X = N_r ω L` and `E = K_m ω`, and the torque is
+//! `K_m i_q`. The driver is a chopper that regulates the phase current to
+//! its set amplitude as long as the supply lets it: the currents it can
+//! reach lie in the disc `|Z i + j E| ≤ V` (the voltage it has) and it keeps
+//! them within the circle `|i| ≤ I` (the current it is set to). The rotor's
+//! lag behind the field chooses the point; the pull-out torque is the
+//! largest `K_m i_q` over both, less the detent torque (which, at its
+//! worst angle, opposes the rotor). Closed form, no iteration.
+//!
+//! Figures as datasheets give them:
+//!
+//! - `rated_current` is the phase current a driver is set to, regulated as
+//!   an RMS value by a microstepping driver: the sine's amplitude is
+//!   `I = sqrt(2) · rated_current`, the current each phase carries with
+//!   two phases on at rated current in full steps.
+//! - `holding_torque` is measured at rated current with two phases on, the
+//!   amplitude of the static torque-angle curve: `K_m = holding_torque / I`.
+//! - The chopper's H-bridge puts `±supply_voltage` on a phase; once the
+//!   current cannot follow, the voltage is a square wave whose fundamental
+//!   has the amplitude `V = (4/π) · supply_voltage`. Drops in the driver's
+//!   transistors and the supply's own resistance are not modelled.
+//! - Back-EMF constant and torque constant are the same `K_m` in SI units,
+//!   as the model's energy balance requires (`e · i = T · ω`).
+//!
+//! Not modelled: iron losses, saturation, mid-band resonance, the chopper's
+//! decay mode, the harmonics of a saturated phase current.
+
+use core::f64::consts::{FRAC_PI_4, SQRT_2};
+
+use crate::base::key::Key;
+use crate::motor::{Motor, MotorError, non_negative, positive};
+
+/// A two-phase hybrid motor's windings and the chopper driver behind them,
+/// as a datasheet gives them: per phase, with the driver set to the rated
+/// current and fed from `supply_voltage`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Windings {
+    /// Phase resistance, in Ω.
+    pub resistance: f64,
+    /// Phase inductance, in H.
+    pub inductance: f64,
+    /// Rated phase current (RMS, as a microstepping driver is set), in A.
+    pub rated_current: f64,
+    /// Holding torque at rated current, two phases on, in N·m.
+    pub holding_torque: f64,
+    /// The driver's supply voltage, in V.
+    pub supply_voltage: f64,
+    /// Detent torque (unpowered), in N·m; 0 when not known.
+    pub detent_torque: f64,
+}
+
+/// The largest `i_q` over the currents the driver reaches: the disc of
+/// centre `(cd, cq)` and radius `r` (what the voltage allows) within the
+/// circle of radius `amp` (what the chopper holds the current to). When the
+/// two do not meet, the chopper cannot hold the current and the disc's top
+/// is the answer.
+fn largest_iq(amp: f64, (cd, cq): (f64, f64), r: f64) -> f64 {
+    // The current circle's top, if the voltage reaches it.
+    if libm::hypot(cd, amp - cq) <= r {
+        return amp;
+    }
+    // The voltage disc's top, if within the current circle.
+    let top = cq + r;
+    let d = libm::hypot(cd, cq);
+    if libm::hypot(cd, top) <= amp || d >= amp + r {
+        return top;
+    }
+    // Otherwise the upper crossing of the two circles: along the centres'
+    // line at `a` from the origin, `h` off it on either side.
+    let a = (amp * amp - r * r + d * d) / (2.0 * d);
+    let h = libm::sqrt((amp * amp - a * a).max(0.0));
+    let (ud, uq) = (cd / d, cq / d);
+    a * uq + h * ud.abs()
+}
+
+impl Windings {
+    /// Checks every figure: all positive and finite, the detent torque 0 or
+    /// more and below the holding torque.
+    pub fn validate(&self) -> Result<(), MotorError> {
+        positive(Key::RESISTANCE, self.resistance)?;
+        positive(Key::INDUCTANCE, self.inductance)?;
+        positive(Key::RATED_CURRENT, self.rated_current)?;
+        positive(Key::HOLDING_TORQUE, self.holding_torque)?;
+        positive(Key::SUPPLY_VOLTAGE, self.supply_voltage)?;
+        non_negative(Key::DETENT_TORQUE, self.detent_torque)?;
+        if self.detent_torque >= self.holding_torque {
+            return Err(MotorError::Invalid {
+                key: Key::DETENT_TORQUE,
+                value: self.detent_torque,
+                expected: "below `holding_torque`",
+            });
+        }
+        Ok(())
+    }
+
+    /// The phase current's amplitude the driver sets, `sqrt(2) ·
+    /// rated_current`, in A.
+    pub fn amplitude(&self) -> f64 {
+        SQRT_2 * self.rated_current
+    }
+
+    /// The torque constant `K_m = holding_torque / amplitude`, in N·m/A
+    /// (and V·s/rad: the back-EMF constant).
+    pub fn torque_constant(&self) -> f64 {
+        self.holding_torque / self.amplitude()
+    }
+
+    /// The pull-out torque at a steady mechanical speed `omega` (rad/s) of
+    /// a rotor with `poles` electrical radians per mechanical radian
+    /// ([`Motor::poles`](crate::motor::Motor::poles)), in N·m: 0 where the
+    /// windings give no more than the detent torque.
+    pub fn pull_out(&self, poles: f64, omega: f64) -> f64 {
+        let amp = self.amplitude();
+        let km = self.torque_constant();
+        let (r, x) = (self.resistance, poles * omega.abs() * self.inductance);
+        let z = libm::hypot(r, x);
+        let e = km * omega.abs();
+        // The currents `(V e^{jφ} - j E) / Z`: centre `-j E / Z`, radius `V / |Z|`.
+        let (ez, xz, rz) = (e / z, x / z, r / z);
+        let centre = (-ez * xz, -ez * rz);
+        let volts = self.supply_voltage / FRAC_PI_4;
+        let iq = largest_iq(amp, centre, volts / z);
+        (km * iq - self.detent_torque).max(0.0)
+    }
+}
+
+/// The motor's pull-out torque, from its curve or its windings.
+impl Motor {
+    /// The pull-out torque at step frequency `hz` (table steps per second),
+    /// in N·m: `torque_curve` when given, else the one `windings` give at
+    /// that speed, else 0.
+    pub fn pull_out(&self, hz: f64) -> f64 {
+        match (&self.torque_curve, &self.windings) {
+            (Some(curve), _) => curve.torque(hz),
+            (None, Some(w)) => self.derived(w, hz),
+            (None, None) => 0.0,
+        }
+    }
+
+    /// The pull-out torque `windings` give at step frequency `hz`, in N·m,
+    /// whether or not a measured curve is given: to compare the two.
+    pub fn derived_pull_out(&self, hz: f64) -> Option<f64> {
+        self.windings.as_ref().map(|w| self.derived(w, hz))
+    }
+
+    fn derived(&self, windings: &Windings, hz: f64) -> f64 {
+        windings.pull_out(self.poles(), hz * self.step_radians())
+    }
+
+    /// The largest pull-out torque, in N·m: the curve's largest point, or
+    /// the windings' torque at rest (it falls with speed).
+    pub fn peak_torque(&self) -> f64 {
+        match &self.torque_curve {
+            Some(curve) => curve.points().iter().fold(0.0f64, |m, &(_, nm)| m.max(nm)),
+            None => self.pull_out(0.0),
+        }
+    }
+
+    /// The highest step frequency the motor is characterised at, in Hz:
+    /// the torque curve's last point, or where the windings' torque has
+    /// fallen to a hundredth of the torque at rest (or to nothing, with
+    /// detent torque). Beyond it a search for the motor's limits need not
+    /// look.
+    pub fn top_hz(&self) -> f64 {
+        match (&self.torque_curve, &self.windings) {
+            (Some(curve), _) => curve.top(),
+            (None, Some(_)) => {
+                let floor = self.pull_out(0.0) / 100.0;
+                let low = |hz: f64| self.pull_out(hz) <= floor;
+                // Doubling, then halving, each with a bound: the torque
+                // falls with speed, as `1/ω` at the top.
+                let mut hi = 1.0;
+                for _ in 0..1100 {
+                    if low(hi) {
+                        break;
+                    }
+                    hi *= 2.0;
+                }
+                let mut lo = 0.0;
+                for _ in 0..64 {
+                    let mid = 0.5 * (lo + hi);
+                    if low(mid) {
+                        hi = mid;
+                    } else {
+                        lo = mid;
+                    }
+                }
+                hi
+            }
+            (None, None) => 0.0,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn nema17() -> Windings {
+        Windings {
+            resistance: 0.7,
+            inductance: 1.1e-3,
+            rated_current: 2.8,
+            holding_torque: 0.40,
+            supply_voltage: 24.0,
+            detent_torque: 0.0,
+        }
+    }
+
+    #[test]
+    fn at_rest_the_holding_torque_unless_the_supply_cannot_drive_the_current() {
+        assert_eq!(nema17().pull_out(50.0, 0.0), 0.40);
+        // 2 V over 0.7 Ω drives 2.86 A of the 3.96 A set, in amplitude 4/π · 2 V.
+        let weak = Windings {
+            supply_voltage: 2.0,
+            ..nema17()
+        };
+        let expected = 0.40 / (SQRT_2 * 2.8) * (2.0 / FRAC_PI_4 / 0.7);
+        assert!((weak.pull_out(50.0, 0.0) - expected).abs() < 1e-15);
+        let detent = Windings {
+            detent_torque: 0.015,
+            ..nema17()
+        };
+        assert!((detent.pull_out(50.0, 0.0) - 0.385).abs() < 1e-15);
+    }
+
+    #[test]
+    fn falls_with_speed_and_as_one_over_speed_at_the_top() {
+        let w = nema17();
+        let mut last = f64::INFINITY;
+        for k in 0..400 {
+            let t = w.pull_out(50.0, k as f64 * 2.0);
+            assert!(t <= last, "rises at {k}");
+            last = t;
+        }
+        // High up, `K_m (V - K_m R / (N_r L)) / (N_r L ω)`.
+        let (km, nl) = (w.torque_constant(), 50.0 * w.inductance);
+        let omega = 5000.0;
+        let asymptote = km * (24.0 / FRAC_PI_4 - km * w.resistance / nl) / (nl * omega);
+        let t = w.pull_out(50.0, omega);
+        assert!(
+            (t / asymptote - 1.0).abs() < 1e-3,
+            "{t} against {asymptote}"
+        );
+    }
+}

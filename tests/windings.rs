@@ -1,0 +1,157 @@
+//! A motor given by its windings: the check and the simulation use the
+//! pull-out torque they give, in the macro, in a profiles file and in the
+//! library, and a typed curve takes precedence over them.
+
+use profile_core::build::Profiles;
+use profile_core::motor::{Motor, MotorError, TorqueCurve, Windings};
+use profile_core::player::{Player, Ramp};
+use profile_core::simulate::{self, SimOptions};
+use profile_core::{Curve, Linear, LinearExtent, Spec, Timer};
+use stepper_profiles::period_table;
+
+/// TRINAMIC's QSH4218-47-28-040 ("QMot QSH4218 Manual" V1.10, Table 2.1)
+/// on a `volts` supply, with twice its rotor's inertia as load and 0.02 N·m
+/// of friction, full steps, lightly damped.
+fn qsh4218(volts: f64) -> Motor {
+    Motor {
+        step_angle: 1.8,
+        microsteps: 1,
+        rotor_inertia: 6.8e-6,
+        load_inertia: 1.36e-5,
+        torque_curve: None,
+        windings: Some(Windings {
+            resistance: 0.5,
+            inductance: 0.6e-3,
+            rated_current: 2.8,
+            holding_torque: 0.40,
+            supply_voltage: volts,
+            detent_torque: 0.0,
+        }),
+        friction: 0.02,
+        damping: 0.0,
+        damping_ratio: 0.1,
+        safety: 1.0,
+        max_start_hz: None,
+    }
+}
+
+/// 300 to 9000 full steps/s at 100 000 full steps/s², on a 10 MHz timer.
+fn ramp() -> (Spec, Vec<u32>) {
+    let spec = Spec::new(
+        Curve::Linear(Linear {
+            fmin: 300.0,
+            fmax: 9000.0,
+            extent: LinearExtent::Accel(100_000.0),
+        }),
+        Timer::new(10_000_000),
+    );
+    let periods = spec.table().unwrap().periods;
+    (spec, periods)
+}
+
+/// The table up and down again, as the player plays it, simulated: the
+/// steps lost.
+fn lost(motor: &Motor, spec: &Spec, table: &[u32]) -> i64 {
+    let mut player = Player::new(Ramp::steps(table));
+    player.start(2 * table.len() as u32);
+    let moves: Vec<u32> = std::iter::from_fn(|| player.next_period()).collect();
+    let options = SimOptions::suggested(motor, spec, &moves);
+    simulate::run(motor, spec, &moves, &options)
+        .unwrap()
+        .lost_steps
+}
+
+#[test]
+fn the_check_and_the_simulation_use_the_torque_the_windings_give() {
+    let (spec, table) = ramp();
+    // At 6 V the torque falls away at speed: the check refuses the ramp
+    // where it falls short, and the simulated rotor slips.
+    let weak = qsh4218(6.0);
+    let error = weak.check(&spec, &table).unwrap_err();
+    assert_eq!(
+        error.to_string(),
+        "the motor cannot follow step 185 at 6101.3 Hz: it needs 0.1069 N·m but gives \
+         0.1043 N·m after the safety factor, short by 0.0025 N·m (the pull-out torque derived \
+         from the windings)"
+    );
+    let MotorError::Torque {
+        hz, available_nm, ..
+    } = error
+    else {
+        panic!("{error:?}")
+    };
+    assert_eq!(Some(available_nm), weak.derived_pull_out(hz));
+    assert_eq!(lost(&weak, &spec, &table), 4);
+    // At 24 V the full current reaches 1200 rpm and more: the ramp passes
+    // and the simulated rotor keeps every step.
+    let strong = qsh4218(24.0);
+    let figures = strong.check(&spec, &table).unwrap();
+    assert!(figures.min_margin_nm > 0.0);
+    assert_eq!(lost(&strong, &spec, &table), 0);
+    // A typed curve is what the check uses; the windings stay for comparison.
+    let typed = Motor {
+        torque_curve: TorqueCurve::new(&[(0.0, 0.40), (4000.0, 0.25)]),
+        ..strong
+    };
+    let error = typed.check(&spec, &table).unwrap_err();
+    assert!(
+        error
+            .to_string()
+            .ends_with("(the frequency is beyond the last point of `torque_curve`)"),
+        "{error}"
+    );
+    assert_eq!(typed.pull_out(2000.0), 0.325);
+    assert_eq!(typed.derived_pull_out(2000.0), Some(0.40));
+}
+
+// The macro: the windings alone describe the motor's torque.
+static STRONG: [u16; 405] = period_table!(
+    curve = linear,
+    fmin = 300,
+    fmax = 9000,
+    accel = 100_000,
+    timer_hz = 10_000_000,
+    step_angle = 1.8,
+    rotor_inertia = 6.8e-6,
+    load_inertia = 1.36e-5,
+    friction = 0.02,
+    resistance = 0.5,
+    inductance = 0.6e-3,
+    rated_current = 2.8,
+    holding_torque = 0.40,
+    supply_voltage = 24,
+    damping_ratio = 0.1,
+);
+
+#[test]
+fn the_macro_and_a_profiles_file_take_the_windings() {
+    let (_, table) = ramp();
+    assert_eq!(STRONG.map(u32::from).as_slice(), table.as_slice());
+    let text = r#"
+[motors.qsh4218]
+step_angle = 1.8
+rotor_inertia = 6.8e-6
+load_inertia = 1.36e-5
+friction = 0.02
+resistance = 0.5
+inductance = 0.6e-3
+rated_current = 2.8
+holding_torque = 0.40
+supply_voltage = 24
+detent_torque = 0.01
+
+[profiles.ramp]
+curve = "linear"
+fmin = 300
+fmax = 9000
+accel = 100_000
+timer_hz = 10_000_000
+motor = "qsh4218"
+"#;
+    let profiles = Profiles::parse("profiles.toml", text).unwrap();
+    let motor = profiles.profiles()[0].motor.unwrap();
+    assert_eq!(motor.torque_curve, None);
+    let windings = motor.windings.unwrap();
+    assert_eq!(windings.detent_torque, 0.01);
+    assert!((motor.pull_out(0.0) - 0.39).abs() < 1e-15);
+}
