@@ -357,9 +357,17 @@ fn print_pull_out(out: &mut String, bound: &[&Profile]) {
                 .map(|hz| format!("{hz:>9.1}"))
                 .collect::<String>()
         );
-        let typed = row(&|hz| motor.torque_curve.map(|c| c.torque(hz)));
         let derived = row(&|hz| motor.derived_pull_out(hz));
-        let _ = writeln!(out, "{:<50}{typed}", "  `torque_curve` (used by the check)");
-        let _ = writeln!(out, "{:<50}{derived}", "  derived from the windings");
+        match motor.torque_curve {
+            Some(curve) => {
+                let typed = row(&|hz| Some(curve.torque(hz)));
+                let _ = writeln!(out, "{:<50}{typed}", "  `torque_curve` (used by the check)");
+                let _ = writeln!(out, "{:<50}{derived}", "  derived from the windings");
+            }
+            None => {
+                let label = "  derived from the windings (used by the check)";
+                let _ = writeln!(out, "{label:<50}{derived}");
+            }
+        }
     }
 }

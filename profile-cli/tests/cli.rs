@@ -321,6 +321,50 @@ fn report_gives_a_compact_layout_flash_against_one_entry_per_step() {
     );
 }
 
+/// A motor known by its windings alone (the QSH4218-47-28-040's, on a
+/// 12 V supply): its derived curve is the one the check uses.
+const WINDINGS_ONLY: &str = "[motors.m]\nstep_angle = 1.8\nrotor_inertia = 6.8e-6\n\
+     load_inertia = 1.36e-5\nfriction = 0.02\nresistance = 0.5\ninductance = 0.6e-3\n\
+     rated_current = 2.8\nholding_torque = 0.40\nsupply_voltage = 12\n\n\
+     [profiles.p]\ncurve = \"linear\"\nfmin = 300\nfmax = 3000\naccel = 10_000\n\
+     timer_hz = 1_000_000\nmotor = \"m\"\n";
+
+#[test]
+fn report_labels_the_windings_curve_as_the_checked_one_when_it_is_the_only_one() {
+    let dir = work_dir("report_windings_only");
+    fs::write(dir.join("profiles.toml"), WINDINGS_ONLY).unwrap();
+    let out = run(&dir, &["report", "profiles.toml"]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let report = text(&out.stdout);
+    let pull_out = report
+        .split("`p`: the motor's pull-out torque, N·m\n")
+        .nth(1)
+        .unwrap_or_else(|| panic!("{report}"));
+    let lines: Vec<&str> = pull_out.lines().take(3).collect();
+    assert!(
+        lines[0].starts_with("  at step frequency (Hz)"),
+        "{pull_out}"
+    );
+    assert!(
+        lines[1].starts_with("  derived from the windings (used by the check)"),
+        "{pull_out}"
+    );
+    assert!(lines[2].trim().is_empty(), "{pull_out}");
+    assert!(
+        !report.contains("`torque_curve` (used by the check)"),
+        "{report}"
+    );
+    // The start limit is searched up to where the derived torque falls to a
+    // hundredth: a figure, not 0.
+    let row = report
+        .split("\nMotor torque")
+        .nth(1)
+        .and_then(|m| m.lines().find(|l| l.starts_with("p ")))
+        .unwrap_or_else(|| panic!("{report}"));
+    let start: f64 = row.split_whitespace().nth(6).unwrap().parse().unwrap();
+    assert!(start > 300.0, "{row}");
+}
+
 #[test]
 fn a_reader_that_stops_early_is_not_an_error() {
     let dir = work_dir("pipe");

@@ -55,6 +55,10 @@ pub const END_FULL_STEPS: u32 = 4 * START_FULL_STEPS;
 /// The relative resolution of a start limit found from the model.
 pub const START_RESOLUTION: f64 = 1e-3;
 
+/// Above this bound (Hz), [`Motor::start_limit`] narrows its search
+/// geometrically before it bisects.
+const GEOMETRIC_ABOVE: f64 = 1e6;
+
 impl Motor {
     /// The torque-angle stiffness at rest, `K = N_r · T_hold` in N·m/rad:
     /// `N_r` electrical radians per mechanical radian (90° electrical per
@@ -89,8 +93,9 @@ impl Motor {
 
     /// The fastest start from rest with the load: `max_start_hz` corrected
     /// for the load when it is given; otherwise the fastest constant rate,
-    /// searched by bisection below `below` Hz (to [`START_RESOLUTION`]), at
-    /// which the model's rotor pulls in from rest.
+    /// searched by bisection below `below` Hz (to [`START_RESOLUTION`];
+    /// geometric first from 1 Hz when `below` is above a million, or
+    /// infinite), at which the model's rotor pulls in from rest.
     pub fn start_limit(&self, below: f64) -> StartLimit {
         if let Some(max_start_hz) = self.max_start_hz {
             let factor = libm::sqrt(1.0 + self.load_inertia / self.rotor_inertia);
@@ -103,6 +108,28 @@ impl Motor {
         let (mut lo, mut hi) = (0.0, below);
         if pulls_in(self, hi) {
             return StartLimit::Model { hz: hi };
+        }
+        // A bound far above any step rate (a motor whose torque never
+        // falls): narrow it by geometric halving from 1 Hz first, so that
+        // the linear search starts within a factor of two.
+        if hi > GEOMETRIC_ABOVE {
+            hi = hi.min(f64::MAX);
+            if pulls_in(self, 1.0) {
+                lo = 1.0;
+                for _ in 0..64 {
+                    if hi <= 2.0 * lo {
+                        break;
+                    }
+                    let mid = libm::sqrt(lo) * libm::sqrt(hi);
+                    if pulls_in(self, mid) {
+                        lo = mid;
+                    } else {
+                        hi = mid;
+                    }
+                }
+            } else {
+                hi = 1.0;
+            }
         }
         // At most 64 halvings: the interval shrinks below the resolution
         // long before (2^-10 per ten), or the loop ends regardless.

@@ -69,17 +69,23 @@ pub struct Windings {
 /// The largest `i_q` over the currents the driver reaches: the disc of
 /// centre `(cd, cq)` and radius `r` (what the voltage allows) within the
 /// circle of radius `amp` (what the chopper holds the current to). When the
-/// two do not meet, the chopper cannot hold the current and the disc's top
-/// is the answer.
+/// two do not meet, every current the supply allows is beyond the set
+/// amplitude: the back-EMF drives more current than the chopper is set to
+/// (a winding whose short-circuit current `K_m / (N_r L)` exceeds it, at
+/// speed) and the rotor is braked, not driven; 0 then, where the torque has
+/// already fallen to as the two circles drew apart.
 fn largest_iq(amp: f64, (cd, cq): (f64, f64), r: f64) -> f64 {
     // The current circle's top, if the voltage reaches it.
     if libm::hypot(cd, amp - cq) <= r {
         return amp;
     }
+    let d = libm::hypot(cd, cq);
+    if d >= amp + r {
+        return 0.0;
+    }
     // The voltage disc's top, if within the current circle.
     let top = cq + r;
-    let d = libm::hypot(cd, cq);
-    if libm::hypot(cd, top) <= amp || d >= amp + r {
+    if libm::hypot(cd, top) <= amp {
         return top;
     }
     // Otherwise the upper crossing of the two circles: along the centres'
@@ -186,14 +192,17 @@ impl Motor {
                 let low = |hz: f64| self.pull_out(hz) <= floor;
                 // Doubling, then halving, each with a bound: the torque
                 // falls with speed, as `1/ω` at the top.
+                // A torque that never falls (a supply beyond any the model
+                // was made for) stops the doubling at the largest finite
+                // power of two.
                 let mut hi = 1.0;
-                for _ in 0..1100 {
+                for _ in 0..1023 {
                     if low(hi) {
                         break;
                     }
                     hi *= 2.0;
                 }
-                let mut lo = 0.0;
+                let mut lo = if hi > 1.0 { 0.5 * hi } else { 0.0 };
                 for _ in 0..64 {
                     let mid = 0.5 * (lo + hi);
                     if low(mid) {
@@ -258,6 +267,62 @@ mod tests {
         assert!(
             (t / asymptote - 1.0).abs() < 1e-3,
             "{t} against {asymptote}"
+        );
+    }
+
+    #[test]
+    fn a_short_circuit_current_above_the_set_one_brakes_at_speed() {
+        // `K_m / (N_r L)` = 0.101 / 0.01 = 10.1 A, above the 3.96 A set:
+        // once the back-EMF drives more than the chopper is set to, the
+        // windings give nothing, and never more again.
+        let w = Windings {
+            resistance: 0.5,
+            inductance: 0.2e-3,
+            ..nema17()
+        };
+        assert!(w.torque_constant() / (50.0 * w.inductance) > w.amplitude());
+        let mut last = f64::INFINITY;
+        let mut zero_from = None;
+        for k in 0..100_000 {
+            let omega = k as f64 * 0.05;
+            let t = w.pull_out(50.0, omega);
+            assert!(t <= last, "rises to {t} at {omega} rad/s");
+            if t == 0.0 && zero_from.is_none() {
+                zero_from = Some(omega);
+            }
+            last = t;
+        }
+        let zero_from = zero_from.expect("falls to nothing");
+        // 496.5 rad/s: 15 800 full steps/s.
+        assert!((450.0..550.0).contains(&zero_from), "{zero_from}");
+    }
+
+    #[test]
+    fn a_supply_beyond_reason_gives_finite_limits() {
+        let motor = Motor {
+            torque_curve: None,
+            windings: Some(Windings {
+                supply_voltage: 1e300,
+                ..nema17()
+            }),
+            step_angle: 1.8,
+            microsteps: 1,
+            rotor_inertia: 5.4e-6,
+            load_inertia: 2.0e-5,
+            friction: 0.0,
+            damping: 0.0,
+            damping_ratio: 0.1,
+            safety: 1.0,
+            max_start_hz: None,
+        };
+        let top = motor.top_hz();
+        assert!(top.is_finite() && top > 1e300, "{top}");
+        let start = motor.start_limit(top).hz();
+        assert!(start > 100.0 && start < 1e6, "{start}");
+        let unbounded = motor.start_limit(f64::INFINITY).hz();
+        assert!(
+            (unbounded / start - 1.0).abs() < 2e-3,
+            "{unbounded} against {start}"
         );
     }
 }

@@ -288,14 +288,32 @@ fn missing_keys<L: Clone>(c: &mut Collector<'_, L>) {
             .collect()
     };
     let mut missing = lacking(c, &[Key::STEP_ANGLE, Key::ROTOR_INERTIA]);
-    let torque = if c.find(Key::TORQUE_CURVE).is_some() && !any_windings {
+    let curve = c.find(Key::TORQUE_CURVE).is_some();
+    if curve && any_windings {
+        // Windings beside a curve only draw the derived curve over it: an
+        // incomplete set is an error at the key that starts it.
+        let lacks = lacking(c, windings);
+        let first = Key::WINDINGS_KEYS
+            .iter()
+            .find_map(|k| c.find(*k).map(|(i, _)| (i, *k)));
+        if let (false, Some((i, key))) = (lacks.is_empty(), first) {
+            let message = format!(
+                "`{}` describes the windings, whose pull-out curve the report compares with \
+                 `torque_curve`; give the rest of them ({} missing) or remove it",
+                key.name(),
+                quoted(lacks.iter().map(|k| k.name()))
+            );
+            c.at_arg(i, true, message);
+        }
+    }
+    let torque = if curve {
         Vec::new()
     } else if any_windings {
         lacking(c, windings)
     } else {
         vec![Key::TORQUE_CURVE]
     };
-    let through_windings = any_windings && !torque.is_empty();
+    let through_windings = any_windings && !curve;
     missing.extend(torque);
     if missing.is_empty() {
         return;
