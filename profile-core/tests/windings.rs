@@ -204,3 +204,68 @@ fn the_qsh4218_at_1200_rpm_against_its_manual() {
     assert_eq!(derived, 0.40);
     assert!((chopped - 0.40).abs() < 0.01 * 0.40);
 }
+
+/// Where the back-EMF is large against the resistance, the corner between
+/// a held and a lost current is wide, and the closed form (the square
+/// wave's full fundamental with the current still held) is further above
+/// the chopped phases: on the QSH4218-47-28-040's windings (0.5 Ω, 0.6 mH,
+/// 2.8 A, 0.40 N·m, 24 V) and on a low-inductance winding whose
+/// short-circuit current `K_m / (N_r L)` (10.1 A) exceeds the set amplitude
+/// (3.96 A), which at speed brakes the rotor: the closed form falls to 0
+/// there and stays, the chopped phases agree. The README quotes these
+/// figures.
+#[test]
+fn where_the_back_emf_dominates_the_corner_is_wider() {
+    let qsh = Windings {
+        resistance: 0.5,
+        inductance: 0.6e-3,
+        rated_current: 2.8,
+        holding_torque: 0.40,
+        supply_voltage: 24.0,
+        detent_torque: 0.0,
+    };
+    let brake = Windings {
+        inductance: 0.2e-3,
+        ..qsh
+    };
+    for (name, w, most, ratio) in [
+        ("QSH4218-47-28-040", qsh, 0.10, 1.13),
+        ("0.2 mH, braking", brake, 0.24, 2.2),
+    ] {
+        let (mut worst, mut worst_ratio) = (0.0f64, 1.0f64);
+        for k in 1..=20 {
+            let full_steps = 1000.0 * k as f64;
+            let derived = w.pull_out(50.0, omega(full_steps));
+            let chopped = chopped_pull_out(&w, 50.0, omega(full_steps));
+            let off = (derived - chopped) / w.holding_torque;
+            println!(
+                "{name:<20} {full_steps:>6} full steps/s: derived {derived:.4} N·m, \
+                 chopped {chopped:.4} N·m ({:+.1} % of holding)",
+                off * 100.0
+            );
+            assert!(
+                (-0.015..most).contains(&off),
+                "{name} at {full_steps} full steps/s: derived {derived} N·m, chopped {chopped} N·m"
+            );
+            if chopped > 0.05 * w.holding_torque {
+                worst_ratio = worst_ratio.max(derived / chopped);
+            }
+            if derived == 0.0 {
+                assert!(chopped < 0.015 * w.holding_torque, "{name} at {full_steps}");
+            }
+            worst = worst.max(off);
+        }
+        println!(
+            "{name}: at most {:+.1} % of the holding torque above, {:.2} times the \
+             chopped torque where it is above 5 % of holding",
+            worst * 100.0,
+            worst_ratio
+        );
+        assert!(worst_ratio < ratio, "{name}: {worst_ratio}");
+    }
+    // The braking winding gives nothing from 16 000 full steps/s on.
+    assert!(brake.pull_out(50.0, omega(15_000.0)) > 0.05);
+    for full_steps in [16_000.0, 20_000.0, 40_000.0, 1e6] {
+        assert_eq!(brake.pull_out(50.0, omega(full_steps)), 0.0);
+    }
+}
