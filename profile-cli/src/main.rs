@@ -108,13 +108,19 @@ impl<E: std::fmt::Display> From<E> for Failure {
     }
 }
 
+/// A line on standard error; a closed one (`2>&-`) loses it, as it should,
+/// rather than failing the command.
+fn note(line: &str) {
+    let _ = writeln!(std::io::stderr(), "{line}");
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match run(cli.command) {
         Ok(()) => ExitCode::SUCCESS,
         Err(Failure(message)) => {
             let _ = std::io::stdout().flush();
-            eprintln!("{}", message.trim_end());
+            note(message.trim_end());
             ExitCode::FAILURE
         }
     }
@@ -183,7 +189,7 @@ fn run(command: Command) -> Result<(), Failure> {
                         )));
                     }
                     let (h, c) = profiles.write_c_split(&out, &style)?;
-                    eprintln!("wrote {} and {}", h.display(), c.display());
+                    note(&format!("wrote {} and {}", h.display(), c.display()));
                     Ok(())
                 }
                 (out, _) => emit(out.as_deref(), &profiles.c_header_with(&style)),
@@ -209,7 +215,7 @@ fn load(path: &Path) -> Result<Profiles, Failure> {
     let (done, waiting) = mpsc::channel::<()>();
     let notice = std::thread::spawn(move || {
         if waiting.recv_timeout(Duration::from_secs(1)).is_err() {
-            eprintln!("computing tables...");
+            note("computing tables...");
         }
     });
     let loaded = Profiles::load(path);
@@ -228,7 +234,7 @@ fn emit(out: Option<&Path>, text: &str) -> Result<(), Failure> {
             }
             std::fs::write(path, text)
                 .map_err(|e| format!("cannot write `{}`: {e}", path.display()))?;
-            eprintln!("wrote {}", path.display());
+            note(&format!("wrote {}", path.display()));
             Ok(())
         }
         None => stdout(text),

@@ -381,3 +381,31 @@ fn a_reader_that_stops_early_is_not_an_error() {
     assert!(out.status.success(), "{}", text(&out.stderr));
     assert!(!text(&out.stderr).contains("panicked"));
 }
+
+#[test]
+fn a_closed_standard_error_loses_the_message_but_not_the_exit_status() {
+    let dir = work_dir("closed_stderr");
+    fs::write(dir.join("bad.toml"), BAD).unwrap();
+    let mut child = Command::new(BIN)
+        .args(["check", "bad.toml"])
+        .current_dir(&dir)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stderr.take());
+    let out = child.wait_with_output().unwrap();
+    // The file's error, not a panic (101).
+    assert_eq!(out.status.code(), Some(1));
+    let dir = work_dir("closed_stderr_plot");
+    let mut child = Command::new(BIN)
+        .args(["plot", shipped().to_str().unwrap(), "--out", "plots"])
+        .current_dir(&dir)
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stderr.take());
+    assert!(child.wait().unwrap().success());
+    assert!(dir.join("plots").is_dir());
+}

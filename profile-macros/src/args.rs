@@ -46,6 +46,13 @@ fn parse_value(input: ParseStream, key: &Ident) -> syn::Result<(Value, Loc)> {
         return Ok((Value::Name(ident.to_string()), ident.into_token_stream()));
     }
     if input.peek(syn::token::Bracket) {
+        if key != profile_core::Key::TORQUE_CURVE.name() {
+            let group: proc_macro2::Group = input.parse()?;
+            return Err(syn::Error::new_spanned(
+                group,
+                format!("{}, not a list (only `torque_curve` takes one)", expected()),
+            ));
+        }
         return parse_points(input, key);
     }
     let minus: Option<Token![-]> = input.parse()?;
@@ -294,6 +301,15 @@ mod tests {
             (
                 "fmax = 1e999",
                 "`fmax` is too large for a 64-bit float (at most about 1.8e308)",
+            ),
+            (
+                "resistance = [1, 2]",
+                "`resistance` expects a number or a name, not a list (only `torque_curve` \
+                 takes one)",
+            ),
+            (
+                "fmin = [(0, 1)]",
+                "`fmin` expects a number or a name, not a list (only `torque_curve` takes one)",
             ),
             ("len = true", "`len` expects a number or a name"),
             ("len = -x", "`len` expects a number or a name"),
