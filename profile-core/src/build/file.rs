@@ -216,7 +216,8 @@ pub(crate) struct ProfileArgs {
 /// A file read into profiles' arguments, and what is wrong with it so far.
 pub(crate) struct FileArgs {
     pub(crate) profiles: Vec<ProfileArgs>,
-    /// Keys a misspelt default was probably meant to be: not missing too.
+    /// Keys a misspelt default or motor key was probably meant to be: not
+    /// missing too.
     pub(crate) meant: Vec<Key>,
     pub(crate) diagnostics: Vec<Diagnostic<Range<usize>>>,
 }
@@ -236,7 +237,7 @@ pub(crate) fn read(source: &str) -> Result<FileArgs, Diagnostic<Range<usize>>> {
     };
     let defaults = defaults(parsed.defaults.as_ref(), &mut file);
     let motors: Vec<_> = parsed.motors.iter().flatten().collect();
-    check_motors(&motors, &mut file.diagnostics);
+    check_motors(&motors, &mut file);
     let mut declared: Vec<&str> = motors.iter().map(|(k, _)| k.get_ref().as_str()).collect();
     declared.sort_unstable();
     let Some(profiles) = parsed.profiles else {
@@ -302,17 +303,19 @@ fn defaults(table: Option<&Table>, file: &mut FileArgs) -> Vec<Arg<Range<usize>>
 }
 
 /// A motor table holds a motor's keys only; checked once per motor.
-fn check_motors(
-    motors: &[(&Spanned<String>, &Spanned<Table>)],
-    diagnostics: &mut Vec<Diagnostic<Range<usize>>>,
-) {
+/// The key a misspelt one probably meant goes to `file.meant`: not missing
+/// too.
+fn check_motors(motors: &[(&Spanned<String>, &Spanned<Table>)], file: &mut FileArgs) {
     for (_, table) in motors {
         for (key, _) in sorted(table.get_ref()) {
             if Key::from_name(key.get_ref()).is_some_and(Key::is_motor) {
                 continue;
             }
             let motor_keys = Key::MOTOR_KEYS.iter().map(|k| k.name());
-            diagnostics.push(Diagnostic {
+            file.meant.extend(
+                schema::suggest(key.get_ref(), motor_keys.clone()).and_then(Key::from_name),
+            );
+            file.diagnostics.push(Diagnostic {
                 loc: key.span(),
                 message: format!(
                     "`{}` is not a motor key; {}a `[motors.NAME]` table takes {} \

@@ -74,7 +74,7 @@ pub fn read<L: Clone>(
         );
     }
     let curve = (room.read)(&mut c);
-    let motor = motor(&mut c);
+    let motor = motor(&mut c, &suggested);
     let (Some(curve), Some(timer), true, true) = (curve, timer, complete, c.diagnostics.is_empty())
     else {
         return Err(c.finish());

@@ -200,7 +200,9 @@ fn len_check(len: i128) -> Result<u32, String> {
 }
 
 /// The motor the arguments describe, if any; problems go to the collector.
-pub(crate) fn motor<L: Clone>(c: &mut Collector<'_, L>) -> Option<Motor> {
+/// `assumed` keys (what a misspelt key probably meant) are not reported
+/// missing.
+pub(crate) fn motor<L: Clone>(c: &mut Collector<'_, L>, assumed: &[Key]) -> Option<Motor> {
     let described = Key::MOTOR_KEYS.iter().any(|k| c.find(*k).is_some());
     if !described {
         if let Some((i, arg)) = c.find(Key::MOTOR) {
@@ -214,7 +216,7 @@ pub(crate) fn motor<L: Clone>(c: &mut Collector<'_, L>) -> Option<Motor> {
         }
         return None;
     }
-    missing_keys(c);
+    missing_keys(c, assumed);
     let step_angle = c.float(Key::STEP_ANGLE);
     let microsteps = c.ranged(
         Key::MICROSTEPS,
@@ -278,13 +280,13 @@ pub(crate) fn motor<L: Clone>(c: &mut Collector<'_, L>) -> Option<Motor> {
 /// The keys a motor lacks, as one error: `step_angle` and `rotor_inertia`,
 /// and its pull-out torque (`torque_curve`, or every required key of the
 /// windings once one is given).
-fn missing_keys<L: Clone>(c: &mut Collector<'_, L>) {
+fn missing_keys<L: Clone>(c: &mut Collector<'_, L>, assumed: &[Key]) {
     let windings = &Key::WINDINGS_KEYS[..5];
     let any_windings = Key::WINDINGS_KEYS.iter().any(|k| c.find(*k).is_some());
     let lacking = |c: &Collector<'_, L>, keys: &[Key]| -> Vec<Key> {
         keys.iter()
             .copied()
-            .filter(|k| c.find(*k).is_none())
+            .filter(|k| c.find(*k).is_none() && !assumed.contains(k))
             .collect()
     };
     let mut missing = lacking(c, &[Key::STEP_ANGLE, Key::ROTOR_INERTIA]);
