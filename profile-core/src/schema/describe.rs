@@ -40,8 +40,8 @@ pub fn describe(spec: &Spec) -> Vec<(Key, String)> {
 /// Places a motor error: at the value of its key, at `motor` for a table the
 /// motor cannot follow (when no `motor` names it: for a start too fast at
 /// `max_start_hz`, or at `fmin` when the model judged it or the ends of a
-/// move; else at
-/// `torque_curve`), or on `whole`.
+/// move; at `supply_voltage` for a torque the windings give too little of;
+/// else at `torque_curve`), or on `whole`.
 pub fn locate_motor<L: Clone>(error: &MotorError, args: &[Arg<L>], whole: &L) -> Diagnostic<L> {
     let find = |k: Key| {
         args.iter()
@@ -56,6 +56,10 @@ pub fn locate_motor<L: Clone>(error: &MotorError, args: &[Arg<L>], whole: &L) ->
         | MotorError::PullIn { .. }
         | MotorError::ShortMove { .. } => Key::FMIN,
         MotorError::Start { .. } => Key::MAX_START_HZ,
+        MotorError::Torque {
+            from_windings: true,
+            ..
+        } => Key::SUPPLY_VOLTAGE,
         _ => Key::TORQUE_CURVE,
     };
     let loc = find(error.key())
