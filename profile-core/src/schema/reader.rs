@@ -277,9 +277,10 @@ pub(crate) fn motor<L: Clone>(c: &mut Collector<'_, L>, assumed: &[Key]) -> Opti
     })
 }
 
-/// The keys a motor lacks, as one error: `step_angle` and `rotor_inertia`,
-/// and its pull-out torque (`torque_curve`, or every required key of the
-/// windings once one is given).
+/// The keys a motor lacks, as one error at its `motor` name (or on the
+/// whole): `step_angle` and `rotor_inertia`, and its pull-out torque
+/// (`torque_curve`, or every required key of the windings once one is
+/// given).
 fn missing_keys<L: Clone>(c: &mut Collector<'_, L>, assumed: &[Key]) {
     let windings = &Key::WINDINGS_KEYS[..5];
     let any_windings = Key::WINDINGS_KEYS.iter().any(|k| c.find(*k).is_some());
@@ -332,11 +333,16 @@ fn missing_keys<L: Clone>(c: &mut Collector<'_, L>, assumed: &[Key]) {
             quoted(windings.iter().map(|k| k.name()))
         )
     };
-    c.at_whole(format!(
+    let message = format!(
         "missing motor {} {}: {needs}",
         if missing.len() == 1 { "key" } else { "keys" },
         quoted(missing.iter().map(|k| k.name())),
-    ));
+    );
+    // At the name of the motor that lacks them, in a profiles file.
+    match c.find(Key::MOTOR) {
+        Some((i, _)) => c.at_arg(i, false, message),
+        None => c.at_whole(message),
+    }
 }
 
 /// The windings the arguments give, if any: `Some(None)` without them,
