@@ -3,7 +3,6 @@
 
 use std::format;
 use std::string::{String, ToString};
-use std::vec;
 use std::vec::Vec;
 
 use super::suggest::{Hint, did_you_mean};
@@ -294,7 +293,7 @@ fn missing_keys<L: Clone>(c: &mut Collector<'_, L>, assumed: &[Key]) {
     let curve = c.find(Key::TORQUE_CURVE).is_some();
     if curve && any_windings {
         // Windings beside a curve only draw the derived curve over it: an
-        // incomplete set is an error at the key that starts it.
+        // incomplete set is an error at the first of them given.
         let lacks = lacking(c, windings);
         let first = Key::WINDINGS_KEYS
             .iter()
@@ -314,7 +313,7 @@ fn missing_keys<L: Clone>(c: &mut Collector<'_, L>, assumed: &[Key]) {
     } else if any_windings {
         lacking(c, windings)
     } else {
-        vec![Key::TORQUE_CURVE]
+        lacking(c, &[Key::TORQUE_CURVE])
     };
     let through_windings = any_windings && !curve;
     missing.extend(torque);
