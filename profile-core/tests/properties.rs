@@ -461,4 +461,49 @@ mod motors {
             }
         }
     }
+
+    /// A positive value spread over `decades` decades from `low`.
+    fn spread(low: f64, decades: f64) -> impl Strategy<Value = f64> {
+        (0.0..decades).prop_map(move |d| low * 10f64.powf(d))
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(cases()))]
+
+        /// Any valid windings, from watch motors to ones no one makes
+        /// (short-circuit current far above and far below the set one): the
+        /// derived pull-out torque is finite, at most the holding torque less
+        /// the detent torque, and never rises with speed.
+        #[test]
+        fn derived_pull_out_falls_with_speed(
+            resistance in spread(0.01, 4.0),
+            inductance in spread(1e-5, 4.0),
+            rated_current in spread(0.05, 3.0),
+            holding_torque in spread(0.005, 4.0),
+            supply_voltage in spread(1.0, 3.0),
+            detent in 0.0..0.5f64,
+            poles in prop_oneof![Just(50.0), Just(100.0), Just(12.5)],
+        ) {
+            let w = Windings {
+                resistance,
+                inductance,
+                rated_current,
+                holding_torque,
+                supply_voltage,
+                detent_torque: detent * holding_torque,
+            };
+            prop_assert!(w.validate().is_ok());
+            let top = holding_torque - w.detent_torque;
+            let mut last = f64::INFINITY;
+            for k in 0..400 {
+                // 0 to 1e6 mechanical rad/s, finely at first.
+                let omega = 1e6 * (k as f64 / 400.0).powi(4);
+                let t = w.pull_out(poles, omega);
+                prop_assert!(t.is_finite() && t >= 0.0, "{t} at {omega}");
+                prop_assert!(t <= top * (1.0 + 1e-12), "{t} above {top} at {omega}");
+                prop_assert!(t <= last * (1.0 + 1e-12) + 1e-15, "{t} above {last} at {omega}");
+                last = t;
+            }
+        }
+    }
 }
