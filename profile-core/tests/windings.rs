@@ -170,6 +170,18 @@ fn derived_pull_out_agrees_with_the_chopped_windings_in_time() {
     assert!(corner <= 4, "{corner} points differ by more than 1 %");
 }
 
+/// TRINAMIC's QSH4218-47-28-040 (manual V1.10, Table 2.1) on a 24 V supply.
+fn qsh4218() -> Windings {
+    Windings {
+        resistance: 0.5,
+        inductance: 0.6e-3,
+        rated_current: 2.8,
+        holding_torque: 0.40,
+        supply_voltage: 24.0,
+        detent_torque: 0.0,
+    }
+}
+
 /// The one published point of a real motor's curve that is text, not a
 /// figure: TRINAMIC's "QMot QSH4218 Manual" (V1.10), Table 2.1 gives the
 /// QSH4218-47-28-040's windings (0.5 Ω ± 10 %, 0.6 mH ± 20 %, 2.8 A, holding
@@ -183,14 +195,7 @@ fn derived_pull_out_agrees_with_the_chopped_windings_in_time() {
 /// curve is what the windings allow, an upper bound.
 #[test]
 fn the_qsh4218_at_1200_rpm_against_its_manual() {
-    let w = Windings {
-        resistance: 0.5,
-        inductance: 0.6e-3,
-        rated_current: 2.8,
-        holding_torque: 0.40,
-        supply_voltage: 24.0,
-        detent_torque: 0.0,
-    };
+    let w = qsh4218();
     // 1200 rpm = 20 turns/s = 4000 full steps/s.
     let full_steps = 4000.0;
     let derived = w.pull_out(50.0, omega(full_steps));
@@ -224,14 +229,7 @@ fn the_qsh4218_at_1200_rpm_against_its_manual() {
 /// figures.
 #[test]
 fn where_the_back_emf_dominates_the_corner_is_wider() {
-    let qsh = Windings {
-        resistance: 0.5,
-        inductance: 0.6e-3,
-        rated_current: 2.8,
-        holding_torque: 0.40,
-        supply_voltage: 24.0,
-        detent_torque: 0.0,
-    };
+    let qsh = qsh4218();
     let brake = Windings {
         inductance: 0.2e-3,
         ..qsh

@@ -136,3 +136,13 @@ impl fmt::Display for Key {
         f.write_str(self.0)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::Key;
+
+    #[test]
+    fn the_windings_keys_are_motor_keys_in_the_same_order() {
+        assert!(Key::MOTOR_KEYS.ends_with(Key::WINDINGS_KEYS));
+    }
+}
