@@ -71,7 +71,7 @@ fn the_check_and_the_simulation_use_the_torque_the_windings_give() {
     assert_eq!(
         error.to_string(),
         "the motor cannot follow step 185 at 6101.3 Hz: it needs 0.1069 N·m but gives \
-         0.1043 N·m after the safety factor, short by 0.0025 N·m (the pull-out torque derived \
+         0.1031 N·m after the safety factor, short by 0.0038 N·m (the pull-out torque derived \
          from the windings)"
     );
     let MotorError::Torque {

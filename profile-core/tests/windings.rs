@@ -141,33 +141,25 @@ fn compare(name: &str, w: &Windings, full_steps: f64) -> (f64, f64, f64) {
 
 #[test]
 fn derived_pull_out_agrees_with_the_chopped_windings_in_time() {
-    let (mut worst, mut corner) = (0.0f64, 0);
+    let mut worst = 0.0f64;
     for (name, w) in motors() {
         for full_steps in [50.0, 250.0, 500.0, 1000.0, 2000.0, 4000.0, 8000.0] {
             let (derived, chopped, off) = compare(name, &w, full_steps);
-            worst = worst.max(off);
-            // Where the chopper holds the current, and where it has given
-            // up (a square wave on each phase), the two agree within 1 % of
-            // the holding torque (the chopper's ripple); in between, where
-            // it holds the current through part of each turn, the closed
-            // form takes the square wave's full fundamental and is above,
-            // by less than 8 %.
+            worst = worst.max(off.abs());
+            // Where the chopper holds the current, where it holds it through
+            // part of each turn, and where it has given up (a square wave on
+            // each phase), the two agree within 1 % of the holding torque:
+            // the chopper's ripple, here a switching every 1/8000 of a turn.
             assert!(
-                (-0.01..0.08).contains(&off),
+                (-0.005..0.01).contains(&off),
                 "{name} at {full_steps} full steps/s: derived {derived} N·m, chopped {chopped} N·m"
             );
-            if !(-0.01..0.01).contains(&off) {
-                corner += 1;
-            }
         }
     }
     println!(
-        "largest difference: {:+.1} % of the holding torque",
+        "largest difference: {:.1} % of the holding torque",
         worst * 100.0
     );
-    // The corner is narrow: on these three motors at these seven speeds,
-    // four points are in it.
-    assert!(corner <= 4, "{corner} points differ by more than 1 %");
 }
 
 /// TRINAMIC's QSH4218-47-28-040 (manual V1.10, Table 2.1) on a 24 V supply.
@@ -218,53 +210,106 @@ fn the_qsh4218_at_1200_rpm_against_its_manual() {
     assert!((chopped - 0.40).abs() < 0.01 * 0.40);
 }
 
-/// Where the back-EMF is large against the resistance, the corner between
-/// a held and a lost current is wide, and the closed form (the square
-/// wave's full fundamental with the current still held) is further above
-/// the chopped phases: on the QSH4218-47-28-040's windings (0.5 Ω, 0.6 mH,
-/// 2.8 A, 0.40 N·m, 24 V) and on a low-inductance winding whose
-/// short-circuit current `K_m / (N_r L)` (10.1 A) exceeds the set amplitude
-/// (3.96 A), which at speed brakes the rotor: the closed form falls to 0
-/// there and stays, the chopped phases agree. The README quotes these
-/// figures.
+/// Where the back-EMF is large against the resistance, the speeds at which
+/// the chopper holds the current through only part of each turn span a wide
+/// band: on the QSH4218-47-28-040's windings (0.5 Ω, 0.6 mH, 2.8 A,
+/// 0.40 N·m, 24 V) from 5000 to beyond 10 000 full steps/s, and on a
+/// low-inductance winding whose short-circuit current `K_m / (N_r L)`
+/// (10.1 A) exceeds the set amplitude (3.96 A), which at speed brakes the
+/// rotor. The derived torque follows the chopped phases through both, and
+/// gives nothing where they give nothing.
 #[test]
-fn where_the_back_emf_dominates_the_corner_is_wider() {
+fn where_the_back_emf_dominates_the_derived_torque_follows_as_well() {
     let qsh = qsh4218();
     let brake = Windings {
         inductance: 0.2e-3,
         ..qsh
     };
-    for (name, w, most, ratio) in [
-        ("QSH4218-47-28-040", qsh, 0.10, 1.13),
-        ("0.2 mH, braking", brake, 0.24, 2.2),
-    ] {
-        let (mut worst, mut worst_ratio) = (0.0f64, 1.0f64);
+    for (name, w) in [("QSH4218-47-28-040", qsh), ("0.2 mH, braking", brake)] {
+        let mut worst = 0.0f64;
         for k in 1..=20 {
             let full_steps = 1000.0 * k as f64;
             let (derived, chopped, off) = compare(name, &w, full_steps);
             assert!(
-                (-0.015..most).contains(&off),
+                (-0.005..0.01).contains(&off),
                 "{name} at {full_steps} full steps/s: derived {derived} N·m, chopped {chopped} N·m"
             );
-            if chopped > 0.05 * w.holding_torque {
-                worst_ratio = worst_ratio.max(derived / chopped);
-            }
             if derived == 0.0 {
-                assert!(chopped < 0.015 * w.holding_torque, "{name} at {full_steps}");
+                assert!(chopped < 0.005 * w.holding_torque, "{name} at {full_steps}");
             }
-            worst = worst.max(off);
+            worst = worst.max(off.abs());
         }
         println!(
-            "{name}: at most {:+.1} % of the holding torque above, {:.2} times the \
-             chopped torque where it is above 5 % of holding",
-            worst * 100.0,
-            worst_ratio
+            "{name}: at most {:.1} % of the holding torque apart",
+            worst * 100.0
         );
-        assert!(worst_ratio < ratio, "{name}: {worst_ratio}");
     }
-    // The braking winding gives nothing from 16 000 full steps/s on.
-    assert!(brake.pull_out(50.0, omega(15_000.0)) > 0.05);
-    for full_steps in [16_000.0, 20_000.0, 40_000.0, 1e6] {
+    // The braking winding gives nothing from 17 000 full steps/s on.
+    assert!(brake.pull_out(50.0, omega(16_000.0)) > 0.004);
+    for full_steps in [17_000.0, 20_000.0, 40_000.0, 1e6] {
         assert_eq!(brake.pull_out(50.0, omega(full_steps)), 0.0);
+    }
+}
+
+/// StepperOnline's 23HE45-4204S (the 23HS45-4204S body with an encoder;
+/// StepperOnline lists 1.8°, 3.0 N·m at 4.2 A, 0.9 Ω ± 10 %, 3.8 mH ± 20 %)
+/// driven at `current` (RMS) from 36 V: the holding torque scales with the
+/// current.
+fn stepperonline_23he45(current: f64) -> Windings {
+    Windings {
+        resistance: 0.9,
+        inductance: 3.8e-3,
+        rated_current: current,
+        holding_torque: 3.0 * current / 4.2,
+        supply_voltage: 36.0,
+        detent_torque: 0.0,
+    }
+}
+
+/// A real motor's published pull-out chart against the derived torque.
+/// StepperOnline's chart "23HE45-4204S_Torque_Curve.pdf" (36 V, a DM556T
+/// driver at 4.1 A and at 3.1 A, 2000 microsteps per turn) is an image; its
+/// points here are those read from it in "Investigación: motor + driver
+/// para el módulo Omni", contrerassma-eng/3d-generator,
+/// projects/CONVEYONE-OMNI-ZPA/out/analisis/research_motores_drivers.md
+/// (commit 9a216907), Table 2a-1, which gives them as readings within
+/// ±5 %. At 300 rpm the drive still holds the current (3.1 A) or has only
+/// just lost it (4.1 A): there the derived torque is within 20 % of the
+/// chart. Above, the chart falls faster than the windings allow: what the
+/// motor loses there (iron losses rising with the frequency, the driver's
+/// own current control) is outside the model, and the derived torque is an
+/// upper bound, 25 % to 45 % above.
+#[test]
+fn the_23he45_against_its_published_chart() {
+    // (current in A, rpm, published N·m)
+    let chart = [
+        (4.1, 300.0, 2.40),
+        (4.1, 390.0, 2.01),
+        (4.1, 510.0, 1.63),
+        (4.1, 600.0, 1.30),
+        (3.1, 300.0, 2.15),
+        (3.1, 600.0, 1.31),
+    ];
+    for (current, rpm, published) in chart {
+        let w = stepperonline_23he45(current);
+        let omega = rpm / 60.0 * TAU;
+        let derived = w.pull_out(50.0, omega);
+        let chopped = chopped_pull_out(&w, 50.0, omega);
+        let off = derived / published - 1.0;
+        println!(
+            "23HE45-4204S, {current} A, 36 V, {rpm} rpm: derived {derived:.3} N·m, \
+             chopped {chopped:.3} N·m, chart {published} N·m ({:+.1} %)",
+            off * 100.0
+        );
+        // The derived torque is what the chopped phases give.
+        assert!((derived - chopped).abs() < 0.005 * w.holding_torque);
+        if rpm == 300.0 {
+            assert!(off.abs() < 0.20, "{current} A at {rpm} rpm: {off}");
+        } else {
+            assert!(
+                (0.20..0.45).contains(&off),
+                "{current} A at {rpm} rpm: {off}"
+            );
+        }
     }
 }

@@ -25,6 +25,7 @@
 //! torque in N·m, damping in N·m·s/rad, frequencies in Hz of the table's
 //! steps (microsteps when `microsteps > 1`).
 
+mod chopper;
 pub mod simulate;
 mod start;
 mod windings;
