@@ -723,9 +723,17 @@ len = 100
         panic!("a compressed table");
     };
     assert!(micro.figures.steps > 7000 && micro.figures.max_edge_error_ticks <= 1.0);
+    // A storage word the player's pointers must carry as well: `volatile`
+    // stands in for a named address space (`__flash`, `__code`), which gcc
+    // on the host lacks; a pointer without it is an error under `-Werror`.
+    let storage = CStyle {
+        storage: Some("volatile".into()),
+        attribute: None,
+    };
     for (dir, layout) in [
         ("runs_single", Layout::Single),
         ("runs_split", Layout::Split(CStyle::default())),
+        ("runs_storage", Layout::Split(storage)),
     ] {
         let printed = check_header(&profiles, dir, &layout);
         assert_eq!(
@@ -767,5 +775,54 @@ compress = 1
             let printed = check_header(&profiles, dir, &layout);
             assert_eq!(printed["ramp"]["steps"], Figure::Int(300));
         }
+    }
+}
+
+/// Tables in avr-libc's program memory (`PROGMEM`) cannot be read by a
+/// plain load: the header brings `PROGMEM` in and the run player reads with
+/// `pgm_read_word`, unless the user defines `STEPPER_RUNS_READ` first.
+#[test]
+fn progmem_tables_are_read_from_program_memory() {
+    let source = "[profiles.ramp]\ncurve = \"linear\"\nfmin = 500\nfmax = 5000\n\
+                  len = 100\ntimer_hz = 1_000_000\ncompress = 1\n";
+    let profiles = Profiles::parse("ramps.toml", source).unwrap_or_else(|e| panic!("{e}"));
+    let style = CStyle {
+        storage: None,
+        attribute: Some("PROGMEM".into()),
+    };
+    let files = profiles.c_split("ramps.h", &style);
+    assert!(
+        files
+            .header
+            .contains("#include <stdint.h>\n\n#include <avr/pgmspace.h>\n"),
+        "{}",
+        files.header
+    );
+    assert!(
+        files.header.contains(
+            "#ifndef STEPPER_RUNS_READ\n#define STEPPER_RUNS_READ(p) pgm_read_word(p)\n#endif\n"
+        ),
+        "{}",
+        files.header
+    );
+    assert!(
+        files
+            .source
+            .contains("const uint16_t RAMP_RUNS[15][5] PROGMEM = {"),
+        "{}",
+        files.source
+    );
+    // Elsewhere, a plain load; `PROGMEM` only as a word of its own.
+    for attribute in ["__attribute__((section(\".ramps\")))", "NOT_PROGMEM_AT_ALL"] {
+        let style = CStyle {
+            storage: None,
+            attribute: Some(attribute.into()),
+        };
+        let header = profiles.c_split("ramps.h", &style).header;
+        assert!(!header.contains("pgmspace"), "{header}");
+        assert!(
+            header.contains("#define STEPPER_RUNS_READ(p) (*(p))\n"),
+            "{header}"
+        );
     }
 }

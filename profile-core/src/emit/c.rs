@@ -18,7 +18,10 @@ use crate::table::owned::Generated;
 /// Where the tables go: text placed around every array, so that it lands in
 /// the memory the target reads constants from.
 ///
-/// Both are written as given, in the declarations and the definitions.
+/// Both are written as given, in the declarations and the definitions. The
+/// run player's pointers carry the storage word too; with `PROGMEM` in the
+/// attribute the header includes `<avr/pgmspace.h>` and the run player
+/// reads with `pgm_read_word`.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct CStyle {
     /// Before the element type: `__code` (SDCC, 8051 code memory),
@@ -99,18 +102,43 @@ impl Names<'_> {
     }
 }
 
-/// The run player's type and functions, declared.
-fn runs_api(prefix: &str) -> String {
+/// Whether the tables go to avr-libc's program memory (`PROGMEM`), which
+/// plain loads cannot read: the header then includes `<avr/pgmspace.h>`
+/// and the run player reads with `pgm_read_word`.
+fn progmem(style: &CStyle) -> bool {
+    style.attribute.as_deref().is_some_and(|a| {
+        a.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+            .any(|word| word == "PROGMEM")
+    })
+}
+
+/// The storage word with a space after it, or nothing.
+fn storage_word(style: &CStyle) -> String {
+    style
+        .storage
+        .as_deref()
+        .map_or(String::new(), |s| format!("{} ", s.trim()))
+}
+
+/// The run player's type and functions, declared: its pointers carry the
+/// tables' storage word, so that they point where the tables are.
+fn runs_api(prefix: &str, style: &CStyle) -> String {
+    let storage = storage_word(style);
+    let read = if progmem(style) {
+        "pgm_read_word(p)"
+    } else {
+        "(*(p))"
+    };
     format!(
         "/* Reads one word of a run table. Define it before including this file\n \
-         * for tables in program memory (avr-libc: pgm_read_word(p)). */\n\
+         * for tables another way must read. */\n\
          #ifndef STEPPER_RUNS_READ\n\
-         #define STEPPER_RUNS_READ(p) (*(p))\n\
+         #define STEPPER_RUNS_READ(p) {read}\n\
          #endif\n\n\
          /* Plays a compressed ramp (a NAME_RUNS table), one period per call, with\n \
          * integer additions and shifts only: no division, no floating point. */\n\
          typedef struct {{\n    \
-         const uint16_t *next; /* the next run's five words */\n    \
+         const {storage}uint16_t *next; /* the next run's five words */\n    \
          uint16_t runs_left;   /* runs not started yet */\n    \
          uint16_t left;        /* steps left in this run */\n    \
          uint32_t interval;    /* the next period, 16.16 fixed point */\n    \
@@ -118,16 +146,17 @@ fn runs_api(prefix: &str) -> String {
          uint32_t frac;        /* the edges' sub-tick remainder */\n\
          }} {prefix}_runs_t;\n\n\
          /* Starts playing `count` runs from `runs` (NAME_RUNS, NAME_RUN_COUNT). */\n\
-         void {prefix}_runs_start({prefix}_runs_t *p, const uint16_t (*runs)[5], uint16_t count);\n\
+         void {prefix}_runs_start({prefix}_runs_t *p, const {storage}uint16_t (*runs)[5], uint16_t count);\n\
          /* The next period, in ticks; 0 once every step has been played. */\n\
          uint16_t {prefix}_runs_next({prefix}_runs_t *p);\n\n"
     )
 }
 
 /// The run player's definitions: `runs::Expand`, in C89.
-fn runs_player(prefix: &str) -> String {
+fn runs_player(prefix: &str, style: &CStyle) -> String {
+    let storage = storage_word(style);
     format!(
-        "void {prefix}_runs_start({prefix}_runs_t *p, const uint16_t (*runs)[5], uint16_t count)\n\
+        "void {prefix}_runs_start({prefix}_runs_t *p, const {storage}uint16_t (*runs)[5], uint16_t count)\n\
          {{\n    \
          p->next = runs[0];\n    \
          p->runs_left = count;\n    \
@@ -192,7 +221,7 @@ pub fn split(
         .iter()
         .any(|p| matches!(p.table, Generated::Runs(_)))
     {
-        c.push_str(&runs_player(&names.prefix()));
+        c.push_str(&runs_player(&names.prefix(), style));
     }
     for p in profiles {
         let _ = writeln!(c, "/* Profile {}: see {header_name}. */", p.name);
@@ -218,17 +247,20 @@ fn header_of(
         out,
         "#ifndef {guard}\n#define {guard}\n\n#include <stdint.h>\n"
     );
+    if progmem(style) {
+        let _ = writeln!(out, "#include <avr/pgmspace.h>\n");
+    }
     let compressed = profiles
         .iter()
         .any(|p| matches!(p.table, Generated::Runs(_)));
     if compressed {
-        out.push_str(&runs_api(&names.prefix()));
+        out.push_str(&runs_api(&names.prefix(), style));
         if body {
             // One file defines the player: `#define ..._IMPLEMENTATION`
             // before including the header there.
             let implementation = names.implementation();
             let _ = writeln!(out, "#ifdef {implementation}");
-            out.push_str(&runs_player(&names.prefix()));
+            out.push_str(&runs_player(&names.prefix(), style));
             let _ = writeln!(out, "#endif /* {implementation} */\n");
         }
     }
@@ -292,10 +324,7 @@ fn table(out: &mut String, p: &Profile, qualifiers: &str, style: &CStyle, body: 
         Word::U16 => "uint16_t",
         Word::U32 => "uint32_t",
     };
-    let storage = style
-        .storage
-        .as_deref()
-        .map_or(String::new(), |s| format!("{} ", s.trim()));
+    let storage = storage_word(style);
     let attribute = style
         .attribute
         .as_deref()
