@@ -204,3 +204,48 @@ fn a_period_the_per_step_table_refuses_is_refused_before_fitting() {
         "entry 2546 rounds to 0 ticks; the timer resolves step frequencies up to 10000 Hz"
     );
 }
+
+/// However loose the tolerance, no run steps faster than the curve: every
+/// period is at least the curve's shortest, rounded down (156 ticks for
+/// 64 kHz on a 10 MHz timer), as in the per-step table. A tolerance of 1000
+/// ticks once played 123-tick periods (81 kHz), and 10 000 ticks 1-tick
+/// ones; a two-step ramp at the largest tolerance, periods of 1 tick.
+#[test]
+fn no_run_steps_faster_than_the_curve() {
+    let per_step = short_sigmoid().table().unwrap().periods;
+    let fastest = *per_step.iter().min().unwrap();
+    assert_eq!(fastest, 156);
+    for compress in [
+        1.0,
+        100.0,
+        1000.0,
+        10_000.0,
+        profile_core::MAX_COMPRESS_TICKS,
+    ] {
+        let t = short_sigmoid().run_table(compress).unwrap();
+        let shortest = Expand::new(&t.runs).min().unwrap();
+        assert!(
+            shortest >= 156,
+            "compress {compress}: a {shortest}-tick period"
+        );
+        assert!(
+            t.figures.max_edge_error_ticks <= compress,
+            "{:?}",
+            t.figures
+        );
+        assert_eq!(Expand::new(&t.runs).count(), 1000);
+    }
+    let two = Spec::new(
+        Curve::Sigmoid(Sigmoid {
+            fmin: 500.0,
+            fmax: 64_000.0,
+            flexible: 8.0,
+            len: 2,
+        }),
+        timer(10_000_000),
+    );
+    let fastest = *two.table().unwrap().periods.iter().min().unwrap();
+    let t = two.run_table(profile_core::MAX_COMPRESS_TICKS).unwrap();
+    let shortest = Expand::new(&t.runs).min().unwrap();
+    assert!(shortest + 1 >= fastest, "{shortest} against {fastest}");
+}

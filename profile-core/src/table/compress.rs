@@ -1,5 +1,6 @@
 //! Fitting runs to a curve: the compressed layout's table, every pulse edge
-//! within `compress` ticks of the curve's exact edge.
+//! within `compress` ticks of the curve's exact edge, and no period shorter
+//! than the curve's shortest, rounded down.
 //!
 //! A run starting after edge `s` (at fixed-point position `P_s`) puts edge
 //! `s + j` at `P_s + j I + j (j - 1) / 2 A`, linear in the run's `interval`
@@ -188,6 +189,9 @@ struct Fit<'a> {
     /// Edge `k`'s band of fixed-point positions (see [`Fit::band`]), at
     /// index `k`: worked out once, read for every run tried.
     bands: Vec<(i64, i64)>,
+    /// The shortest period a run may play, in ticks: the curve's shortest
+    /// period, rounded down, as the per-step table's shortest is at most.
+    shortest: i64,
 }
 
 /// The longest run fitted. A run's polygon gains a vertex every few
@@ -218,10 +222,22 @@ impl<'a> Fit<'a> {
                 (lo, hi.saturating_sub(1))
             })
             .collect();
+        let mut shortest = f64::INFINITY;
+        let mut before = 0.0;
+        for &t in exact {
+            shortest = shortest.min(t - before);
+            before = t;
+        }
+        let shortest = if shortest.is_finite() {
+            (libm::floor(shortest) as i64).max(1)
+        } else {
+            1
+        };
         Fit {
             exact,
             tolerance,
             bands,
+            shortest,
         }
     }
 
@@ -244,7 +260,7 @@ impl<'a> Fit<'a> {
             }
             let next = pos + step;
             let period = (next >> RUN_FRACTION_BITS) - (pos >> RUN_FRACTION_BITS);
-            if !(1..=u16::MAX as i64).contains(&period) {
+            if !(self.shortest..=u16::MAX as i64).contains(&period) {
                 return None;
             }
             let (lo, hi) = self.band(at.done + j);
@@ -358,7 +374,7 @@ impl<'a> Fit<'a> {
         }
         // Every kept length failed: one step, as near its edge as can be.
         let (lo, hi) = self.band(at.done);
-        let target = (lo + hi) / 2 - at.pos;
+        let target = ((lo + hi) / 2 - at.pos).max(self.shortest << RUN_FRACTION_BITS);
         if let (Some(end), Ok(interval)) = (self.play(at, target, 0, 1), u32::try_from(target)) {
             let run = Run {
                 count: 1,
@@ -412,7 +428,8 @@ impl CheckedSpec {
     }
 
     /// Fits runs to the curve's exact edges, each played edge within
-    /// `tolerance` ticks of its exact time.
+    /// `tolerance` ticks of its exact time, and no period shorter than the
+    /// curve's shortest, rounded down.
     ///
     /// The runs stand for the per-step table of the same spec and hold the
     /// same 16-bit periods: a period that table refuses (longer than the
@@ -481,7 +498,7 @@ pub struct RunTable {
 
 impl Spec {
     /// Checks the spec and fits runs to it, each edge within `tolerance`
-    /// ticks.
+    /// ticks, no period shorter than the curve's shortest, rounded down.
     pub fn run_table(&self, tolerance: f64) -> Result<RunTable, Error> {
         self.check()?.run_table(tolerance)
     }
