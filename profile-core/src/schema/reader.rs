@@ -253,7 +253,8 @@ pub(crate) fn motor<L: Clone>(c: &mut Collector<'_, L>, assumed: &[Key]) -> Opti
             other => {
                 let message = format!(
                     "`torque_curve` expects a list of (step frequency in Hz, torque in N·m) \
-                     points such as `[(0, 0.4), (1000, 0.3)]`, got {}",
+                     points, such as `[(0, 0.4), (1000, 0.3)]` in the macro or \
+                     `[[0, 0.4], [1000, 0.3]]` in a profiles file, got {}",
                     other.quoted()
                 );
                 c.at_arg(i, false, message);
