@@ -101,9 +101,15 @@ pub(crate) fn render(
                 .get(d.loc.clone())
                 .map_or(1, |s| s.lines().next().unwrap_or("").chars().count().max(1));
             let width = width.min(src_line.chars().count().saturating_sub(col - 1).max(1));
+            // Under the line's own tabs a tab, so that the caret stays
+            // under its token however wide a tab is shown.
+            let under: String = src_line
+                .chars()
+                .take(col - 1)
+                .map(|c| if c == '\t' { '\t' } else { ' ' })
+                .collect();
             text.push_str(&format!(
-                "{pad} |\n{number} | {src_line}\n{pad} | {}{}\n",
-                " ".repeat(col - 1),
+                "{pad} |\n{number} | {src_line}\n{pad} | {under}{}\n",
                 "^".repeat(width)
             ));
         }
@@ -114,6 +120,20 @@ pub(crate) fn render(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_caret_keeps_the_lines_tabs() {
+        let src = "[profiles.a]\n\t\tfmx = 64000\n";
+        let start = src.find("fmx").unwrap();
+        let d = Diagnostic {
+            loc: start..start + 3,
+            message: "unknown key".to_string(),
+        };
+        assert_eq!(
+            render("p.toml", src, &[d]).text,
+            "p.toml:2:3: unknown key\n  |\n2 | \t\tfmx = 64000\n  | \t\t^^^\n"
+        );
+    }
 
     #[test]
     fn line_and_column_count_characters() {
