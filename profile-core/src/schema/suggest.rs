@@ -21,8 +21,13 @@ fn distance(a: &str, b: &str) -> usize {
     row[b.len()]
 }
 
-/// The closest of `candidates` to `word`, if close enough to be a typo.
+/// The closest of `candidates` to `word`, if close enough to be a typo: one
+/// that differs only in case first (`KHz` is `kHz`, not `Hz`).
 pub fn suggest<'a>(word: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+    let candidates: Vec<&'a str> = candidates.into_iter().collect();
+    if let Some(same) = candidates.iter().find(|c| c.eq_ignore_ascii_case(word)) {
+        return Some(same);
+    }
     let len = word.chars().count();
     candidates
         .into_iter()
@@ -79,5 +84,13 @@ mod tests {
             "did you mean `[profiles]`? "
         );
         assert_eq!(did_you_mean("speed", ["fmin"], Hint::Before), "");
+    }
+
+    #[test]
+    fn a_word_in_the_wrong_case_is_the_word() {
+        // `Hz` is as near to `KHz` by edits as `kHz` is.
+        assert_eq!(suggest("KHz", ["Hz", "kHz", "MHz"]), Some("kHz"));
+        assert_eq!(suggest("mhz", ["Hz", "kHz", "MHz"]), Some("MHz"));
+        assert_eq!(suggest("FMAX", ["fmin", "fmax"]), Some("fmax"));
     }
 }
