@@ -32,6 +32,17 @@ const KEYWORDS: &[&str] = &[
     "override", "priv", "typeof", "unsized", "virtual", "yield",
 ];
 
+/// Crates a firmware crate that includes the profiles has in scope: a
+/// module named like one of them makes its paths ambiguous (E0659).
+const CRATES: [&str; 6] = [
+    "stepper_profiles",
+    "profile_core",
+    "profile_macros",
+    "core",
+    "std",
+    "alloc",
+];
+
 /// Why `name` cannot be a module name, if it cannot.
 fn bad_name(name: &str) -> Option<String> {
     if name.is_empty() {
@@ -56,6 +67,11 @@ fn bad_name(name: &str) -> Option<String> {
     } else if KEYWORDS.contains(&name) {
         Some(format!(
             "profile name `{name}` is a Rust keyword and cannot name a module"
+        ))
+    } else if CRATES.contains(&name) {
+        Some(format!(
+            "profile name `{name}` is the name of a crate: a module of that name beside it makes \
+             every `{name}::` path ambiguous"
         ))
     } else {
         None
@@ -441,5 +457,8 @@ mod tests {
         assert!(bad_name("e2_fast").is_some());
         assert!(bad_name("exponential").is_none());
         assert!(bad_name("e").is_none());
+        assert!(bad_name("stepper_profiles").is_some());
+        assert!(bad_name("core").is_some());
+        assert!(bad_name("stepper_profiles_fast").is_none());
     }
 }
