@@ -20,7 +20,8 @@ pub enum Error {
         /// Its value.
         value: f64,
     },
-    /// A number that must be positive is zero or negative.
+    /// A number that must be positive is zero or negative, or so small a
+    /// float holds it only without its precision (subnormal).
     NotPositive {
         /// The parameter.
         key: Key,
@@ -319,6 +320,12 @@ impl fmt::Display for Error {
             Error::NotFinite { key, value } => {
                 write!(f, "`{key}` must be a finite number (got {})", Num(value))
             }
+            Error::NotPositive { key, value } if value > 0.0 => write!(
+                f,
+                "`{key}` must be at least 2.2250738585072014e-308, the smallest normal float \
+                 (got {})",
+                Num(value)
+            ),
             Error::NotPositive { key, value } => {
                 write!(f, "`{key}` must be greater than 0 (got {})", Num(value))
             }

@@ -29,6 +29,14 @@ fn examples() -> Vec<(Error, &'static str)> {
             "`fmin` must be greater than 0 (got -500)"
         ),
         (
+            Error::NotPositive {
+                key: Key::FLEXIBLE,
+                value: 1e-308
+            },
+            "`flexible` must be at least 2.2250738585072014e-308, the smallest normal float \
+             (got 1e-308)"
+        ),
+        (
             Error::TooLarge {
                 key: Key::FLEXIBLE,
                 value: 501.0,

@@ -12,9 +12,11 @@ pub(crate) fn finite(key: Key, value: f64) -> Result<(), Error> {
     }
 }
 
+/// Greater than 0 and a normal float: a subnormal one (below 2.2e-308)
+/// has lost its precision, and the curves' arithmetic with it.
 pub(crate) fn positive(key: Key, value: f64) -> Result<(), Error> {
     finite(key, value)?;
-    if value <= 0.0 {
+    if value < f64::MIN_POSITIVE {
         Err(Error::NotPositive { key, value })
     } else {
         Ok(())

@@ -38,7 +38,7 @@ pub struct Linear {
 impl Linear {
     /// Steps from `fmin` to `fmax` at acceleration `a`: `(fmax² - fmin²) / (2a)`.
     fn steps_at(&self, accel: f64) -> f64 {
-        (self.fmax - self.fmin) * (self.fmax + self.fmin) / (2.0 * accel)
+        (self.fmax - self.fmin) * (self.fmax + self.fmin) / accel / 2.0
     }
 
     /// The acceleration in Hz/s: given, or `(fmax² - fmin²) / (2 steps)` where

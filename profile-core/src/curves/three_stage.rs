@@ -107,7 +107,13 @@ impl ThreeStageInTime {
 
     /// Steps until `fmax`.
     pub(crate) fn ramp_steps(&self) -> f64 {
-        self.nc
+        // A ramp that never ends (an acceleration so small the time to
+        // `fmax` is not a float) has no count: as long as a float counts.
+        if self.tc.is_finite() {
+            self.nc
+        } else {
+            f64::INFINITY
+        }
     }
 
     /// Acceleration `df/dt` at `t`, in Hz/s.
