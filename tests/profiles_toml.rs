@@ -17,6 +17,11 @@ use profile_core::{
 
 stepper_profiles::include_profiles!("profiles.toml");
 
+/// The same file with a trailing comma, as `include_str!` takes one.
+mod with_comma {
+    stepper_profiles::include_profiles!("profiles.toml",);
+}
+
 fn manifest_path() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("profiles.toml")
 }
@@ -292,6 +297,12 @@ fn every_profile_three_ways() {
         checked.len()
     );
     assert_eq!(in_file, checked, "profiles in file order");
+}
+
+#[test]
+fn a_trailing_comma_reads_the_same_file() {
+    assert_eq!(with_comma::sigmoid_orange::PERIODS, sigmoid_orange::PERIODS);
+    assert_eq!(with_comma::exponential::PERIODS, exponential::PERIODS);
 }
 
 #[test]

@@ -14,8 +14,21 @@ pub(crate) fn include_profiles(input: TokenStream) -> TokenStream {
     }
 }
 
+/// The path, with a trailing comma allowed as `include_str!` allows it.
+struct PathArg(LitStr);
+
+impl syn::parse::Parse for PathArg {
+    fn parse(input: syn::parse::ParseStream) -> syn::Result<Self> {
+        let lit = input.parse()?;
+        if input.peek(syn::Token![,]) {
+            input.parse::<syn::Token![,]>()?;
+        }
+        Ok(PathArg(lit))
+    }
+}
+
 fn try_include(input: TokenStream) -> syn::Result<TokenStream> {
-    let lit: LitStr = syn::parse2(input).map_err(|e| {
+    let PathArg(lit) = syn::parse2(input).map_err(|e| {
         syn::Error::new(
             e.span(),
             "expected the path of a profiles file, relative to the crate's Cargo.toml: \
