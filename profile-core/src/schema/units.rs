@@ -154,8 +154,11 @@ pub fn split(text: &str) -> Option<(&str, &str)> {
         let sign_ok = i == 0 || (seen_e && matches!(bytes[i - 1], b'e' | b'E'));
         match b {
             b'0'..=b'9' => seen_digit = true,
-            // A digit separator, as in Rust and TOML literals: `64_000 Hz`.
-            b'_' if i > 0 && bytes[i - 1].is_ascii_digit() => {}
+            // A digit separator between two digits, as in TOML's numbers:
+            // `64_000 Hz`, not `64__000` nor `64000_`.
+            b'_' if i > 0
+                && bytes[i - 1].is_ascii_digit()
+                && bytes.get(i + 1).is_some_and(u8::is_ascii_digit) => {}
             b'.' if !seen_e => {}
             b'+' | b'-' if sign_ok => {}
             // An exponent only when a digit follows it, so `5 e` is not one.
@@ -332,6 +335,10 @@ mod tests {
         assert_eq!(split("kHz"), None);
         assert_eq!(split("8 000"), None);
         assert_eq!(split("5 k Hz"), None);
+        assert_eq!(split("64_000 Hz"), Some(("64_000", "Hz")));
+        assert_eq!(split("1_000_000Hz"), Some(("1_000_000", "Hz")));
+        assert_eq!(split("64__000 Hz"), None);
+        assert_eq!(split("64000_ Hz"), None);
     }
 
     #[test]
