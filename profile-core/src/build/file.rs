@@ -282,6 +282,18 @@ pub(crate) fn read(source: &str) -> Result<FileArgs, Diagnostic<Range<usize>>> {
             Err(d) => file.diagnostics.push(d),
         }
     }
+    // A default no profile takes is still read: a mistake in it is one.
+    let taken: Vec<&Range<usize>> = file
+        .profiles
+        .iter()
+        .flat_map(|p| p.args.iter().map(|a| &a.key_loc))
+        .collect();
+    let nowhere = usize::MAX..usize::MAX;
+    for d in &defaults {
+        if !taken.contains(&&d.key_loc) {
+            file.diagnostics.extend(schema::value_problems(d, &nowhere));
+        }
+    }
     Ok(file)
 }
 

@@ -22,6 +22,7 @@ mod suggest;
 pub mod units;
 
 pub use describe::{describe, locate, locate_motor};
+pub(crate) use read::value_problems;
 pub use read::{Request, read};
 pub use suggest::{Hint, did_you_mean, suggest};
 

@@ -97,6 +97,41 @@ pub fn read<L: Clone>(
     })
 }
 
+/// What is wrong with one argument's value on its own (its kind, its unit,
+/// a name it does not take), as any profile that took it would say: for a
+/// `[defaults]` key no profile takes. `nowhere` locates nothing of the
+/// input; what is said there (the keys the argument alone lacks) is left
+/// out.
+pub(crate) fn value_problems<L: Clone + PartialEq>(
+    arg: &Arg<L>,
+    nowhere: &L,
+) -> Vec<Diagnostic<L>> {
+    let Some(key) = Key::from_name(&arg.key) else {
+        return Vec::new();
+    };
+    let mut args = Vec::from([arg.clone()]);
+    if key != Key::CURVE {
+        // A curve that takes the key, so that it is read as a profile would.
+        let Some(curve) = curve_names().find(|c| keys_for(c).contains(&key)) else {
+            return Vec::new();
+        };
+        args.push(Arg {
+            key: Key::CURVE.name().to_string(),
+            key_loc: nowhere.clone(),
+            value: Value::Name(curve.to_string()),
+            value_loc: nowhere.clone(),
+        });
+    }
+    let every: Vec<Key> = Key::all().collect();
+    match read(&args, nowhere, &every) {
+        Ok(_) => Vec::new(),
+        Err(found) => found
+            .into_iter()
+            .filter(|d| d.loc == arg.key_loc || d.loc == arg.value_loc)
+            .collect(),
+    }
+}
+
 /// The curve the arguments name, so that its keys are known.
 fn curve<L: Clone>(c: &mut Collector<'_, L>) -> Option<&'static Room> {
     let names = curve_names();
