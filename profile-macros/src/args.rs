@@ -87,7 +87,15 @@ fn parse_value(input: ParseStream, key: &Ident) -> syn::Result<(Value, Loc)> {
     if !suffix.is_empty() {
         return Ok((quantity(number, &suffix, written), loc));
     }
-    // A unit after a space, `64 kHz`, reads as `64kHz`.
+    // A unit after a space, `64 kHz`, reads as `64kHz`; a name followed by
+    // `=` is the next key, its comma forgotten.
+    if input.peek(Ident) && input.peek2(Token![=]) {
+        let next: Ident = input.fork().parse()?;
+        return Err(syn::Error::new(
+            next.span(),
+            format!("expected `,` between the value of `{key}` and the next key, `{next}`"),
+        ));
+    }
     if input.peek(Ident) {
         let unit: Ident = input.parse()?;
         unit.to_tokens(&mut loc);
@@ -282,6 +290,10 @@ mod tests {
                 "len = 5 6",
                 "expected `,` after the value of `len`: a value is one literal or name, \
                  expressions are not evaluated",
+            ),
+            (
+                "len = 1000 fmin = 500",
+                "expected `,` between the value of `len` and the next key, `fmin`",
             ),
             (
                 "len = 100 + 100",
