@@ -47,11 +47,12 @@ pub(super) struct Phase {
 /// narrow as an angle's resolution.
 const ROOT_STEPS: u32 = 80;
 
-/// Leads scanned over `(0, π)` before the golden-section search, and that
-/// search's steps: the lead is found within `π/6 · 0.618^30`, 3e-7 rad,
+/// Leads scanned over `(0, π)` before Brent's search around the best of
+/// them; that search's steps at most, and the lead's tolerance: 1e-7 rad,
 /// where the torque is flat to 1e-13 of itself.
 const LEADS: u32 = 12;
-const GOLDEN_STEPS: u32 = 30;
+const BRENT_STEPS: u32 = 60;
+const LEAD_TOLERANCE: f64 = 1e-7;
 
 /// Below this reactance over resistance the winding is taken as a resistor
 /// (the speed as 0): the current lags the voltage by less than 1e-9 rad.
@@ -80,24 +81,8 @@ impl Phase {
                 best = (lead, q);
             }
         }
-        let g = 0.5 * (libm::sqrt(5.0) - 1.0);
-        let (mut lo, mut hi) = (best.0 - step, best.0 + step);
-        let (mut a, mut b) = (hi - g * (hi - lo), lo + g * (hi - lo));
-        let (mut fa, mut fb) = (f(a), f(b));
-        for _ in 0..GOLDEN_STEPS {
-            if fa < fb {
-                lo = a;
-                (a, fa) = (b, fb);
-                b = lo + g * (hi - lo);
-                fb = f(b);
-            } else {
-                hi = b;
-                (b, fb) = (a, fa);
-                a = hi - g * (hi - lo);
-                fa = f(a);
-            }
-        }
-        best.1.max(fa).max(fb)
+        let (_, q) = brent_max(&f, best.0 - step, best, best.0 + step);
+        q.max(best.1)
     }
 
     /// The voltage that holds the reference, `u(θ) = P cos θ + Q sin θ`:
@@ -302,4 +287,76 @@ fn root(f: &impl Fn(f64) -> (f64, f64), mut lo: f64, mut hi: f64) -> f64 {
         t = next;
     }
     t
+}
+
+/// The largest value of `f` on `[lo, hi]`, started from `best` (a point
+/// inside and its value): Brent's method, a parabola through the three best
+/// points where it falls inside the bracket and shrinks it, a golden-section
+/// step where not.
+fn brent_max(f: &impl Fn(f64) -> f64, mut lo: f64, best: (f64, f64), mut hi: f64) -> (f64, f64) {
+    let golden = 0.5 * (3.0 - libm::sqrt(5.0));
+    // The best point, the second best and the one before; values negated
+    // so that the search minimises.
+    let (mut x, mut fx) = (best.0, -best.1);
+    let (mut w, mut fw, mut v, mut fv) = (x, fx, x, fx);
+    let (mut d, mut e) = (0.0f64, 0.0f64);
+    for _ in 0..BRENT_STEPS {
+        let mid = 0.5 * (lo + hi);
+        let tol = LEAD_TOLERANCE;
+        if libm::fabs(x - mid) <= 2.0 * tol - 0.5 * (hi - lo) {
+            break;
+        }
+        let mut parabolic = false;
+        if libm::fabs(e) > tol {
+            let r = (x - w) * (fx - fv);
+            let q = (x - v) * (fx - fw);
+            let mut p = (x - v) * q - (x - w) * r;
+            let mut q = 2.0 * (q - r);
+            if q > 0.0 {
+                p = -p;
+            }
+            q = libm::fabs(q);
+            if libm::fabs(p) < libm::fabs(0.5 * q * e) && p > q * (lo - x) && p < q * (hi - x) {
+                e = d;
+                d = p / q;
+                let u = x + d;
+                if u - lo < 2.0 * tol || hi - u < 2.0 * tol {
+                    d = if x < mid { tol } else { -tol };
+                }
+                parabolic = true;
+            }
+        }
+        if !parabolic {
+            e = if x < mid { hi - x } else { lo - x };
+            d = golden * e;
+        }
+        let u = if libm::fabs(d) >= tol {
+            x + d
+        } else if d > 0.0 {
+            x + tol
+        } else {
+            x - tol
+        };
+        let fu = -f(u);
+        if fu <= fx {
+            if u < x {
+                hi = x;
+            } else {
+                lo = x;
+            }
+            (v, fv, w, fw, x, fx) = (w, fw, x, fx, u, fu);
+        } else {
+            if u < x {
+                lo = u;
+            } else {
+                hi = u;
+            }
+            if fu <= fw || w == x {
+                (v, fv, w, fw) = (w, fw, u, fu);
+            } else if fu <= fv || v == x || v == w {
+                (v, fv) = (u, fu);
+            }
+        }
+    }
+    (x, -fx)
 }
