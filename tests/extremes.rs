@@ -88,3 +88,59 @@ fn a_subnormal_flexible_is_refused_at_its_key() {
     );
     assert_eq!(spec(3e-308).table().unwrap().periods.len(), 3);
 }
+
+fn near_asymptote(
+    f_inf: f64,
+    extent: profile_core::ExponentialExtent,
+) -> profile_core::Exponential {
+    profile_core::Exponential {
+        fmin: 500.0,
+        fmax: 10_000.0,
+        f_inf,
+        extent,
+    }
+}
+
+/// An asymptote a hair above `fmax`: the rise time still takes the ramp to
+/// `fmax`, checked through the inverse function (the gap left to the
+/// asymptote at the rise, `(f_inf - fmin) e^(-t/tau)`, is `f_inf - fmax`),
+/// and a ramp of given `tau` has the steps the frequency's integral counts
+/// (Simpson's rule over the rise). `1 - q` once lost the gap: the next
+/// float above 10 000 Hz gave an edge 114 ticks off, 5 steps short.
+#[test]
+fn an_asymptote_just_above_fmax_keeps_its_gap() {
+    use profile_core::ExponentialExtent;
+    let next_up = f64::from_bits(10_000f64.to_bits() + 1);
+    for f_inf in [10_000.001, 10_000.000_000_1, 10_000.000_000_001, next_up] {
+        let e = near_asymptote(f_inf, ExponentialExtent::Len(1000));
+        let (tau, rise) = (e.tau(), e.rise_time());
+        let gap = (f_inf - 500.0) * (-rise / tau).exp();
+        assert!(
+            (gap / (f_inf - 10_000.0) - 1.0).abs() < 1e-9,
+            "{f_inf}: gap {gap} against {}",
+            f_inf - 10_000.0
+        );
+        let e = near_asymptote(f_inf, ExponentialExtent::Tau(0.003));
+        let (tau, rise) = (e.tau(), e.rise_time());
+        let f = |t: f64| 500.0 - (f_inf - 500.0) * (-t / tau).exp_m1();
+        let n = 200_000;
+        let h = rise / n as f64;
+        let simpson = (0..=n)
+            .map(|k| {
+                let w = if k == 0 || k == n {
+                    1.0
+                } else if k % 2 == 1 {
+                    4.0
+                } else {
+                    2.0
+                };
+                w * f(k as f64 * h)
+            })
+            .sum::<f64>()
+            * h
+            / 3.0;
+        let spec = Spec::new(Curve::Exponential(e), Timer::new(10_000_000));
+        let len = spec.table().unwrap().periods.len();
+        assert_eq!(len as f64, simpson.ceil(), "{f_inf}: {simpson} steps");
+    }
+}

@@ -228,8 +228,15 @@ pub enum Extent {
 /// Seed 001: `f(t) = fmin + (f_inf - fmin)(1 - e^(-t/tau))`, up to `fmax`.
 pub fn exponential(fmin: f64, fmax: f64, f_inf: f64, extent: Extent) -> Model {
     let span = f_inf - fmin;
-    // f reaches fmax where 1 - e^-x = (fmax - fmin) / span.
-    let rise = -(-(fmax - fmin) / span).ln_1p();
+    // f reaches fmax where 1 - e^-x = q = (fmax - fmin) / span, that is
+    // x = ln(span / (f_inf - fmax)): from `ln(1 - q)` while `q` is small,
+    // from the ratio near the asymptote, where `1 - q` has lost the gap.
+    let q = (fmax - fmin) / span;
+    let rise = if q < 0.5 {
+        -(-q).ln_1p()
+    } else {
+        (span / (f_inf - fmax)).ln()
+    };
     let tau = match extent {
         Extent::Given(tau) => tau,
         Extent::Len(len) => {

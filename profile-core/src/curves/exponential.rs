@@ -44,9 +44,17 @@ impl Exponential {
         (self.fmax - self.fmin) / (self.f_inf - self.fmin)
     }
 
-    /// `ln((f_inf - fmin) / (f_inf - fmax)) = -ln(1 - q)`: rise time in units of `tau`.
+    /// `ln((f_inf - fmin) / (f_inf - fmax)) = -ln(1 - q)`: rise time in units
+    /// of `tau`. Near the asymptote (`q` from 1/2 on) from the ratio itself:
+    /// `f_inf - fmax` is exact there, where `1 - q` has lost the digits that
+    /// the gap between `fmax` and `f_inf` holds.
     fn rise_in_tau(&self) -> f64 {
-        -libm::log1p(-self.reach())
+        let q = self.reach();
+        if q < 0.5 {
+            -libm::log1p(-q)
+        } else {
+            libm::log((self.f_inf - self.fmin) / (self.f_inf - self.fmax))
+        }
     }
 
     /// Steps until `fmax` per second of `tau`:
@@ -55,7 +63,13 @@ impl Exponential {
     /// a distant asymptote (`q` small) `(u - q)/q` is summed as a series.
     fn steps_per_tau(&self) -> f64 {
         let q = self.reach();
-        self.fmin * self.rise_in_tau() + (self.fmax - self.fmin) * crate::base::math::log_excess_ratio(q)
+        let u = self.rise_in_tau();
+        let excess = if q < 0.5 {
+            crate::base::math::log_excess_ratio(q)
+        } else {
+            (u - q) / q
+        };
+        self.fmin * u + (self.fmax - self.fmin) * excess
     }
 
     /// The time constant, in s: given, or solved so that `fmax` is reached at
