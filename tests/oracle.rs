@@ -1,7 +1,8 @@
 //! Every table against an oracle that shares no code with production.
 //!
 //! Random valid profiles of every curve, extreme ones included (an
-//! exponential's asymptote up to 1e12 times `fmax`, a sigmoid's `flexible`
+//! exponential's asymptote from 1e-15 to 1e12 times `fmax` above it, a
+//! three-stage `shape` within 1e-15 of its bound, a sigmoid's `flexible`
 //! from 0.01 to 50, tables up to `MAX_LEN` entries, u16 and u32 words, one
 //! or two reloads per step), are generated with `profile-core` and checked
 //! against `common::oracle`, which integrates each curve's frequency
@@ -128,12 +129,18 @@ fn random_sigmoid(rng: &mut Lcg) -> Spec {
 
 fn random_exponential(rng: &mut Lcg) -> Spec {
     let (timer, fmin, fmax) = timer_and_range(rng, 1e4);
-    let f_inf = fmax * (1.0 + rng.log_uniform(1e-6, 1e12));
+    // Now and then an asymptote within 1e-15 to 1e-6 of `fmax`.
+    let gap = if rng.next_unit() < 0.9 {
+        rng.log_uniform(1e-6, 1e12)
+    } else {
+        rng.log_uniform(1e-15, 1e-6)
+    };
+    let f_inf = fmax * (1.0 + gap);
     let extent = if rng.next_unit() < 0.5 {
         ExponentialExtent::Len(len(rng))
     } else {
         // A time constant that makes the ramp about `steps` long.
-        let rise = -(-(fmax - fmin) / (f_inf - fmin)).ln_1p();
+        let rise = ((f_inf - fmin) / (f_inf - fmax)).ln();
         ExponentialExtent::Tau(steps(rng) / ((fmin + fmax) / 2.0) / rise)
     };
     let curve = Curve::Exponential(Exponential {
@@ -171,10 +178,12 @@ fn random_three_stage(rng: &mut Lcg) -> Spec {
     let accel = (fmax - fmin) * (fmax + fmin) / steps(rng);
     // |shape| relative to the bound accel / (f1 - fmin) of a concave start.
     let bound = accel / (f1 - fmin);
-    let shape = if rng.next_unit() < 0.5 {
-        bound * rng.log_uniform(1e-12, 1e3)
-    } else {
-        -bound * rng.log_uniform(1e-12, 0.999)
+    let shape = match rng.next_unit() {
+        u if u < 0.5 => bound * rng.log_uniform(1e-12, 1e3),
+        u if u < 0.9 => -bound * rng.log_uniform(1e-12, 0.999),
+        // Within 1e-15 to 1e-3 of the bound, where the start's acceleration
+        // is all but cancelled.
+        _ => -bound * (1.0 - rng.log_uniform(1e-15, 1e-3)),
     };
     let curve = Curve::ThreeStage(ThreeStage {
         fmin,

@@ -274,9 +274,18 @@ pub fn linear(fmin: f64, fmax: f64, extent: Extent) -> Model {
 /// Zeng, Hu and Hu's three stages (seed 002, equation (5)), value and slope
 /// continuous at both joints: `f0 + C (1 - e^(-B t))`, `a t + d`,
 /// `fc - b (t - tc)²`.
+///
+/// The acceleration at the start, `B C = a + B (f1 - f0)`, vanishes as `B`
+/// nears `-a / (f1 - f0)`; it is summed here in integers (`exact_sum`), and
+/// `C` and `t1` follow from it.
 pub fn three_stage(f0: f64, fc: f64, a: f64, f1: f64, f2: f64, shape: f64) -> Model {
-    let c = f1 - f0 + a / shape;
-    let t1 = (shape * (f1 - f0) / a).ln_1p() / shape;
+    let start = exact_sum(a, shape, f1, f0).unwrap_or(a + shape * (f1 - f0));
+    let c = start / shape;
+    let t1 = if start < 0.5 * a {
+        (start / a).ln() / shape
+    } else {
+        (shape * (f1 - f0) / a).ln_1p() / shape
+    };
     let d = f1 - a * t1;
     let t2 = t1 + (f2 - f1) / a;
     let b = a * a / (4.0 * (fc - f2));
@@ -295,6 +304,53 @@ pub fn three_stage(f0: f64, fc: f64, a: f64, f1: f64, f2: f64, shape: f64) -> Mo
         tc,
         fc,
     )
+}
+
+/// `x = m 2^e` with an integer `m`.
+fn integer_and_exponent(x: f64) -> (i128, i32) {
+    let bits = x.to_bits();
+    let exponent = ((bits >> 52) & 0x7ff) as i32;
+    let fraction = (bits & ((1 << 52) - 1)) as i128;
+    let (m, e) = if exponent == 0 {
+        (fraction, -1074)
+    } else {
+        (fraction | (1 << 52), exponent - 1075)
+    };
+    (if x < 0.0 { -m } else { m }, e)
+}
+
+/// `m 2^e` for integers `m` and `e`, on the common scale `2^e` of `terms`:
+/// `None` where a term would not fit 120 bits.
+fn on_common_scale(terms: &[(i128, i32)]) -> Option<(Vec<i128>, i32)> {
+    let e = terms.iter().map(|t| t.1).min()?;
+    let scaled = terms
+        .iter()
+        .map(|&(m, k)| {
+            let shift = u32::try_from(k - e).ok()?;
+            let bits = 128 - m.unsigned_abs().leading_zeros();
+            (bits + shift <= 120).then(|| m << shift)
+        })
+        .collect::<Option<Vec<_>>>()?;
+    Some((scaled, e))
+}
+
+/// `a + b (x - y)`, computed exactly in integers and rounded once; `None`
+/// where the operands' exponents are too far apart for 128 bits (then no
+/// term is near enough to another to cancel, and floats do).
+pub fn exact_sum(a: f64, b: f64, x: f64, y: f64) -> Option<f64> {
+    let (diff, e_d) = on_common_scale(&[integer_and_exponent(x), integer_and_exponent(y)])?;
+    let d = diff[0] - diff[1];
+    let (mb, e_b) = integer_and_exponent(b);
+    let d_bits = 128 - d.unsigned_abs().leading_zeros();
+    if d_bits + 53 > 120 {
+        return None;
+    }
+    let product = (mb * d, e_b + e_d);
+    let (sum, e) = on_common_scale(&[integer_and_exponent(a), product])?;
+    // The integer sum rounds once to a float; 2^e in two halves, each a
+    // power of two a float holds.
+    let half = e / 2;
+    Some((sum[0] + sum[1]) as f64 * 2f64.powi(half) * 2f64.powi(e - half))
 }
 
 /// The jerk-limited ramp from its acceleration `a(s) = min(J s, A, J (T - s))`,

@@ -83,6 +83,43 @@ pub(crate) fn logistic(x: f64) -> f64 {
     1.0 / (1.0 + libm::exp(-x))
 }
 
+/// `(s, e)` with `s = x + y` rounded and `s + e = x + y` exactly (Knuth's
+/// two-sum), for finite `x`, `y` whose sum does not overflow.
+fn two_sum(x: f64, y: f64) -> (f64, f64) {
+    let s = x + y;
+    let v = s - x;
+    (s, (x - (s - v)) + (y - v))
+}
+
+/// `(p, e)` with `p = x y` rounded and `p + e = x y` exactly (Dekker's
+/// product, splitting each factor into two 26-bit halves: no fused
+/// multiply-add, so every target computes the same bits), for factors well
+/// inside the float range.
+fn two_product(x: f64, y: f64) -> (f64, f64) {
+    fn split(x: f64) -> (f64, f64) {
+        let c = 134_217_729.0 * x; // 2^27 + 1
+        let hi = c - (c - x);
+        (hi, x - hi)
+    }
+    let p = x * y;
+    let ((xh, xl), (yh, yl)) = (split(x), split(y));
+    (p, ((xh * yh - p) + xh * yl + xl * yh) + xl * yl)
+}
+
+/// `a + b (x - y)` to within an ulp or two of the result itself, however
+/// nearly `b (x - y)` cancels `a`: the difference and the product are
+/// carried with their rounding errors, which the plain formula loses. Where
+/// a factor is too large to split (beyond 1e290 or so) there is nothing
+/// near enough to cancel, and the plain formula is returned.
+pub(crate) fn gap_after(a: f64, b: f64, x: f64, y: f64) -> f64 {
+    let plain = a + b * (x - y);
+    let (d, d_err) = two_sum(x, -y);
+    let (p, p_err) = two_product(b, d);
+    let (s, s_err) = two_sum(a, p);
+    let exact = s + (s_err + (p_err + b * d_err));
+    if exact.is_finite() { exact } else { plain }
+}
+
 /// `softplus(s0 + d) - softplus(s0)` for `d >= 0`, `s0` fixed: the
 /// integral of the logistic over `[s0, s0 + d]`.
 ///
@@ -147,6 +184,35 @@ mod tests {
             let direct = (-libm::log1p(-q) - q) / q;
             assert!((log_excess_ratio(q) / direct - 1.0).abs() < 1e-14, "{q}");
         }
+    }
+
+    /// Against exact integer arithmetic: `a + b (x - y)` with
+    /// `b = -a / (x - y) (1 - 2^-k)`, whose value is an integer combination
+    /// of the operands' mantissas.
+    #[test]
+    fn gap_after_keeps_the_digits_of_a_cancelling_sum() {
+        // 7777 + b 914 with b a float near -7777/914: every operand and the
+        // result are multiples of 2^-49, and the sum fits an i128 in those
+        // units.
+        let exact = |a: f64, b: f64, x: f64, y: f64| -> f64 {
+            let unit = 2f64.powi(49);
+            let (a, b, x, y) = (a * unit, b * unit, x, y);
+            assert!([a, b, x, y].iter().all(|v| v.fract() == 0.0));
+            let s = a as i128 + (b as i128) * (x as i128 - y as i128);
+            s as f64 / unit
+        };
+        for k in [10, 30, 40, 45, 50] {
+            let b = -7777.0 / 914.0 * (1.0 - 2f64.powi(-k));
+            let got = gap_after(7777.0, b, 1231.0, 317.0);
+            let want = exact(7777.0, b, 1231.0, 317.0);
+            assert!((got / want - 1.0).abs() < 1e-15, "2^-{k}: {got} {want}");
+        }
+        // The plain formula is off by a large part of the smallest ones.
+        let b = -7777.0 / 914.0 * (1.0 - 2f64.powi(-45));
+        let plain = 7777.0 + b * (1231.0 - 317.0);
+        assert!((plain / exact(7777.0, b, 1231.0, 317.0) - 1.0).abs() > 1e-4);
+        // A factor too large to split: the plain formula.
+        assert_eq!(gap_after(1.0, 1e300, 1e-5, 0.0), 1.0 + 1e300 * 1e-5);
     }
 
     #[test]

@@ -36,6 +36,16 @@ pub struct ThreeStage {
     pub shape: f64,
 }
 
+impl ThreeStage {
+    /// `a + B (f1 - f0)`, the acceleration at the start, in Hz/s, to its
+    /// own precision: near the bound of `B` the plain formula leaves only
+    /// the rounding of `B (f1 - f0)` (at 1e-12 from the bound an edge moved
+    /// 3 ticks, at 1e-14 over 500).
+    fn start_gap(&self) -> f64 {
+        crate::base::math::gap_after(self.accel, self.shape, self.f1, self.fmin)
+    }
+}
+
 /// The curve with its joints solved (DESIGN section 2):
 /// `C = f1 - f0 + a/B`, `t1 = ln(1 + B (f1 - f0)/a) / B`, `t2 = t1 + (f2 - f1)/a`,
 /// `b = a² / (4 (fc - f2))`, `tc = t2 + 2 (fc - f2)/a` (the paper's `a/4b`
@@ -48,6 +58,7 @@ pub(crate) struct ThreeStageInTime {
     fc: f64,
     a: f64,
     shape: f64,
+    start: f64,
     c: f64,
     b: f64,
     pub(crate) t1: f64,
@@ -61,8 +72,16 @@ pub(crate) struct ThreeStageInTime {
 impl ThreeStageInTime {
     pub(crate) fn new(s: &ThreeStage) -> Self {
         let (f0, f1, f2, fc, a, shape) = (s.fmin, s.f1, s.f2, s.fmax, s.accel, s.shape);
-        let c = f1 - f0 + a / shape;
-        let t1 = libm::log1p(shape * (f1 - f0) / a) / shape;
+        // `B C = a + B (f1 - f0)`, the acceleration at the start, vanishes
+        // as `B` nears its bound `-a/(f1 - f0)`: it is kept to its own
+        // digits, since `C`, `t1` and the stage's steps all follow from it.
+        let start = s.start_gap();
+        let c = start / shape;
+        let t1 = if start < 0.5 * a {
+            libm::log(start / a) / shape
+        } else {
+            libm::log1p(shape * (f1 - f0) / a) / shape
+        };
         let t2 = t1 + (f2 - f1) / a;
         let b = a * a / (4.0 * (fc - f2));
         let tc = t2 + 2.0 * (fc - f2) / a;
@@ -73,6 +92,7 @@ impl ThreeStageInTime {
             fc,
             a,
             shape,
+            start,
             c,
             b,
             t1,
@@ -95,7 +115,7 @@ impl ThreeStageInTime {
     /// `N1 = f0 t + (a + B (f1 - f0)) t² h(Bt)` with `h(x) = (x + expm1(-x))/x²`.
     fn stage1_steps(&self, t: f64) -> f64 {
         let h = crate::base::math::exp_excess_ratio(self.shape * t);
-        self.f0 * t + (self.a + self.shape * (self.f1 - self.f0)) * t * t * h
+        self.f0 * t + self.start * t * t * h
     }
 
     /// `b d³ / 3`, the parabola's steps term `d` before `tc`, as
@@ -223,7 +243,7 @@ impl CurveKind for ThreeStage {
             return Err(Error::Zero { key: Key::SHAPE });
         }
         let min_shape = -self.accel / (self.f1 - self.fmin);
-        if self.shape <= min_shape {
+        if self.shape <= min_shape || self.start_gap() <= 0.0 {
             return Err(Error::TooSmall {
                 key: Key::SHAPE,
                 value: self.shape,
