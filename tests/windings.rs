@@ -3,7 +3,7 @@
 //! library, and a typed curve takes precedence over them.
 
 use profile_core::build::Profiles;
-use profile_core::motor::{Motor, MotorError, TorqueCurve, Windings};
+use profile_core::motor::{Drive, Motor, MotorError, TorqueCurve, Windings};
 use profile_core::player::{Player, Ramp};
 use profile_core::simulate::{self, SimOptions};
 use profile_core::{Curve, Linear, LinearExtent, Spec, Timer};
@@ -26,6 +26,7 @@ fn qsh4218(volts: f64) -> Motor {
             holding_torque: 0.40,
             supply_voltage: volts,
             detent_torque: 0.0,
+            drive: Drive::Sine,
         }),
         friction: 0.02,
         damping: 0.0,
@@ -154,4 +155,90 @@ motor = "qsh4218"
     let windings = motor.windings.unwrap();
     assert_eq!(windings.detent_torque, 0.01);
     assert!((motor.pull_out(0.0) - 0.39).abs() < 1e-15);
+}
+
+fn stepping(drive: Drive) -> Motor {
+    let mut motor = qsh4218(24.0);
+    if let Some(w) = motor.windings.as_mut() {
+        w.drive = drive;
+    }
+    motor
+}
+
+/// A driver that steps the current gives its fundamental's share of the
+/// torque: at rest `(4/π) cos(π/8) = 0.83` of the sine's in half steps,
+/// `(4/π)/sqrt(2) = 0.90` in full steps; the ramp a sine drive follows
+/// with torque to spare is refused in half steps.
+#[test]
+fn a_driver_that_steps_the_current_gives_its_fundamentals_share() {
+    let (spec, table) = ramp();
+    let sine = stepping(Drive::Sine);
+    let half = stepping(Drive::HalfStep);
+    let full = stepping(Drive::FullStep);
+    let share = |m: &Motor| m.pull_out(0.0) / sine.pull_out(0.0);
+    let pi = std::f64::consts::PI;
+    assert!((share(&half) - 4.0 / pi * (pi / 8.0).cos() / 2f64.sqrt()).abs() < 1e-12);
+    assert!((share(&full) - 4.0 / pi / 2f64.sqrt()).abs() < 1e-12);
+    // With a safety factor of 1.6 the sine drive follows the ramp, half
+    // steps fall short where the ramp ends.
+    let (mut sine, mut half) = (sine, half);
+    sine.safety = 1.6;
+    half.safety = 1.6;
+    assert!(sine.check(&spec, &table).is_ok());
+    assert_eq!(
+        half.check(&spec, &table).unwrap_err().to_string(),
+        "the motor cannot follow step 395 at 8904.7 Hz: it needs 0.1552 N·m but gives \
+         0.1519 N·m after the safety factor, short by 0.0033 N·m (the pull-out torque derived \
+         from the windings)"
+    );
+}
+
+// The macro takes the drive by name.
+static HALF_STEPS: [u16; 405] = period_table!(
+    curve = linear,
+    fmin = 300,
+    fmax = 9000,
+    accel = 100_000,
+    timer_hz = 10_000_000,
+    step_angle = 1.8,
+    rotor_inertia = 6.8e-6,
+    load_inertia = 1.36e-5,
+    friction = 0.02,
+    resistance = 0.5,
+    inductance = 0.6e-3,
+    rated_current = 2.8,
+    holding_torque = 0.40,
+    supply_voltage = 24,
+    damping_ratio = 0.1,
+    drive = half_step,
+    safety = 1.5,
+);
+
+#[test]
+fn the_macro_and_a_profiles_file_take_the_drive() {
+    let (_, table) = ramp();
+    assert_eq!(HALF_STEPS.map(u32::from).as_slice(), table.as_slice());
+    let text = r#"
+[motors.qsh4218]
+step_angle = 1.8
+rotor_inertia = 6.8e-6
+resistance = 0.5
+inductance = 0.6e-3
+rated_current = 2.8
+holding_torque = 0.40
+supply_voltage = 24
+drive = "full_step"
+
+[profiles.ramp]
+curve = "linear"
+fmin = 300
+fmax = 2000
+accel = 20_000
+timer_hz = 10_000_000
+motor = "qsh4218"
+"#;
+    let profiles = Profiles::parse("profiles.toml", text).unwrap();
+    let motor = profiles.profiles()[0].motor.unwrap();
+    assert_eq!(motor.windings.unwrap().drive, Drive::FullStep);
+    assert_eq!(Drive::FullStep.name(), "full_step");
 }

@@ -6,7 +6,7 @@ use std::fmt::Write as _;
 
 use profile_core::build::Profiles;
 use profile_core::emit::{Profile, start_note};
-use profile_core::motor::Motor;
+use profile_core::motor::{Drive, Motor};
 use profile_core::player::{Player, Ramp};
 use profile_core::schema::describe;
 use profile_core::simulate::{self, SimOptions, SimResult};
@@ -358,14 +358,20 @@ fn print_pull_out(out: &mut String, bound: &[&Profile]) {
                 .collect::<String>()
         );
         let derived = row(&|hz| motor.derived_pull_out(hz));
+        // The drive, where it is not the default sine.
+        let drive = match motor.windings.map(|w| w.drive) {
+            Some(Drive::Sine) | None => String::new(),
+            Some(d) => format!(", {}", d.name()),
+        };
         match motor.torque_curve {
             Some(curve) => {
                 let typed = row(&|hz| Some(curve.torque(hz)));
                 let _ = writeln!(out, "{:<50}{typed}", "  `torque_curve` (used by the check)");
-                let _ = writeln!(out, "{:<50}{derived}", "  derived from the windings");
+                let label = format!("  derived from the windings{drive}");
+                let _ = writeln!(out, "{label:<50}{derived}");
             }
             None => {
-                let label = "  derived from the windings (used by the check)";
+                let label = format!("  derived from the windings{drive} (used by the check)");
                 let _ = writeln!(out, "{label:<50}{derived}");
             }
         }

@@ -79,6 +79,7 @@ mod include;
 /// | `holding_torque` | holding torque at rated current, two phases on, N·m | none |
 /// | `supply_voltage` | the driver's supply, V | none |
 /// | `detent_torque` | the unpowered motor's detent torque, N·m, taken off the derived curve | `0` |
+/// | `drive` | the current the driver sets: `sine` (a microstepping driver, at any microstep setting), `half_step` (each phase on at `rated_current` or off, in turn one phase then both), `full_step` (both phases on) | `sine` |
 /// | `friction` | constant load and friction torque, N·m | `0` |
 /// | `damping` | viscous damping on the rotor's speed, N·m·s/rad | `0` |
 /// | `damping_ratio` | electromagnetic damping ζ, on the rotor's speed relative to the field's (`simulate`) | `0` |

@@ -73,6 +73,9 @@ impl Key {
     pub const SUPPLY_VOLTAGE: Key = Key("supply_voltage");
     /// `detent_torque`: the unpowered motor's detent torque, N·m.
     pub const DETENT_TORQUE: Key = Key("detent_torque");
+    /// `drive`: the current's waveform the driver sets (`sine`,
+    /// `half_step`, `full_step`).
+    pub const DRIVE: Key = Key("drive");
 
     /// The keys every curve takes, after the curve's own, in documentation
     /// order (the motor's keys aside).
@@ -106,11 +109,12 @@ impl Key {
         Key::HOLDING_TORQUE,
         Key::SUPPLY_VOLTAGE,
         Key::DETENT_TORQUE,
+        Key::DRIVE,
     ];
 
     /// The keys that describe a motor's windings, from which its pull-out
     /// curve is derived ([`Windings`](crate::motor::Windings)): all but
-    /// `detent_torque` are required together.
+    /// `detent_torque` and `drive` are required together.
     pub const WINDINGS_KEYS: &'static [Key] = &[
         Key::RESISTANCE,
         Key::INDUCTANCE,
@@ -118,6 +122,7 @@ impl Key {
         Key::HOLDING_TORQUE,
         Key::SUPPLY_VOLTAGE,
         Key::DETENT_TORQUE,
+        Key::DRIVE,
     ];
 
     /// The key as written by users.

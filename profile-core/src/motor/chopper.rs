@@ -293,7 +293,12 @@ fn root(f: &impl Fn(f64) -> (f64, f64), mut lo: f64, mut hi: f64) -> f64 {
 /// inside and its value): Brent's method, a parabola through the three best
 /// points where it falls inside the bracket and shrinks it, a golden-section
 /// step where not.
-fn brent_max(f: &impl Fn(f64) -> f64, mut lo: f64, best: (f64, f64), mut hi: f64) -> (f64, f64) {
+pub(super) fn brent_max(
+    f: &impl Fn(f64) -> f64,
+    mut lo: f64,
+    best: (f64, f64),
+    mut hi: f64,
+) -> (f64, f64) {
     let golden = 0.5 * (3.0 - libm::sqrt(5.0));
     // The best point, the second best and the one before; values negated
     // so that the search minimises.

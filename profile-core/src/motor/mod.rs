@@ -28,10 +28,11 @@
 mod chopper;
 pub mod simulate;
 mod start;
+mod stepped;
 mod windings;
 
 pub use start::{END_FULL_STEPS, START_FULL_STEPS, START_MAX_STEPS, START_RESOLUTION, StartLimit};
-pub use windings::Windings;
+pub use windings::{Drive, Windings};
 
 use core::fmt;
 

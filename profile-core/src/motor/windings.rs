@@ -23,7 +23,9 @@
 //! of the full supply where it is never caught. The rotor's lag behind the
 //! field chooses the state; the pull-out torque is the largest mean torque
 //! over the lag, less the detent torque (which, at its worst angle, opposes
-//! the rotor).
+//! the rotor). A driver that steps the current instead ([`Drive::HalfStep`],
+//! [`Drive::FullStep`]) is solved the same way, stretch by stretch (the
+//! `stepped` module).
 //!
 //! Figures as datasheets give them:
 //!
@@ -45,7 +47,47 @@ use core::f64::consts::SQRT_2;
 
 use crate::base::key::Key;
 use crate::motor::chopper::Phase;
+use crate::motor::stepped::{FULL_STEPS, HALF_STEPS, SteppedPhase};
 use crate::motor::{Motor, MotorError, non_negative, positive};
+
+/// How the driver sets the phase currents: the waveform its chopper
+/// regulates each phase to, at `rated_current`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum Drive {
+    /// A sine (any microstepping driver, at any microstep setting): the
+    /// amplitude is `sqrt(2) · rated_current`, `rated_current` the RMS value
+    /// the driver is set to.
+    #[default]
+    Sine,
+    /// Half steps without current compensation (an L297, or a driver
+    /// stepping its phases on and off): in turn one phase, then both, each
+    /// at `rated_current`. Its fundamental is `(4/π) cos(π/8) = 0.83` of the
+    /// sine's, and so is the torque at low speed.
+    HalfStep,
+    /// Full steps with both phases on at `rated_current`: a square wave on
+    /// each phase, whose fundamental is `(4/π)/sqrt(2) = 0.90` of the
+    /// sine's.
+    FullStep,
+}
+
+impl Drive {
+    /// Every drive, with its name as written in a profile.
+    pub const ALL: [(&'static str, Drive); 3] = [
+        ("sine", Drive::Sine),
+        ("half_step", Drive::HalfStep),
+        ("full_step", Drive::FullStep),
+    ];
+
+    /// The name as written in a profile (`sine`, `half_step`, `full_step`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Drive::Sine => "sine",
+            Drive::HalfStep => "half_step",
+            Drive::FullStep => "full_step",
+        }
+    }
+}
 
 /// A two-phase hybrid motor's windings and the chopper driver behind them,
 /// as a datasheet gives them: per phase, with the driver set to the rated
@@ -56,7 +98,9 @@ pub struct Windings {
     pub resistance: f64,
     /// Phase inductance, in H.
     pub inductance: f64,
-    /// Rated phase current (RMS, as a microstepping driver is set), in A.
+    /// Rated phase current, in A: RMS, as a microstepping driver is set,
+    /// for [`Drive::Sine`]; the current each phase is switched to, for the
+    /// stepped drives.
     pub rated_current: f64,
     /// Holding torque at rated current, two phases on, in N·m.
     pub holding_torque: f64,
@@ -64,6 +108,8 @@ pub struct Windings {
     pub supply_voltage: f64,
     /// Detent torque (unpowered), in N·m; 0 when not known.
     pub detent_torque: f64,
+    /// The current's waveform the driver sets.
+    pub drive: Drive,
 }
 
 impl Windings {
@@ -104,14 +150,30 @@ impl Windings {
     /// windings give no more than the detent torque.
     pub fn pull_out(&self, poles: f64, omega: f64) -> f64 {
         let km = self.torque_constant();
-        let phase = Phase {
-            r: self.resistance,
-            x: poles * omega.abs() * self.inductance,
-            e: km * omega.abs(),
-            amp: self.amplitude(),
-            volts: self.supply_voltage,
+        let (r, volts) = (self.resistance, self.supply_voltage);
+        let x = poles * omega.abs() * self.inductance;
+        let e = km * omega.abs();
+        let stepped = |steps| SteppedPhase {
+            r,
+            x,
+            e,
+            amp: self.rated_current,
+            volts,
+            steps,
         };
-        (km * phase.largest_q() - self.detent_torque).max(0.0)
+        let q = match self.drive {
+            Drive::Sine => Phase {
+                r,
+                x,
+                e,
+                amp: self.amplitude(),
+                volts,
+            }
+            .largest_q(),
+            Drive::HalfStep => stepped(HALF_STEPS).largest_q(),
+            Drive::FullStep => stepped(FULL_STEPS).largest_q(),
+        };
+        (km * q - self.detent_torque).max(0.0)
     }
 }
 
@@ -200,6 +262,7 @@ mod tests {
             holding_torque: 0.40,
             supply_voltage: 24.0,
             detent_torque: 0.0,
+            drive: Drive::Sine,
         }
     }
 
@@ -238,6 +301,7 @@ mod tests {
         );
         let detent = Windings {
             detent_torque: 0.015,
+            drive: Drive::Sine,
             ..nema17()
         };
         assert!((detent.pull_out(50.0, 0.0) - 0.385).abs() < 1e-15);

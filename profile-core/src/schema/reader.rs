@@ -11,7 +11,7 @@ use crate::base::MAX_LEN;
 use crate::base::error::{Error, Num};
 use crate::base::key::Key;
 use crate::curves::Reader;
-use crate::motor::{MAX_CURVE_POINTS, Motor, TorqueCurve, Windings};
+use crate::motor::{Drive, MAX_CURVE_POINTS, Motor, TorqueCurve, Windings};
 
 /// 2^53: every integer up to it is exactly a `f64`.
 const EXACT_FLOAT_INT: f64 = 9_007_199_254_740_992.0;
@@ -357,6 +357,7 @@ fn windings<L: Clone>(c: &mut Collector<'_, L>) -> Option<Option<Windings>> {
     let holding_torque = c.float(Key::HOLDING_TORQUE);
     let supply_voltage = c.float(Key::SUPPLY_VOLTAGE);
     let detent_torque = c.float(Key::DETENT_TORQUE);
+    let drive = c.name(Key::DRIVE, &Drive::ALL);
     Some(Some(Windings {
         resistance: resistance?,
         inductance: inductance?,
@@ -364,5 +365,6 @@ fn windings<L: Clone>(c: &mut Collector<'_, L>) -> Option<Option<Windings>> {
         holding_torque: holding_torque?,
         supply_voltage: supply_voltage?,
         detent_torque: detent_torque.unwrap_or(0.0),
+        drive: drive.unwrap_or_default(),
     }))
 }
