@@ -189,7 +189,7 @@ fn a_driver_that_steps_the_current_gives_its_fundamentals_share() {
         half.check(&spec, &table).unwrap_err().to_string(),
         "the motor cannot follow step 395 at 8904.7 Hz: it needs 0.1552 N·m but gives \
          0.1519 N·m after the safety factor, short by 0.0033 N·m (the pull-out torque derived \
-         from the windings)"
+         from the windings, in half steps)"
     );
 }
 

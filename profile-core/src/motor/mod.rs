@@ -187,9 +187,9 @@ pub enum MotorError {
         available_nm: f64,
         /// Whether the frequency is beyond the torque curve's last point.
         beyond_curve: bool,
-        /// Whether the torque available is derived from the windings
-        /// (no `torque_curve` given).
-        from_windings: bool,
+        /// The drive, when the torque available is derived from the
+        /// windings (no `torque_curve` given).
+        from_windings: Option<Drive>,
     },
     /// A torque the check computes is not a finite number: the motor's
     /// figures are too large for `f64` arithmetic.
@@ -295,8 +295,15 @@ impl fmt::Display for MotorError {
                 if beyond_curve {
                     f.write_str(" (the frequency is beyond the last point of `torque_curve`)")?;
                 }
-                if from_windings {
-                    f.write_str(" (the pull-out torque derived from the windings)")?;
+                match from_windings {
+                    Some(Drive::HalfStep) => f.write_str(
+                        " (the pull-out torque derived from the windings, in half steps)",
+                    )?,
+                    Some(Drive::FullStep) => f.write_str(
+                        " (the pull-out torque derived from the windings, in full steps)",
+                    )?,
+                    Some(_) => f.write_str(" (the pull-out torque derived from the windings)")?,
+                    None => {}
                 }
                 Ok(())
             }
@@ -504,7 +511,10 @@ impl Motor {
                 needed_nm: needed,
                 available_nm: available,
                 beyond_curve: self.torque_curve.is_some_and(|c| hz > c.top()),
-                from_windings: self.torque_curve.is_none(),
+                from_windings: match (&self.torque_curve, &self.windings) {
+                    (None, Some(w)) => Some(w.drive),
+                    _ => None,
+                },
             });
         }
         let margin = available - needed;

@@ -57,7 +57,7 @@ pub fn locate_motor<L: Clone>(error: &MotorError, args: &[Arg<L>], whole: &L) ->
         | MotorError::ShortMove { .. } => Key::FMIN,
         MotorError::Start { .. } => Key::MAX_START_HZ,
         MotorError::Torque {
-            from_windings: true,
+            from_windings: Some(_),
             ..
         } => Key::SUPPLY_VOLTAGE,
         _ => Key::TORQUE_CURVE,
