@@ -144,3 +144,35 @@ fn an_asymptote_just_above_fmax_keeps_its_gap() {
         assert_eq!(len as f64, simpson.ceil(), "{f_inf}: {simpson} steps");
     }
 }
+
+/// A sigmoid flatter than a float tells from a constant, down to the
+/// smallest normal `flexible`: the table of the constant frequency
+/// `(fmin + fmax) / 2`, every edge within half a tick of `k` periods of it.
+/// Below 1e-306 its step count once overflowed ("did not converge").
+#[test]
+fn the_flattest_sigmoid_is_its_middle_frequency() {
+    for flexible in [1e-20, 1e-100, 1e-200, 1e-306, 1e-307, 2.3e-308] {
+        let spec = Spec::new(
+            Curve::Sigmoid(Sigmoid {
+                fmin: 500.0,
+                fmax: 64_000.0,
+                flexible,
+                len: 1000,
+            }),
+            timer(),
+        );
+        let table = spec.table().unwrap_or_else(|e| panic!("{flexible}: {e}"));
+        assert_eq!(table.periods.len(), 1000);
+        let period = 10_000_000.0 / 32_250.0;
+        let mut edge = 0u64;
+        for (k, &p) in table.periods.iter().enumerate() {
+            edge += u64::from(p);
+            let exact = (k + 1) as f64 * period;
+            assert!(
+                (edge as f64 - exact).abs() <= 0.5 + 1e-9,
+                "{flexible}: edge {} at {edge}, exactly {exact}",
+                k + 1
+            );
+        }
+    }
+}

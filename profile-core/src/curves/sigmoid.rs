@@ -69,6 +69,10 @@ impl Sigmoid {
     }
 }
 
+/// Below this `flexible` the curve's step count is taken as its first-order
+/// term: the next is 1e-100 of it.
+const FLAT: f64 = 1e-100;
+
 /// The sigmoid over `[0, T]`, with its closed-form step count.
 pub(crate) struct SigmoidInTime {
     fmin: f64,
@@ -110,6 +114,12 @@ impl TimeCurve for SigmoidInTime {
     /// = flexible t / (T/2)`, so that a flat curve (small `flexible`) keeps
     /// its digits.
     fn steps(&self, t: f64) -> f64 {
+        // Flatter than a float tells from a constant: the rise is
+        // `logistic(-flexible) · flexible t / (T/2)` to 1e-100 of itself,
+        // and `T / 2 flexible` alone would overflow below 1e-306.
+        if self.flexible < FLAT {
+            return self.fmin * t + self.delt * logistic(-self.flexible) * t;
+        }
         let rise = self.rise.over(self.flexible * t / self.half);
         self.fmin * t + self.delt * (self.half / self.flexible) * rise
     }
