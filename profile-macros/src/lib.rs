@@ -38,7 +38,7 @@ mod include;
 /// | `curve` | `sigmoid`, `exponential`, `linear`, `three_stage`, `jerk_limited` | required |
 /// | `timer_hz` | timer tick rate after the prescaler | required |
 /// | `word` | `u16`, `u32`: the reload register's width | `u16` |
-/// | `ticks_per_step` | `1`, or `2` when the timer toggles the pin (each entry a half period) | `1` |
+/// | `ticks_per_step` | `1`, or `2` when the timer toggles the pin (each entry a half period, played twice: the edges' rounding doubles, up to one tick where the figures say half a tick of the entries) | `1` |
 /// | `discretization` | `exact` (pulse edges where the curve puts them), `left_endpoint` (`1/f` at the step's start), `index` (the curve's x axis is the step index) | `exact` |
 /// | `rounding` | `truncate` (C's cast), `nearest`, `diffuse` (every edge within 0.5 tick) | `diffuse` |
 /// | `arithmetic` | `f64`; `f32` for the S-curve article's C code (`sigmoid`, `index`); `integer` for the S3C4510 article's (`linear`, `index`, `truncate`) | `f64` |

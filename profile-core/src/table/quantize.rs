@@ -46,9 +46,13 @@ pub struct Figures {
     /// with the cube of the step frequency: not a figure of the ramp.)
     pub curve_max_jerk_hz_s2: f64,
     /// Largest distance of a pulse edge (a prefix sum of the table) from its
-    /// unrounded time under the chosen discretization, in ticks.
+    /// unrounded time under the chosen discretization, in ticks of the
+    /// entries. With `ticks_per_step = 2` each entry is a half period the
+    /// timer plays twice, so the step's edges lie twice this far from the
+    /// curve's, in timer ticks (up to one tick where this says half a tick).
     pub max_edge_error_ticks: f64,
-    /// Last pulse edge minus its unrounded time, in ticks (the drift).
+    /// Last pulse edge minus its unrounded time, in ticks of the entries
+    /// (the drift; twice this in timer ticks with `ticks_per_step = 2`).
     pub total_error_ticks: f64,
     /// Ticks left between the longest entry and the largest value the word holds.
     pub overflow_margin_ticks: u32,
