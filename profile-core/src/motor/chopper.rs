@@ -56,7 +56,7 @@ const LEAD_TOLERANCE: f64 = 1e-7;
 
 /// Below this reactance over resistance the winding is taken as a resistor
 /// (the speed as 0): the current lags the voltage by less than 1e-9 rad.
-const STILL: f64 = 1e-9;
+pub(super) const STILL: f64 = 1e-9;
 
 impl Phase {
     /// The largest mean `q` current over the field's lead, in A: what the
@@ -71,18 +71,7 @@ impl Phase {
         if self.x <= STILL * self.r {
             return self.still_q();
         }
-        let f = |lead: f64| self.mean_q(lead);
-        let step = PI / LEADS as f64;
-        let mut best = (step, f(step));
-        for k in 2..LEADS {
-            let lead = step * k as f64;
-            let q = f(lead);
-            if q > best.1 {
-                best = (lead, q);
-            }
-        }
-        let (_, q) = brent_max(&f, best.0 - step, best, best.0 + step);
-        q.max(best.1)
+        largest_over_lead(&|lead| self.mean_q(lead))
     }
 
     /// The voltage that holds the reference, `u(θ) = P cos θ + Q sin θ`:
@@ -261,6 +250,22 @@ impl Winding {
             + 0.25 * self.b * libm::cos(2.0 * t);
         decaying + steady
     }
+}
+
+/// The largest of `f` over the field's lead in `(0, π)`: the best of
+/// [`LEADS`] - 1 leads scanned, then Brent's method around it.
+pub(super) fn largest_over_lead(f: &impl Fn(f64) -> f64) -> f64 {
+    let step = PI / LEADS as f64;
+    let mut best = (step, f(step));
+    for k in 2..LEADS {
+        let lead = step * k as f64;
+        let q = f(lead);
+        if q > best.1 {
+            best = (lead, q);
+        }
+    }
+    let (_, q) = brent_max(f, best.0 - step, best, best.0 + step);
+    q.max(best.1)
 }
 
 /// The root of `f` (value and slope) in `[lo, hi]`, `f(lo) < 0 <= f(hi)`:

@@ -27,7 +27,7 @@
 
 use core::f64::consts::PI;
 
-use super::chopper::brent_max;
+use super::chopper::{STILL, largest_over_lead};
 
 /// A drive's set current over a turn: the levels (times the set current)
 /// of its steps, each `width` radians wide, the first centred on `0`.
@@ -59,10 +59,6 @@ const ROOT_STEPS: u32 = 100;
 const STRETCHES: u32 = 16;
 /// Steps of the search for the periodic current.
 const PERIODIC_STEPS: u32 = 100;
-/// Leads scanned over `(0, π)` before Brent's search.
-const LEADS: u32 = 12;
-/// Below this reactance over resistance the winding is a resistor.
-const STILL: f64 = 1e-9;
 
 /// A phase at one steady speed: `r` in Ω, `x = ω_e L` in Ω, `e = K_m ω`
 /// in V, `amp` the set current in A, `volts` the supply in V.
@@ -90,18 +86,7 @@ impl SteppedPhase {
         if self.x <= STILL * self.r {
             return self.still_q();
         }
-        let f = |lead: f64| self.mean_q(lead);
-        let step = PI / LEADS as f64;
-        let mut best = (step, f(step));
-        for k in 2..LEADS {
-            let lead = step * k as f64;
-            let q = f(lead);
-            if q > best.1 {
-                best = (lead, q);
-            }
-        }
-        let (_, q) = brent_max(&f, best.0 - step, best, best.0 + step);
-        q.max(best.1)
+        largest_over_lead(&|lead| self.mean_q(lead))
     }
 
     /// At rest: the staircase, clipped at `V / R` where the supply cannot
