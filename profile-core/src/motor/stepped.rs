@@ -74,7 +74,7 @@ pub(super) struct SteppedPhase {
 
 /// What the chopper does over a stretch: holds the set current, or puts
 /// a constant voltage on the phase.
-#[derive(Clone, Copy, PartialEq)]
+#[derive(Clone, Copy)]
 enum Mode {
     Held,
     Driven(f64),
@@ -124,10 +124,9 @@ impl SteppedPhase {
     /// between `x - g(x)` and `x - g(x)/2`; secant steps within that
     /// bracket, halving where a step would leave it.
     fn periodic(&self, turn: &impl Fn(f64) -> (f64, f64)) -> f64 {
-        let (end0, _) = turn(0.0);
-        let g0 = end0;
+        let (g0, integral0) = turn(0.0);
         if g0 == 0.0 {
-            return turn(0.0).1;
+            return integral0;
         }
         let (mut lo, mut hi) = if g0 > 0.0 {
             (-g0, -0.5 * g0)
@@ -227,7 +226,7 @@ impl SteppedPhase {
             Mode::Held => self.volts,
         };
         integral += self.driven_integral(t, t1, i, v);
-        (self.driven(t, i, v, t1), integral)
+        (self.driven(t, i, v)(t1), integral)
     }
 
     /// What the chopper does with the current on the set one at `t`:
@@ -253,11 +252,7 @@ impl SteppedPhase {
     /// Where the current under `v` from `(t, i)` meets `level`, or `t1`;
     /// and the current there.
     fn drive_ends(&self, t: f64, t1: f64, level: f64, i: f64, v: f64) -> (f64, f64) {
-        let (a, b, rho) = self.response();
-        let dc = v / self.r;
-        let offset = i - (dc + a * libm::sin(t) + b * libm::cos(t));
-        let current =
-            |s: f64| dc + a * libm::sin(s) + b * libm::cos(s) + offset * libm::exp(-rho * (s - t));
+        let current = self.driven(t, i, v);
         // Under `+V` the current comes up to the set one from below, under
         // `-V` down to it from above.
         let side = if v > 0.0 { 1.0 } else { -1.0 };
@@ -268,11 +263,12 @@ impl SteppedPhase {
         }
     }
 
-    /// The current at `s` under `v` from `i` at `t`.
-    fn driven(&self, t: f64, i: f64, v: f64, s: f64) -> f64 {
+    /// The current under `v` from `i` at `t`, as a function of the angle.
+    fn driven(&self, t: f64, i: f64, v: f64) -> impl Fn(f64) -> f64 {
         let (a, b, rho) = self.response();
-        let steady = |u: f64| v / self.r + a * libm::sin(u) + b * libm::cos(u);
-        steady(s) + (i - steady(t)) * libm::exp(-rho * (s - t))
+        let dc = v / self.r;
+        let offset = i - (dc + a * libm::sin(t) + b * libm::cos(t));
+        move |s| dc + a * libm::sin(s) + b * libm::cos(s) + offset * libm::exp(-rho * (s - t))
     }
 
     /// The steady response to the back-EMF, `a sin θ + b cos θ`, and the
