@@ -36,6 +36,7 @@ fn read(args: &[(&'static str, Value)]) -> Result<schema::Request, String> {
             key_loc: (),
             value: v.clone(),
             value_loc: (),
+            parts: Vec::new(),
         })
         .collect();
     schema::read(&args, &(), &[]).map_err(|d| d[0].message.clone())

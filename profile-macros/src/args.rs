@@ -23,7 +23,7 @@ impl Parse for Pair {
         input
             .parse::<Token![=]>()
             .map_err(|e| syn::Error::new(e.span(), format!("expected `=` after `{key}`")))?;
-        let (value, value_loc) = parse_value(input, &key)?;
+        let (value, value_loc, parts) = parse_value(input, &key)?;
         if !input.is_empty() && !input.peek(Token![,]) {
             return Err(input.error(format!(
                 "expected `,` after the value of `{key}`: a value is one literal or name, \
@@ -35,25 +35,32 @@ impl Parse for Pair {
             key_loc: key.into_token_stream(),
             value,
             value_loc,
+            parts,
         }))
     }
 }
 
-fn parse_value(input: ParseStream, key: &Ident) -> syn::Result<(Value, Loc)> {
+/// A value, where it is, and where each of its elements is (a list's).
+fn parse_value(input: ParseStream, key: &Ident) -> syn::Result<(Value, Loc, Vec<Loc>)> {
+    if input.peek(syn::token::Bracket) && key == profile_core::Key::TORQUE_CURVE.name() {
+        return parse_points(input, key);
+    }
+    let (value, loc) = parse_scalar(input, key)?;
+    Ok((value, loc, Vec::new()))
+}
+
+fn parse_scalar(input: ParseStream, key: &Ident) -> syn::Result<(Value, Loc)> {
     let expected = || format!("`{key}` expects a number or a name");
     if input.peek(Ident) {
         let ident: Ident = input.parse()?;
         return Ok((Value::Name(ident.to_string()), ident.into_token_stream()));
     }
     if input.peek(syn::token::Bracket) {
-        if key != profile_core::Key::TORQUE_CURVE.name() {
-            let group: proc_macro2::Group = input.parse()?;
-            return Err(syn::Error::new_spanned(
-                group,
-                format!("{}, not a list (only `torque_curve` takes one)", expected()),
-            ));
-        }
-        return parse_points(input, key);
+        let group: proc_macro2::Group = input.parse()?;
+        return Err(syn::Error::new_spanned(
+            group,
+            format!("{}, not a list (only `torque_curve` takes one)", expected()),
+        ));
     }
     let minus: Option<Token![-]> = input.parse()?;
     if minus.is_some() && input.peek(Token![-]) {
@@ -147,33 +154,43 @@ fn float(key: &Ident, text: &str, negative: bool, loc: &Loc) -> syn::Result<f64>
     Ok(if negative { -v } else { v })
 }
 
-/// `[(x, y), ...]`: a list of number pairs, such as a torque curve.
-fn parse_points(input: ParseStream, key: &Ident) -> syn::Result<(Value, Loc)> {
+/// Number pairs, and where each is.
+type Located = (Vec<(f64, f64)>, Vec<Loc>);
+
+/// `[(x, y), ...]`: a list of number pairs, such as a torque curve, and
+/// where each pair is.
+fn parse_points(input: ParseStream, key: &Ident) -> syn::Result<(Value, Loc, Vec<Loc>)> {
     let group: proc_macro2::Group = input.parse()?;
     let loc = group.to_token_stream();
     let expected =
         || format!("`{key}` expects a list of number pairs, such as `[(0, 0.4), (1000, 0.3)]`");
-    let pairs = |content: ParseStream| -> syn::Result<Vec<(f64, f64)>> {
-        let mut points = Vec::new();
+    let pair = |inner: ParseStream| -> syn::Result<(f64, f64)> {
+        let x = number(inner, true)?;
+        inner.parse::<Token![,]>()?;
+        let y = number(inner, false)?;
+        let _: Option<Token![,]> = inner.parse()?;
+        if !inner.is_empty() {
+            return Err(inner.error("expected a pair"));
+        }
+        Ok((x, y))
+    };
+    let pairs = |content: ParseStream| -> syn::Result<Located> {
+        let (mut points, mut parts) = (Vec::new(), Vec::new());
         while !content.is_empty() {
-            let inner;
-            syn::parenthesized!(inner in content);
-            let x = number(&inner, true)?;
-            inner.parse::<Token![,]>()?;
-            let y = number(&inner, false)?;
-            let _: Option<Token![,]> = inner.parse()?;
-            if !inner.is_empty() {
-                return Err(inner.error("expected a pair"));
+            let inner: proc_macro2::Group = content.parse()?;
+            if inner.delimiter() != proc_macro2::Delimiter::Parenthesis {
+                return Err(syn::Error::new_spanned(&inner, "expected a pair"));
             }
-            points.push((x, y));
+            points.push(pair.parse2(inner.stream())?);
+            parts.push(inner.to_token_stream());
             if content.is_empty() {
                 break;
             }
             content.parse::<Token![,]>()?;
         }
-        Ok(points)
+        Ok((points, parts))
     };
-    let points = pairs.parse2(group.stream()).map_err(|e| {
+    let (points, parts) = pairs.parse2(group.stream()).map_err(|e| {
         // A frequency's unit error names the key and stands at the
         // literal; any other mistake is the list's.
         if e.to_string().starts_with("`torque_curve`") {
@@ -182,7 +199,7 @@ fn parse_points(input: ParseStream, key: &Ident) -> syn::Result<(Value, Loc)> {
             syn::Error::new_spanned(&loc, expected())
         }
     })?;
-    Ok((Value::Points(points), loc))
+    Ok((Value::Points(points), loc, parts))
 }
 
 /// A number literal, possibly negative, as `f64`; a frequency (`frequency`)

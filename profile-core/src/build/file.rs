@@ -118,13 +118,70 @@ fn points(items: &[toml::Value]) -> Option<Vec<(f64, f64)>> {
         .collect()
 }
 
-fn arg(key: &Spanned<String>, v: &Spanned<toml::Value>) -> Arg<Range<usize>> {
+fn arg(source: &str, key: &Spanned<String>, v: &Spanned<toml::Value>) -> Arg<Range<usize>> {
+    let value = value(v);
+    // Each point's place, where the reading finds one for each.
+    let parts = match &value {
+        Value::Points(points) => Some(elements(source, v.span()))
+            .filter(|parts| parts.len() == points.len())
+            .unwrap_or_default(),
+        _ => Vec::new(),
+    };
     Arg {
         key: key.get_ref().clone(),
         key_loc: key.span(),
-        value: value(v),
+        value,
         value_loc: v.span(),
+        parts,
     }
+}
+
+/// Where each `[...]` element of the array at `span` is in `source`, in
+/// order: the array's text read bracket by bracket, past strings and
+/// comments (the TOML parser gives spans to top-level values only).
+fn elements(source: &str, span: Range<usize>) -> Vec<Range<usize>> {
+    let Some(text) = source.get(span.clone()) else {
+        return Vec::new();
+    };
+    let bytes = text.as_bytes();
+    let (mut out, mut depth, mut start) = (Vec::new(), 0usize, 0usize);
+    let mut i = 1; // past the array's own `[`
+    while i < bytes.len() {
+        match bytes[i] {
+            b'#' => {
+                while i < bytes.len() && bytes[i] != b'\n' {
+                    i += 1;
+                }
+            }
+            quote @ (b'"' | b'\'') => {
+                i += 1;
+                while i < bytes.len() && bytes[i] != quote {
+                    // A basic string's escape skips the character it escapes.
+                    i += if quote == b'"' && bytes[i] == b'\\' {
+                        2
+                    } else {
+                        1
+                    };
+                }
+            }
+            b'[' | b'{' => {
+                if depth == 0 {
+                    start = i;
+                }
+                depth += 1;
+            }
+            b']' | b'}' if depth > 0 => {
+                depth -= 1;
+                if depth == 0 {
+                    out.push(span.start + start..span.start + i + 1);
+                }
+            }
+            b']' => break,
+            _ => {}
+        }
+        i += 1;
+    }
+    out
 }
 
 /// The TOML parser's message in this project's words.
@@ -251,7 +308,7 @@ pub(crate) fn read(source: &str) -> Result<FileArgs, Diagnostic<Range<usize>>> {
         meant: Vec::new(),
         diagnostics: Vec::new(),
     };
-    let defaults = defaults(parsed.defaults.as_ref(), &mut file);
+    let defaults = defaults(source, parsed.defaults.as_ref(), &mut file);
     let motors: Vec<_> = parsed.motors.iter().flatten().collect();
     check_motors(&motors, &mut file);
     let mut declared: Vec<&str> = motors.iter().map(|(k, _)| k.get_ref().as_str()).collect();
@@ -306,11 +363,11 @@ fn no_profiles(loc: Range<usize>) -> Diagnostic<Range<usize>> {
 
 /// The `[defaults]` table as arguments; an unknown key is reported, and the
 /// key it probably meant is not reported missing.
-fn defaults(table: Option<&Table>, file: &mut FileArgs) -> Vec<Arg<Range<usize>>> {
+fn defaults(source: &str, table: Option<&Table>, file: &mut FileArgs) -> Vec<Arg<Range<usize>>> {
     let mut defaults = Vec::new();
     for (key, v) in table.map(sorted).unwrap_or_default() {
         if Key::from_name(key.get_ref()).is_some() {
-            defaults.push(arg(key, v));
+            defaults.push(arg(source, key, v));
             continue;
         }
         let all: Vec<Key> = Key::all().collect();
@@ -369,7 +426,7 @@ fn profile(
 ) -> Result<Vec<Arg<Range<usize>>>, Diagnostic<Range<usize>>> {
     let mut args: Vec<_> = sorted(table)
         .into_iter()
-        .map(|(key, v)| arg(key, v))
+        .map(|(key, v)| arg(source, key, v))
         .collect();
     for a in &args {
         let digits = source
@@ -401,7 +458,7 @@ fn profile(
         for (key, v) in sorted(motor.get_ref()) {
             let motor_key = Key::from_name(key.get_ref()).is_some_and(Key::is_motor);
             if motor_key && !args.iter().any(|a| &a.key == key.get_ref()) {
-                args.push(arg(key, v));
+                args.push(arg(source, key, v));
             }
         }
     }

@@ -37,7 +37,8 @@ pub fn describe(spec: &Spec) -> Vec<(Key, String)> {
     out
 }
 
-/// Places a motor error: at the value of its key, at `motor` for a table the
+/// Places a motor error: at a torque curve's point it blames, at the value
+/// of its key, at `motor` for a table the
 /// motor cannot follow (when no `motor` names it: for a start too fast at
 /// `max_start_hz`, or at `fmin` when the model judged it or the ends of a
 /// move; at `supply_voltage` for a torque the windings give too little of;
@@ -62,7 +63,16 @@ pub fn locate_motor<L: Clone>(error: &MotorError, args: &[Arg<L>], whole: &L) ->
         } => Key::SUPPLY_VOLTAGE,
         _ => Key::TORQUE_CURVE,
     };
-    let loc = find(error.key())
+    // A torque curve's point, where the front door knows where it is.
+    let point = match error {
+        MotorError::Curve { index, .. } => args
+            .iter()
+            .find(|a| a.key == Key::TORQUE_CURVE.name())
+            .and_then(|a| a.parts.get(*index).cloned()),
+        _ => None,
+    };
+    let loc = point
+        .or_else(|| find(error.key()))
         .or_else(|| find(inline))
         .or_else(|| find(Key::TORQUE_CURVE))
         .unwrap_or_else(|| whole.clone());

@@ -100,6 +100,10 @@ pub struct Arg<L> {
     pub value: Value,
     /// Where the value is.
     pub value_loc: L,
+    /// Where each element of a list value is (a torque curve's points), in
+    /// order; empty for other values, or where the front door does not
+    /// know.
+    pub parts: Vec<L>,
 }
 
 /// A message about the input and where it belongs.

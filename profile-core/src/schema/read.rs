@@ -120,6 +120,7 @@ pub(crate) fn value_problems<L: Clone + PartialEq>(
             key_loc: nowhere.clone(),
             value: Value::Name(curve.to_string()),
             value_loc: nowhere.clone(),
+            parts: Vec::new(),
         });
     }
     let every: Vec<Key> = Key::all().collect();
@@ -310,6 +311,7 @@ mod tests {
                 key_loc: 2 * i,
                 value: v.clone(),
                 value_loc: 2 * i + 1,
+                parts: Vec::new(),
             })
             .collect()
     }
