@@ -75,7 +75,7 @@ mod include;
 /// | `load_inertia` | the load's inertia at the shaft, kg·m² | `0` |
 /// | `torque_curve` | pull-out torque, up to 32 `(step frequency, N·m)` pairs with rising frequencies: `[(0, 0.40), (1000, 0.33), (4000, 0.12)]`; no torque beyond the last | required, unless the windings are given |
 /// | `resistance`, `inductance` | phase resistance (Ω) and inductance (H): with `rated_current`, `holding_torque` and `supply_voltage`, the pull-out curve is derived (`profile_core::motor::Windings`) | none |
-/// | `rated_current` | rated phase current, A (RMS, as a microstepping driver is set) | none |
+/// | `rated_current` | rated phase current, A (RMS, as a microstepping driver is set; the current each phase is switched to with `drive = half_step` or `full_step`) | none |
 /// | `holding_torque` | holding torque at rated current, two phases on, N·m | none |
 /// | `supply_voltage` | the driver's supply, V | none |
 /// | `detent_torque` | the unpowered motor's detent torque, N·m, taken off the derived curve | `0` |
