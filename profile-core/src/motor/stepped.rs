@@ -25,7 +25,7 @@
 //! torque is `K_m` times the mean `q` current, `(2/π) ∫ -i sin θ dθ` over
 //! half a turn, largest over the lead.
 
-use core::f64::consts::PI;
+use core::f64::consts::{PI, TAU};
 
 use super::chopper::{STILL, largest_over_lead};
 
@@ -244,9 +244,26 @@ impl SteppedPhase {
     }
 
     /// Where holding `level` from `t` takes more than the supply, or `t1`.
+    /// The voltage it takes, `R c - E sin θ`, stays within `±V` while
+    /// `sin θ` is within `[(R c - V)/E, (R c + V)/E]`; it leaves that band
+    /// upwards where `sin θ` rises through the top (at `asin(top)`, a turn
+    /// apart) and downwards where it falls through the bottom (at
+    /// `π - asin(bottom)`): the first of these from `t` on.
     fn hold_ends(&self, t: f64, t1: f64, level: f64) -> f64 {
-        let room = |s: f64| self.volts - libm::fabs(self.r * level - self.e * libm::sin(s));
-        first_below(&room, t, t1).unwrap_or(t1)
+        let (top, bottom) = (
+            (self.r * level + self.volts) / self.e,
+            (self.r * level - self.volts) / self.e,
+        );
+        // The first angle `base + 2πk` at or after `t`.
+        let from_t = |base: f64| base + TAU * libm::ceil((t - base) / TAU);
+        let mut end = t1;
+        if top < 1.0 {
+            end = end.min(from_t(libm::asin(top.max(-1.0))));
+        }
+        if bottom > -1.0 {
+            end = end.min(from_t(PI - libm::asin(bottom.min(1.0))));
+        }
+        end.max(t)
     }
 
     /// Where the current under `v` from `(t, i)` meets `level`, or `t1`;
