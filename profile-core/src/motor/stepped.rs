@@ -15,9 +15,9 @@
 //! `+V` on the phase, above it `-V`; on it, it holds it while the voltage
 //! that takes, `R c - E sin θ`, is within `±V`. Under a constant `v` the
 //! current is `v/R + a sin θ + b cos θ + K e^(-ρ θ)` (`ρ = R/X`), so every
-//! stretch is a closed form; only where a stretch ends (the current meets
-//! the set one, or holding it takes more than the supply) is searched for,
-//! a bracketed root within each step of the staircase.
+//! stretch is a closed form, and so is where holding the current takes more
+//! than the supply; only where a driven current meets the set one is
+//! searched for, a bracketed root within each step of the staircase.
 //!
 //! The staircase flips sign half a turn on, as the back-EMF does, so the
 //! steady current does too: `i(θ0 + π) = -i(θ0)`, a fixed point found by
