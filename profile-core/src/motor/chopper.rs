@@ -146,11 +146,8 @@ struct Winding {
     lead_sc: (f64, f64),
     /// `V / R`, the current `+V` drives at rest.
     dc: f64,
-    /// The steady response to the back-EMF: `a sin θ + b cos θ`.
-    a: f64,
-    b: f64,
-    /// `R / X`: the current's decay per radian.
-    rho: f64,
+    /// The winding's response to the back-EMF and its decay.
+    response: Response,
     /// `E / X`: the back-EMF's push on the current per radian.
     emf: f64,
 }
@@ -163,23 +160,60 @@ struct Start {
     offset: f64,
 }
 
+/// A phase's current under a constant voltage `v`,
+/// `v/R + a sin θ + b cos θ + k e^(-ρ(θ - t0))`: its steady response to the
+/// back-EMF (`a`, `b`) and its decay per radian `ρ = R / X`, the same for
+/// every voltage and start.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Response {
+    pub a: f64,
+    pub b: f64,
+    pub rho: f64,
+}
+
+impl Response {
+    /// The response of a winding of resistance `r`, reactance `x` and
+    /// back-EMF amplitude `e`.
+    pub fn new(r: f64, x: f64, e: f64) -> Self {
+        let den = r * r + x * x;
+        Response {
+            a: e * r / den,
+            b: -e * x / den,
+            rho: r / x,
+        }
+    }
+
+    /// The steady response at `t`, `a sin t + b cos t`.
+    pub fn steady(&self, t: f64) -> f64 {
+        self.a * libm::sin(t) + self.b * libm::cos(t)
+    }
+
+    /// An antiderivative of `-i(u) sin u` at `u` for the current
+    /// `dc + a sin u + b cos u + k e^(-ρ(u - t0))`.
+    pub fn integral(&self, dc: f64, k: f64, t0: f64, u: f64) -> f64 {
+        let (a, b, rho) = (self.a, self.b, self.rho);
+        let decaying = k * libm::exp(-rho * (u - t0)) * (rho * libm::sin(u) + libm::cos(u))
+            / (rho * rho + 1.0);
+        let steady = dc * libm::cos(u) - a * (0.5 * u - 0.25 * libm::sin(2.0 * u))
+            + 0.25 * b * libm::cos(2.0 * u);
+        decaying + steady
+    }
+}
+
 impl Winding {
     fn new(phase: &Phase, lead: f64) -> Self {
-        let den = phase.r * phase.r + phase.x * phase.x;
         Winding {
             amp: phase.amp,
             lead,
             lead_sc: (libm::sin(lead), libm::cos(lead)),
             dc: phase.volts / phase.r,
-            a: phase.e * phase.r / den,
-            b: -phase.e * phase.x / den,
-            rho: phase.r / phase.x,
+            response: Response::new(phase.r, phase.x, phase.e),
             emf: phase.e / phase.x,
         }
     }
 
     fn start(&self, t0: f64, i0: f64) -> Start {
-        let offset = i0 - (self.a * libm::sin(t0) + self.b * libm::cos(t0));
+        let offset = i0 - self.response.steady(t0);
         Start { t0, offset }
     }
 
@@ -192,12 +226,13 @@ impl Winding {
     /// `i(t) = (i0 - s(t0)) e^-ρΔ + (V/R)(1 - e^-ρΔ) + s(t)` and
     /// `i' = ρ (V/R - i) + (E/X) sin t`.
     fn ahead(&self, t: f64, from: Start) -> (f64, f64) {
-        let grown = libm::expm1(-self.rho * (t - from.t0));
+        let Response { a, b, rho } = self.response;
+        let grown = libm::expm1(-rho * (t - from.t0));
         let (sin, cos) = (libm::sin(t), libm::cos(t));
-        let current = from.offset * (1.0 + grown) - self.dc * grown + self.a * sin + self.b * cos;
+        let current = from.offset * (1.0 + grown) - self.dc * grown + a * sin + b * cos;
         let (ls, lc) = self.lead_sc;
         let reference = self.amp * (cos * lc - sin * ls);
-        let slope = self.rho * (self.dc - current) + self.emf * sin;
+        let slope = rho * (self.dc - current) + self.emf * sin;
         let reference_slope = -self.amp * (sin * lc + cos * ls);
         (current - reference, slope - reference_slope)
     }
@@ -205,7 +240,7 @@ impl Winding {
     /// The current at `s` of the periodic square wave switching to `+V`
     /// at `s`: `i(s + π) = -i(s)` gives `s(s) - (V/R) tanh(ρπ/2)`.
     fn periodic(&self, s: f64) -> f64 {
-        self.a * libm::sin(s) + self.b * libm::cos(s) - self.dc * libm::tanh(0.5 * self.rho * PI)
+        self.response.steady(s) - self.dc * libm::tanh(0.5 * self.response.rho * PI)
     }
 
     /// Where the square wave switches to `+V`: the angle in
@@ -216,9 +251,10 @@ impl Winding {
     /// in it (an edge that rounding alone reaches).
     fn switching(&self, start: f64, wide: f64) -> f64 {
         let (ls, lc) = self.lead_sc;
-        let (alpha, beta) = (self.a + self.amp * ls, self.b - self.amp * lc);
+        let Response { a, b, rho } = self.response;
+        let (alpha, beta) = (a + self.amp * ls, b - self.amp * lc);
         let size = libm::hypot(alpha, beta);
-        let level = self.dc * libm::tanh(0.5 * self.rho * PI);
+        let level = self.dc * libm::tanh(0.5 * rho * PI);
         let centre = libm::atan2(alpha, beta);
         let spread = libm::acos((level / size).clamp(-1.0, 1.0));
         let into = |s: f64| {
@@ -242,13 +278,8 @@ impl Winding {
     /// An antiderivative of `-i(θ) sin θ` for the current under `+V` from
     /// `from`.
     fn driven_integral(&self, t: f64, from: Start) -> f64 {
-        let c = from.offset - self.dc;
-        let decaying =
-            c * libm::exp(-self.rho * (t - from.t0)) * (self.rho * libm::sin(t) + libm::cos(t))
-                / (self.rho * self.rho + 1.0);
-        let steady = self.dc * libm::cos(t) - self.a * (0.5 * t - 0.25 * libm::sin(2.0 * t))
-            + 0.25 * self.b * libm::cos(2.0 * t);
-        decaying + steady
+        self.response
+            .integral(self.dc, from.offset - self.dc, from.t0, t)
     }
 }
 

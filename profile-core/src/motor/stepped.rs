@@ -27,7 +27,7 @@
 
 use core::f64::consts::{PI, TAU};
 
-use super::chopper::{STILL, largest_over_lead};
+use super::chopper::{Response, STILL, largest_over_lead};
 
 /// A drive's set current over a turn: the levels (times the set current)
 /// of its steps, each `width` radians wide, the first centred on `0`.
@@ -282,39 +282,24 @@ impl SteppedPhase {
 
     /// The current under `v` from `i` at `t`, as a function of the angle.
     fn driven(&self, t: f64, i: f64, v: f64) -> impl Fn(f64) -> f64 {
-        let (a, b, rho) = self.response();
+        let response = self.response();
         let dc = v / self.r;
-        let offset = i - (dc + a * libm::sin(t) + b * libm::cos(t));
-        move |s| dc + a * libm::sin(s) + b * libm::cos(s) + offset * libm::exp(-rho * (s - t))
+        let offset = i - (dc + response.steady(t));
+        move |s| dc + response.steady(s) + offset * libm::exp(-response.rho * (s - t))
     }
 
-    /// The steady response to the back-EMF, `a sin θ + b cos θ`, and the
-    /// decay per radian `ρ = R / X`.
-    fn response(&self) -> (f64, f64, f64) {
-        let den = self.r * self.r + self.x * self.x;
-        (
-            self.e * self.r / den,
-            -self.e * self.x / den,
-            self.r / self.x,
-        )
+    /// The winding's response to the back-EMF and its decay.
+    fn response(&self) -> Response {
+        Response::new(self.r, self.x, self.e)
     }
 
     /// `∫ -i sin θ dθ` over `[t, s]` for the current under `v` from `i`
     /// at `t`.
     fn driven_integral(&self, t: f64, s: f64, i: f64, v: f64) -> f64 {
-        let (a, b, rho) = self.response();
+        let response = self.response();
         let dc = v / self.r;
-        let k = i - (dc + a * libm::sin(t) + b * libm::cos(t));
-        // Antiderivatives of -dc sin, -a sin², -b sin cos and
-        // -k e^(-ρ(θ - t)) sin.
-        let steady = |u: f64| {
-            dc * libm::cos(u) - a * (0.5 * u - 0.25 * libm::sin(2.0 * u))
-                + 0.25 * b * libm::cos(2.0 * u)
-        };
-        let decaying = |u: f64| {
-            k * libm::exp(-rho * (u - t)) * (rho * libm::sin(u) + libm::cos(u)) / (rho * rho + 1.0)
-        };
-        steady(s) - steady(t) + decaying(s) - decaying(t)
+        let k = i - (dc + response.steady(t));
+        response.integral(dc, k, t, s) - response.integral(dc, k, t, t)
     }
 }
 
