@@ -347,33 +347,33 @@ fn print_pull_out(out: &mut String, bound: &[&Profile]) {
                 .map(|&hz| f(hz).map_or(format!("{:>9}", "-"), |nm| format!("{nm:>9.4}")))
                 .collect()
         };
-        let _ = writeln!(out, "\n`{}`: the motor's pull-out torque, N·m", p.name);
-        let _ = writeln!(
-            out,
-            "{:<50}{}",
-            "  at step frequency (Hz)",
-            points
-                .iter()
-                .map(|hz| format!("{hz:>9.1}"))
-                .collect::<String>()
-        );
         let derived = row(&|hz| motor.derived_pull_out(hz));
         // The drive, where it is not the default sine.
         let drive = match motor.windings.map(|w| w.drive) {
             Some(Drive::Sine) | None => String::new(),
             Some(d) => format!(", {}", d.name()),
         };
+        let frequencies: String = points.iter().map(|hz| format!("{hz:>9.1}")).collect();
+        let mut rows = vec![("  at step frequency (Hz)".to_string(), frequencies)];
         match motor.torque_curve {
             Some(curve) => {
                 let typed = row(&|hz| Some(curve.torque(hz)));
-                let _ = writeln!(out, "{:<50}{typed}", "  `torque_curve` (used by the check)");
-                let label = format!("  derived from the windings{drive}");
-                let _ = writeln!(out, "{label:<50}{derived}");
+                rows.push(("  `torque_curve` (used by the check)".to_string(), typed));
+                rows.push((format!("  derived from the windings{drive}"), derived));
             }
-            None => {
-                let label = format!("  derived from the windings{drive} (used by the check)");
-                let _ = writeln!(out, "{label:<50}{derived}");
-            }
+            None => rows.push((
+                format!("  derived from the windings{drive} (used by the check)"),
+                derived,
+            )),
+        }
+        // The figures start in one column, after the longest label.
+        let width = rows
+            .iter()
+            .map(|(label, _)| label.chars().count() + 2)
+            .fold(50, usize::max);
+        let _ = writeln!(out, "\n`{}`: the motor's pull-out torque, N·m", p.name);
+        for (label, figures) in rows {
+            let _ = writeln!(out, "{label:<width$}{figures}");
         }
     }
 }

@@ -366,6 +366,36 @@ fn report_labels_the_windings_curve_as_the_checked_one_when_it_is_the_only_one()
 }
 
 #[test]
+fn report_names_a_stepped_drive_and_keeps_the_figures_in_their_columns() {
+    let dir = work_dir("report_windings_half_step");
+    let text_in = WINDINGS_ONLY.replace(
+        "supply_voltage = 12\n",
+        "supply_voltage = 12\ndrive = \"half_step\"\n",
+    );
+    fs::write(dir.join("profiles.toml"), text_in).unwrap();
+    let out = run(&dir, &["report", "profiles.toml"]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let report = text(&out.stdout);
+    let pull_out = report
+        .split("`p`: the motor's pull-out torque, N·m\n")
+        .nth(1)
+        .unwrap_or_else(|| panic!("{report}"));
+    let lines: Vec<&str> = pull_out.lines().take(2).collect();
+    assert!(
+        lines[1].starts_with("  derived from the windings, half_step (used by the check)  "),
+        "{pull_out}"
+    );
+    // The label is longer than the column the labels had: the frequencies
+    // above move with the figures (each a column 9 wide), so the two lines
+    // end together.
+    assert_eq!(
+        lines[0].chars().count(),
+        lines[1].chars().count(),
+        "{pull_out}"
+    );
+}
+
+#[test]
 fn a_reader_that_stops_early_is_not_an_error() {
     let dir = work_dir("pipe");
     let mut child = Command::new(BIN)
