@@ -177,3 +177,126 @@ fn strings_with_units_read_as_numbers() {
          without quotes)"
     );
 }
+
+/// A sigmoid driving a motor given by its windings, every motor key that
+/// takes a number set.
+fn motor_base() -> Vec<(&'static str, Value)> {
+    let f = |v: f64| Value::Float(v);
+    let mut args = base("sigmoid");
+    args.extend([
+        ("step_angle", f(1.8)),
+        ("rotor_inertia", f(6.8e-6)),
+        ("load_inertia", f(1.36e-5)),
+        ("friction", f(0.02)),
+        ("resistance", f(0.88)),
+        ("inductance", f(3.4e-3)),
+        ("rated_current", f(4.2)),
+        ("holding_torque", f(3.0)),
+        ("supply_voltage", f(36.0)),
+        ("detent_torque", f(0.015)),
+    ]);
+    args
+}
+
+/// The units a motor key accepts and their powers of ten, written out here
+/// from the datasheets' symbols.
+fn motor_exponent(key: &str, unit: &str) -> Option<i32> {
+    let inertia = key.ends_with("_inertia");
+    let torque = ["friction", "holding_torque", "detent_torque"].contains(&key);
+    match unit {
+        "kgm2" | "kg·m²" if inertia => Some(0),
+        "gcm2" | "g·cm²" if inertia => Some(-7),
+        "Nm" | "N·m" if torque => Some(0),
+        "Ncm" | "N·cm" if torque => Some(-2),
+        "mNm" | "mN·m" if torque => Some(-3),
+        "ohm" | "ohms" | "Ω" | "\u{2126}" if key == "resistance" => Some(0),
+        "mohm" | "mΩ" if key == "resistance" => Some(-3),
+        "H" if key == "inductance" => Some(0),
+        "mH" if key == "inductance" => Some(-3),
+        "uH" | "µH" | "μH" if key == "inductance" => Some(-6),
+        "A" if key == "rated_current" => Some(0),
+        "mA" if key == "rated_current" => Some(-3),
+        "V" if key == "supply_voltage" => Some(0),
+        "deg" | "°" if key == "step_angle" => Some(0),
+        _ => None,
+    }
+}
+
+const MOTOR_UNITS: &[&str] = &[
+    "kgm2", "kg·m²", "gcm2", "g·cm²", "Nm", "N·m", "Ncm", "N·cm", "mNm", "mN·m", "ohm", "ohms",
+    "Ω", "\u{2126}", "H", "mH", "uH", "µH", "μH", "A", "mA", "V", "deg", "°", "kgcm2", "gm2",
+    "Nmm", "kNm", "mohm", "mΩ", "kohm", "h", "mh", "MH", "nH", "a", "kA", "mV", "kV", "v", "rad",
+    "Hz", "ms", "oz·in", "lb", "f64", "u32",
+];
+
+#[test]
+fn a_motors_keys_read_units_as_the_numbers_they_stand_for() {
+    let cases: usize = std::env::var("FUZZ_CASES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(3000);
+    let mut rng = Rng(0x2545_F491_4F6C_DD1D);
+    let plain_motor = read(&motor_base()).map(|r| r.motor);
+    assert!(matches!(plain_motor, Ok(Some(_))), "{plain_motor:?}");
+    let (mut accepted, mut refused) = (0, 0);
+    for _ in 0..cases {
+        let mut args = motor_base();
+        let first_motor_key = args.len() - 10;
+        let slot = first_motor_key + rng.below(10);
+        let key = args[slot].0;
+        // Half the time a unit the key accepts.
+        let own = rng.below(2) == 0;
+        let unit = loop {
+            let unit = MOTOR_UNITS[rng.below(MOTOR_UNITS.len())];
+            if !own || motor_exponent(key, unit).is_some() {
+                break unit;
+            }
+        };
+        let base_value = match &args[slot].1 {
+            Value::Float(v) => *v,
+            other => panic!("{other:?}"),
+        };
+        let k = motor_exponent(key, unit).unwrap_or(0);
+        let digits = rng.below(4);
+        let scaled = base_value / 10f64.powi(k);
+        let number = format!("{scaled:.digits$}");
+        // As a macro's literal with a suffix, or as a string.
+        args[slot].1 = if rng.below(2) == 0 {
+            Value::Quantity {
+                number: number.clone(),
+                unit: unit.to_string(),
+                written: format!("{number}{unit}"),
+            }
+        } else {
+            Value::Name(format!("{number} {unit}"))
+        };
+        let with_unit = read(&args);
+        match motor_exponent(key, unit) {
+            None => {
+                let message = with_unit.expect_err(&format!("`{key} = {number} {unit}` accepted"));
+                assert!(
+                    message.starts_with(&format!("`{key}` ")),
+                    "`{key} = {number} {unit}`: {message}"
+                );
+                refused += 1;
+            }
+            Some(e) => {
+                let value: f64 = format!("{number}e{e}").parse().unwrap();
+                let mut plain = args.clone();
+                plain[slot].1 = Value::Float(value);
+                let expected = read(&plain);
+                assert_eq!(
+                    with_unit.as_ref().map(|r| r.motor),
+                    expected.as_ref().map(|r| r.motor),
+                    "`{key} = {number} {unit}` against `{key} = {value}`"
+                );
+                accepted += 1;
+            }
+        }
+    }
+    println!("{cases} random motor units: {accepted} read as their value, {refused} refused");
+    assert!(
+        accepted > cases / 3 && refused > cases / 3,
+        "{accepted} accepted, {refused} refused"
+    );
+}

@@ -89,8 +89,13 @@ mod include;
 /// Integer literals are accepted where a number is expected. A frequency may
 /// carry a unit, `Hz`, `kHz` or `MHz`, and a time `s`, `ms` or `us`, with or
 /// without a space (`fmax = 64kHz`, `timer_hz = 10 MHz`, `tau = 5ms`): the
-/// number is scaled in decimal, so `64kHz` gives the table of `64_000`. Any
-/// other suffix, a type suffix such as `500u32` included, is an error. Every
+/// number is scaled in decimal, so `64kHz` gives the table of `64_000`. A
+/// motor's keys take its datasheet's units: inertia `kgm2` or `gcm2`
+/// (`rotor_inertia = 68gcm2`), torque `Nm`, `Ncm` or `mNm`, resistance
+/// `ohm` or `mohm`, inductance `H`, `mH` or `uH`, current `A` or `mA`,
+/// voltage `V`, `step_angle` `deg`; a string takes the symbols too
+/// (`"68 g·cm²"`, `"0.5 Ω"`, `"40 N·cm"`, `"1.8°"`). Any other suffix, a
+/// type suffix such as `500u32` included, is an error. Every
 /// mistake is a compile error at the offending key or value, saying what is
 /// expected.
 #[proc_macro]

@@ -164,6 +164,15 @@ pub fn unit(key: Key) -> &'static str {
         Key::FMIN | Key::FMAX => "Hz (steps/s)",
         Key::TIMER_HZ => "Hz",
         Key::ACCEL => "Hz/s",
+        Key::MAX_START_HZ => "Hz",
+        Key::STEP_ANGLE => "degrees",
+        Key::ROTOR_INERTIA | Key::LOAD_INERTIA => "kg·m²",
+        Key::FRICTION | Key::HOLDING_TORQUE | Key::DETENT_TORQUE => "N·m",
+        Key::DAMPING => "N·m·s/rad",
+        Key::RESISTANCE => "Ω",
+        Key::INDUCTANCE => "H",
+        Key::RATED_CURRENT => "A",
+        Key::SUPPLY_VOLTAGE => "V",
         _ => ROOMS
             .iter()
             .flat_map(|r| r.units)

@@ -1,5 +1,6 @@
-//! Units: which keys take a frequency or a time, the units each accepts,
-//! and numbers written with one (`64kHz`, `"5 ms"`) read exactly.
+//! Units: which keys take a frequency, a time or one of a motor's
+//! quantities, the units each accepts, and numbers written with one
+//! (`64kHz`, `"5 ms"`, `3.4mH`, `"68 g·cm²"`) read exactly.
 //!
 //! A unit scales the number as written, in decimal, before it becomes a
 //! float: `64kHz` is the integer 64000, `0.1MHz` the integer 100000 and
@@ -16,12 +17,47 @@ use crate::base::key::Key;
 
 /// What a numeric key measures, when it has a unit.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum Quantity {
     /// A frequency: `Hz`, `kHz`, `MHz`.
     Frequency,
     /// A time: `s`, `ms`, `us`.
     Time,
+    /// A moment of inertia: `kgm2` (kg·m²), `gcm2` (g·cm², 1e-7 kg·m²).
+    Inertia,
+    /// A torque: `Nm` (N·m), `Ncm` (N·cm), `mNm` (mN·m).
+    Torque,
+    /// A resistance: `ohm` (Ω), `mohm` (mΩ).
+    Resistance,
+    /// An inductance: `H`, `mH`, `uH`.
+    Inductance,
+    /// A current: `A`, `mA`.
+    Current,
+    /// A voltage: `V`.
+    Voltage,
+    /// An angle: `deg` (°).
+    Angle,
 }
+
+/// Other spellings of units: the symbols a datasheet prints, which a Rust
+/// literal's suffix cannot hold but a string can (`"68 g·cm²"`).
+const ALIASES: [(&str, &str); 14] = [
+    ("µs", "us"),
+    ("μs", "us"),
+    ("µH", "uH"),
+    ("μH", "uH"),
+    ("kg·m²", "kgm2"),
+    ("g·cm²", "gcm2"),
+    ("N·m", "Nm"),
+    ("N·cm", "Ncm"),
+    ("mN·m", "mNm"),
+    ("Ω", "ohm"),
+    // U+2126 OHM SIGN, which some keyboards and fonts give for Ω.
+    ("\u{2126}", "ohm"),
+    ("ohms", "ohm"),
+    ("mΩ", "mohm"),
+    ("°", "deg"),
+];
 
 impl Quantity {
     /// The units accepted, each with its power of ten, the base unit first.
@@ -29,15 +65,23 @@ impl Quantity {
         match self {
             Quantity::Frequency => &[("Hz", 0), ("kHz", 3), ("MHz", 6)],
             Quantity::Time => &[("s", 0), ("ms", -3), ("us", -6)],
+            Quantity::Inertia => &[("kgm2", 0), ("gcm2", -7)],
+            Quantity::Torque => &[("Nm", 0), ("Ncm", -2), ("mNm", -3)],
+            Quantity::Resistance => &[("ohm", 0), ("mohm", -3)],
+            Quantity::Inductance => &[("H", 0), ("mH", -3), ("uH", -6)],
+            Quantity::Current => &[("A", 0), ("mA", -3)],
+            Quantity::Voltage => &[("V", 0)],
+            Quantity::Angle => &[("deg", 0)],
         }
     }
 
-    /// The power of ten of `unit`, if accepted. `µs` and `μs` are `us`.
+    /// The power of ten of `unit`, if accepted, written as listed or as
+    /// one of its symbols (`µs`, `g·cm²`, `N·m`, `Ω`).
     fn exponent(self, unit: &str) -> Option<i32> {
-        let unit = match unit {
-            "µs" | "μs" => "us",
-            u => u,
-        };
+        let unit = ALIASES
+            .iter()
+            .find(|(alias, _)| *alias == unit)
+            .map_or(unit, |(_, name)| name);
         self.units()
             .iter()
             .find(|(u, _)| *u == unit)
@@ -54,6 +98,13 @@ impl Quantity {
 pub fn quantity(key: Key) -> Option<Quantity> {
     match key {
         Key::MAX_START_HZ => Some(Quantity::Frequency),
+        Key::ROTOR_INERTIA | Key::LOAD_INERTIA => Some(Quantity::Inertia),
+        Key::FRICTION | Key::HOLDING_TORQUE | Key::DETENT_TORQUE => Some(Quantity::Torque),
+        Key::RESISTANCE => Some(Quantity::Resistance),
+        Key::INDUCTANCE => Some(Quantity::Inductance),
+        Key::RATED_CURRENT => Some(Quantity::Current),
+        Key::SUPPLY_VOLTAGE => Some(Quantity::Voltage),
+        Key::STEP_ANGLE => Some(Quantity::Angle),
         _ => match super::unit(key) {
             "Hz" | "Hz (steps/s)" => Some(Quantity::Frequency),
             "s" => Some(Quantity::Time),
@@ -93,8 +144,13 @@ pub fn with_unit(key: Key, number: &str, unit: &str, written: &str) -> Result<Va
     let Some(exponent) = q.exponent(unit) else {
         let names = q.units().iter().map(|(u, _)| *u);
         let hint = did_you_mean(unit, names, Hint::After);
+        let units = if q.units().len() == 1 {
+            "unit"
+        } else {
+            "units"
+        };
         return Err(format!(
-            "`{key}` accepts the units {} (got {got}){hint}",
+            "`{key}` accepts the {units} {} (got {got}){hint}",
             q.listed()
         ));
     };
@@ -321,6 +377,63 @@ mod tests {
         assert_eq!(
             with_unit(Key::ACCEL, "5", "kHz", "5kHz"),
             Err("`accel` takes a plain number (in Hz/s), without a unit (got `5kHz`)".into())
+        );
+    }
+
+    #[test]
+    fn a_motors_keys_take_the_units_of_its_datasheet() {
+        let read = |key, number, unit: &str| with_unit(key, number, unit, "");
+        assert_eq!(read(Key::INDUCTANCE, "3.4", "mH"), Ok(Value::Float(0.0034)));
+        assert_eq!(read(Key::INDUCTANCE, "850", "µH"), Ok(Value::Float(850e-6)));
+        assert_eq!(
+            read(Key::ROTOR_INERTIA, "68", "gcm2"),
+            Ok(Value::Float(6.8e-6))
+        );
+        assert_eq!(
+            read(Key::LOAD_INERTIA, "200", "g·cm²"),
+            Ok(Value::Float(2e-5))
+        );
+        assert_eq!(read(Key::LOAD_INERTIA, "2", "kg·m²"), Ok(Value::Int(2)));
+        assert_eq!(
+            read(Key::HOLDING_TORQUE, "40", "Ncm"),
+            Ok(Value::Float(0.4))
+        );
+        assert_eq!(
+            read(Key::DETENT_TORQUE, "15", "mN·m"),
+            Ok(Value::Float(0.015))
+        );
+        assert_eq!(read(Key::FRICTION, "0.02", "N·m"), Ok(Value::Float(0.02)));
+        assert_eq!(read(Key::RESISTANCE, "0.88", "Ω"), Ok(Value::Float(0.88)));
+        assert_eq!(
+            read(Key::RESISTANCE, "0.88", "\u{2126}"),
+            Ok(Value::Float(0.88))
+        );
+        assert_eq!(
+            read(Key::RATED_CURRENT, "4200", "mA"),
+            Ok(Value::Float(4.2))
+        );
+        assert_eq!(read(Key::SUPPLY_VOLTAGE, "36", "V"), Ok(Value::Int(36)));
+        assert_eq!(read(Key::STEP_ANGLE, "1.8", "°"), Ok(Value::Float(1.8)));
+        assert_eq!(
+            with_unit(Key::INDUCTANCE, "3.4", "mh", "3.4mh"),
+            Err(
+                "`inductance` accepts the units `H`, `mH`, `uH` (got `3.4mh`); did you mean `mH`?"
+                    .into()
+            )
+        );
+        assert_eq!(
+            with_unit(Key::ROTOR_INERTIA, "68", "gcm²", "68 gcm²"),
+            Err("`rotor_inertia` accepts the units `kgm2`, `gcm2` (got `68 gcm²`); did you mean `gcm2`?".into())
+        );
+        // A torque is not a current, nor an inertia a torque.
+        assert!(read(Key::HOLDING_TORQUE, "2.8", "A").is_err());
+        assert!(read(Key::ROTOR_INERTIA, "0.4", "Nm").is_err());
+        assert_eq!(
+            with_unit(Key::DAMPING, "1", "mNms", "1mNms"),
+            Err(
+                "`damping` takes a plain number (in N·m·s/rad), without a unit (got `1mNms`)"
+                    .into()
+            )
         );
     }
 
