@@ -152,3 +152,42 @@ fn a_motor_is_read_in_its_datasheets_units() {
     // the table is the file's.
     assert_eq!(DATASHEET_UNITS.map(u32::from).to_vec(), table);
 }
+
+#[test]
+fn a_torque_curve_is_read_in_its_datasheets_units() {
+    let ramp = "[profiles.p]\ncurve = \"linear\"\nfmin = 100\nfmax = 500\naccel = 1000\n\
+                timer_hz = 1_000_000\nmotor = \"m\"\n";
+    let motor = "[motors.m]\nstep_angle = 1.8\nrotor_inertia = 5.4e-6\ndamping_ratio = 0.1\n";
+    let (units, _) = motor_and_table(&format!(
+        "{motor}torque_curve = [[0, \"40 N·cm\"], [\"1 kHz\", \"330 mNm\"], [\"2_000 Hz\", \
+         \"0.24Nm\"]]\n{ramp}"
+    ));
+    let (plain, _) = motor_and_table(&format!(
+        "{motor}torque_curve = [[0, 0.40], [1000, 0.33], [2000, 0.24]]\n{ramp}"
+    ));
+    assert_eq!(units, plain);
+}
+
+// The same curve in the macro, with and without units: the motor read in
+// units passes the same check (the table itself does not depend on it).
+static CURVE_UNITS: [u16; 120] = period_table!(
+    curve = linear, fmin = 100, fmax = 500, accel = 1000, timer_hz = 1_000_000,
+    step_angle = 1.8, rotor_inertia = 54 gcm2, damping_ratio = 0.1,
+    torque_curve = [(0, 40Ncm), (1kHz, 330 mNm), (2_000 Hz, 0.24 Nm)],
+);
+static CURVE_PLAIN: [u16; 120] = period_table!(
+    curve = linear,
+    fmin = 100,
+    fmax = 500,
+    accel = 1000,
+    timer_hz = 1_000_000,
+    step_angle = 1.8,
+    rotor_inertia = 5.4e-6,
+    damping_ratio = 0.1,
+    torque_curve = [(0, 0.40), (1000, 0.33), (2000, 0.24)],
+);
+
+#[test]
+fn the_macro_reads_a_torque_curve_in_units() {
+    assert_eq!(CURVE_UNITS, CURVE_PLAIN);
+}

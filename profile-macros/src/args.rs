@@ -4,7 +4,8 @@
 //! whole `-500` (a `Span` cannot be joined on stable Rust).
 
 use proc_macro2::TokenStream;
-use profile_core::schema::{self, Arg, MAX_DIGITS, Value, units};
+use profile_core::schema::units::{self, Quantity};
+use profile_core::schema::{self, Arg, MAX_DIGITS, Value};
 use quote::ToTokens;
 use syn::parse::{Parse, ParseStream, Parser};
 use syn::punctuated::Punctuated;
@@ -165,9 +166,9 @@ fn parse_points(input: ParseStream, key: &Ident) -> syn::Result<(Value, Loc, Vec
     let expected =
         || format!("`{key}` expects a list of number pairs, such as `[(0, 0.4), (1000, 0.3)]`");
     let pair = |inner: ParseStream| -> syn::Result<(f64, f64)> {
-        let x = number(inner, true)?;
+        let x = number(inner, Quantity::Frequency)?;
         inner.parse::<Token![,]>()?;
-        let y = number(inner, false)?;
+        let y = number(inner, Quantity::Torque)?;
         let _: Option<Token![,]> = inner.parse()?;
         if !inner.is_empty() {
             return Err(inner.error("expected a pair"));
@@ -191,8 +192,8 @@ fn parse_points(input: ParseStream, key: &Ident) -> syn::Result<(Value, Loc, Vec
         Ok((points, parts))
     };
     let (points, parts) = pairs.parse2(group.stream()).map_err(|e| {
-        // A frequency's unit error names the key and stands at the
-        // literal; any other mistake is the list's.
+        // A unit's error names the key and stands at the literal; any
+        // other mistake is the list's.
         if e.to_string().starts_with("`torque_curve`") {
             e
         } else {
@@ -202,9 +203,10 @@ fn parse_points(input: ParseStream, key: &Ident) -> syn::Result<(Value, Loc, Vec
     Ok((Value::Points(points), loc, parts))
 }
 
-/// A number literal, possibly negative, as `f64`; a frequency (`frequency`)
-/// may carry a unit, `1kHz`.
-fn number(input: ParseStream, frequency: bool) -> syn::Result<f64> {
+/// A number literal, possibly negative, as `f64`, in the base unit of `q`
+/// (a frequency or a torque), which it may carry, with or without a space:
+/// `1kHz`, `40 Ncm`.
+fn number(input: ParseStream, q: Quantity) -> syn::Result<f64> {
     let minus: Option<Token![-]> = input.parse()?;
     let sign = if minus.is_some() { "-" } else { "" };
     let lit = input.step(|cursor| match cursor.literal() {
@@ -212,16 +214,27 @@ fn number(input: ParseStream, frequency: bool) -> syn::Result<f64> {
         None => Err(cursor.error("expected a number")),
     })?;
     let span = lit.span();
+    let mut loc = minus.to_token_stream();
+    lit.to_tokens(&mut loc);
     let (text, suffix) = match Lit::new(lit) {
         Lit::Int(i) => (i.base10_digits().to_string(), i.suffix().to_string()),
         Lit::Float(f) => (f.base10_digits().to_string(), f.suffix().to_string()),
         _ => return Err(syn::Error::new(span, "expected a number")),
     };
-    if text.len() > MAX_DIGITS || !suffix.is_empty() && !frequency {
+    if text.len() > MAX_DIGITS {
         return Err(syn::Error::new(span, "expected a number"));
     }
-    let unit = if suffix.is_empty() { "Hz" } else { &suffix };
-    units::frequency(&format!("{sign}{text}"), unit).map_err(|m| syn::Error::new(span, m))
+    let number = format!("{sign}{text}");
+    let (unit, written) = if !suffix.is_empty() {
+        (suffix.clone(), format!("{number}{suffix}"))
+    } else if input.peek(Ident) {
+        let unit: Ident = input.parse()?;
+        unit.to_tokens(&mut loc);
+        (unit.to_string(), format!("{number} {unit}"))
+    } else {
+        (q.units()[0].0.to_string(), number.clone())
+    };
+    units::curve_point(q, &number, &unit, &written).map_err(|m| syn::Error::new_spanned(loc, m))
 }
 
 /// Parses the macro's input into arguments, or a syntax error.
@@ -263,15 +276,19 @@ mod tests {
             Value::Points(vec![(0.0, 0.4), (1000.0, -10.0)])
         );
         assert!(parse(quote::quote!(torque_curve = [(0, 0.4, 1)])).is_err());
-        let curve = parse(quote::quote!(torque_curve = [(0.5kHz, 0.4), (2 MHz, 0.1)]));
-        assert!(
-            curve.is_err(),
-            "a unit after a space is not a literal in a list"
-        );
         let curve = parse(quote::quote!(torque_curve = [(0.5kHz, 0.4), (2MHz, 0.1)])).unwrap();
         assert_eq!(
             curve[0].value,
             Value::Points(vec![(500.0, 0.4), (2e6, 0.1)])
+        );
+        // Units after a space, and on the torques.
+        let curve = parse(quote::quote!(
+            torque_curve = [(0.5 kHz, 40Ncm), (2 MHz, 100 mNm), (3MHz, 0.05 Nm)]
+        ))
+        .unwrap();
+        assert_eq!(
+            curve[0].value,
+            Value::Points(vec![(500.0, 0.4), (2e6, 0.1), (3e6, 0.05)])
         );
         let units = parse(quote::quote!(
             fmax = 64_000Hz, tau = 5 ms, fmin = -1.5e3Hz, len = 10u32, fmax = 10 khz
@@ -324,7 +341,12 @@ mod tests {
                  did you mean `kHz`?",
             ),
             (
-                "torque_curve = [(1, 0.4Nm)]",
+                "torque_curve = [(1, 0.4 A)]",
+                "`torque_curve` torques accept the units `Nm` (`N·m`), `Ncm` (`N·cm`), `mNm` (`mN·m`) \
+                 (got `0.4 A`)",
+            ),
+            (
+                "torque_curve = [(1, 0.4, Nm)]",
                 "`torque_curve` expects a list of number pairs, such as `[(0, 0.4), (1000, 0.3)]`",
             ),
             (

@@ -94,10 +94,11 @@ mod include;
 /// (`rotor_inertia = 68gcm2`), torque `Nm`, `Ncm` or `mNm`, resistance
 /// `ohm` or `mohm`, inductance `H`, `mH` or `uH`, current `A` or `mA`,
 /// voltage `V`, `step_angle` `deg`; a string takes the symbols too
-/// (`"68 g·cm²"`, `"0.5 Ω"`, `"40 N·cm"`, `"1.8°"`). Any other suffix, a
-/// type suffix such as `500u32` included, is an error. Every
-/// mistake is a compile error at the offending key or value, saying what is
-/// expected.
+/// (`"68 g·cm²"`, `"0.5 Ω"`, `"40 N·cm"`, `"1.8°"`), and `torque_curve`'s
+/// points take frequency and torque units (`[(0, 40Ncm), (1kHz, 33Ncm)]`).
+/// Any other suffix, a type suffix such as `500u32` included, is an error.
+/// Every mistake is a compile error at the offending key or value, saying
+/// what is expected.
 #[proc_macro]
 pub fn period_table(input: proc_macro::TokenStream) -> proc_macro::TokenStream {
     expand::period_table(input.into()).into()

@@ -12,7 +12,8 @@ use toml::Spanned;
 
 use crate::base::key::Key;
 use crate::curves::Room;
-use crate::schema::{self, Arg, Diagnostic, Hint, Value, did_you_mean, units};
+use crate::schema::units::{self, Quantity};
+use crate::schema::{self, Arg, Diagnostic, Hint, Value, did_you_mean};
 
 type Table = BTreeMap<Spanned<String>, Spanned<toml::Value>>;
 
@@ -87,46 +88,57 @@ fn value(v: &Spanned<toml::Value>) -> Value {
         toml::Value::String(s) => Value::Name(s.clone()),
         toml::Value::Boolean(_) => Value::Other("a boolean".into()),
         toml::Value::Datetime(_) => Value::Other("a date".into()),
-        toml::Value::Array(items) => {
-            points(items).map_or_else(|| Value::Other("an array".into()), Value::Points)
-        }
+        toml::Value::Array(items) => match points(items) {
+            Ok(Some(points)) => Value::Points(points),
+            Ok(None) => Value::Other("an array".into()),
+            Err((part, message)) => Value::Refused { message, part },
+        },
         toml::Value::Table(_) => Value::Other("a table".into()),
     }
 }
 
+/// What is wrong with an array's element: its index and the message.
+type AtElement = (usize, String);
+
 /// `[[x, y], ...]` as number pairs, if that is what the array holds; a
-/// frequency `x` may be a string with a unit, `"1.5 kHz"`.
-fn points(items: &[toml::Value]) -> Option<Vec<(f64, f64)>> {
-    let number = |v: &toml::Value| match v {
-        toml::Value::Integer(i) => Some(*i as f64),
-        toml::Value::Float(f) => Some(*f),
-        _ => None,
+/// frequency `x` or a torque `y` may be a string with a unit, `"1.5 kHz"`,
+/// `"40 N·cm"`. A unit the pair does not take is an error at its element.
+fn points(items: &[toml::Value]) -> Result<Option<Vec<(f64, f64)>>, AtElement> {
+    let number = |v: &toml::Value, q: Quantity| match v {
+        toml::Value::Integer(i) => Ok(Some(*i as f64)),
+        toml::Value::Float(f) => Ok(Some(*f)),
+        toml::Value::String(s) => match units::split(s) {
+            Some((n, unit)) => units::curve_point(q, &n.replace('_', ""), unit, s.trim()).map(Some),
+            None => Ok(None),
+        },
+        _ => Ok(None),
     };
-    let frequency = |v: &toml::Value| match v {
-        toml::Value::String(s) => {
-            let (n, unit) = units::split(s)?;
-            units::frequency(n, unit).ok()
+    let mut points = Vec::new();
+    for (part, item) in items.iter().enumerate() {
+        let Some([x, y]) = item.as_array().map(|a| a.as_slice()) else {
+            return Ok(None);
+        };
+        let x = number(x, Quantity::Frequency).map_err(|m| (part, m))?;
+        let y = number(y, Quantity::Torque).map_err(|m| (part, m))?;
+        match (x, y) {
+            (Some(x), Some(y)) => points.push((x, y)),
+            _ => return Ok(None),
         }
-        other => number(other),
-    };
-    items
-        .iter()
-        .map(|item| match item.as_array().map(|a| a.as_slice()) {
-            Some([x, y]) => Some((frequency(x)?, number(y)?)),
-            _ => None,
-        })
-        .collect()
+    }
+    Ok(Some(points))
 }
 
 fn arg(source: &str, key: &Spanned<String>, v: &Spanned<toml::Value>) -> Arg<Range<usize>> {
     let value = value(v);
     // Each point's place, where the reading finds one for each.
-    let parts = match &value {
-        Value::Points(points) => Some(elements(source, v.span()))
-            .filter(|parts| parts.len() == points.len())
-            .unwrap_or_default(),
-        _ => Vec::new(),
+    let count = match (&value, v.get_ref()) {
+        (Value::Points(points), _) => points.len(),
+        (Value::Refused { .. }, toml::Value::Array(items)) => items.len(),
+        _ => 0,
     };
+    let parts = Some(elements(source, v.span()))
+        .filter(|parts| count > 0 && parts.len() == count)
+        .unwrap_or_default();
     Arg {
         key: key.get_ref().clone(),
         key_loc: key.span(),

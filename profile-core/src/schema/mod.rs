@@ -47,6 +47,15 @@ pub enum Value {
     },
     /// A list of `(x, y)` number pairs: `[(0, 0.4), (1000, 0.3)]`.
     Points(Vec<(f64, f64)>),
+    /// A list of pairs whose element `part` (counted from 0) the front end
+    /// could not read, and why: a unit a torque curve's point does not
+    /// take (`[[0, "40 Ncn"]]` in a profiles file).
+    Refused {
+        /// The message, naming the key.
+        message: String,
+        /// The element at fault.
+        part: usize,
+    },
     /// A value of a kind no key takes, described: `a boolean`, `an array`.
     Other(String),
 }
@@ -65,6 +74,7 @@ impl Value {
             }
             Value::Other(kind) => kind.clone(),
             Value::Points(_) => "a list of points".to_string(),
+            Value::Refused { .. } => "an array".to_string(),
             other => format!("`{other}`"),
         }
     }
@@ -76,6 +86,7 @@ impl core::fmt::Display for Value {
             Value::Int(v) => write!(f, "{v}"),
             Value::Float(v) => write!(f, "{v:?}"),
             Value::Name(v) | Value::Other(v) => f.write_str(v),
+            Value::Refused { message, .. } => f.write_str(message),
             Value::Quantity { written, .. } => f.write_str(written),
             Value::Points(points) => {
                 f.write_str("[")?;

@@ -37,6 +37,20 @@ impl<L: Clone> Collector<'_, L> {
         ));
     }
 
+    /// At element `part` of a list's value, or at the value where the
+    /// front end gave no place for it.
+    pub(crate) fn at_part(&mut self, index: usize, part: usize, message: String) {
+        let arg = &self.args[index];
+        let loc = arg.parts.get(part).unwrap_or(&arg.value_loc);
+        self.diagnostics.push((
+            index,
+            Diagnostic {
+                loc: loc.clone(),
+                message,
+            },
+        ));
+    }
+
     pub(crate) fn at_whole(&mut self, message: String) {
         self.diagnostics.push((
             usize::MAX,
@@ -250,6 +264,10 @@ pub(crate) fn motor<L: Clone>(c: &mut Collector<'_, L>, assumed: &[Key]) -> Opti
                     None
                 }
             },
+            Value::Refused { message, part } => {
+                c.at_part(i, *part, message.clone());
+                None
+            }
             other => {
                 let message = format!(
                     "`torque_curve` expects a list of (step frequency in Hz, torque in N·m) \

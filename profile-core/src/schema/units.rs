@@ -88,9 +88,21 @@ impl Quantity {
             .map(|(_, e)| *e)
     }
 
-    /// The accepted units, for messages: `` `Hz`, `kHz`, `MHz` ``.
+    /// The accepted units, for messages, each with the symbol a datasheet
+    /// prints where it has one: `` `Hz`, `kHz`, `MHz` ``,
+    /// `` `kgm2` (`kg·m²`), `gcm2` (`g·cm²`) ``.
     pub fn listed(self) -> String {
-        quoted(self.units().iter().map(|(u, _)| *u))
+        let symbol = |unit: &str| {
+            ALIASES
+                .iter()
+                .find(|(alias, name)| *name == unit && !alias.is_ascii())
+                .map_or(String::new(), |(alias, _)| format!(" (`{alias}`)"))
+        };
+        self.units()
+            .iter()
+            .map(|(u, _)| format!("{}{}", quoted([u]), symbol(u)))
+            .collect::<std::vec::Vec<_>>()
+            .join(", ")
     }
 }
 
@@ -300,23 +312,25 @@ fn shift_decimal(s: &str, k: i32) -> Option<String> {
     })
 }
 
-/// A torque curve's frequency written `number` `unit`, in Hz, or what is
-/// wrong.
-pub fn frequency(number: &str, unit: &str) -> Result<f64, String> {
-    let q = Quantity::Frequency;
+/// A torque curve's frequency (in Hz) or torque (in N·m) written
+/// `number` `unit` (`written` as the source has it, for messages), or what
+/// is wrong.
+pub fn curve_point(q: Quantity, number: &str, unit: &str, written: &str) -> Result<f64, String> {
+    let what = match q {
+        Quantity::Frequency => "frequencies",
+        _ => "torques",
+    };
     let Some(exponent) = q.exponent(unit) else {
         let hint = did_you_mean(unit, q.units().iter().map(|(u, _)| *u), Hint::After);
         return Err(format!(
-            "`torque_curve` frequencies accept the units {} (got `{number}{unit}`){hint}",
+            "`torque_curve` {what} accept the units {} (got `{written}`){hint}",
             q.listed()
         ));
     };
     match scaled(number, exponent) {
         Some(Value::Int(v)) => Ok(v as f64),
         Some(Value::Float(v)) => Ok(v),
-        _ => Err(format!(
-            "`torque_curve` expects numbers, got `{number}{unit}`"
-        )),
+        _ => Err(format!("`torque_curve` expects numbers, got `{written}`")),
     }
 }
 
@@ -417,13 +431,13 @@ mod tests {
         assert_eq!(
             with_unit(Key::INDUCTANCE, "3.4", "mh", "3.4mh"),
             Err(
-                "`inductance` accepts the units `H`, `mH`, `uH` (got `3.4mh`); did you mean `mH`?"
+                "`inductance` accepts the units `H`, `mH`, `uH` (`µH`) (got `3.4mh`); did you mean `mH`?"
                     .into()
             )
         );
         assert_eq!(
             with_unit(Key::ROTOR_INERTIA, "68", "gcm²", "68 gcm²"),
-            Err("`rotor_inertia` accepts the units `kgm2`, `gcm2` (got `68 gcm²`); did you mean `gcm2`?".into())
+            Err("`rotor_inertia` accepts the units `kgm2` (`kg·m²`), `gcm2` (`g·cm²`) (got `68 gcm²`); did you mean `gcm2`?".into())
         );
         // A torque is not a current, nor an inertia a torque.
         assert!(read(Key::HOLDING_TORQUE, "2.8", "A").is_err());
