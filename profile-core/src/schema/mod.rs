@@ -86,7 +86,7 @@ impl core::fmt::Display for Value {
             Value::Int(v) => write!(f, "{v}"),
             Value::Float(v) => write!(f, "{v:?}"),
             Value::Name(v) | Value::Other(v) => f.write_str(v),
-            Value::Refused { message, .. } => f.write_str(message),
+            Value::Refused { .. } => f.write_str("an array"),
             Value::Quantity { written, .. } => f.write_str(written),
             Value::Points(points) => {
                 f.write_str("[")?;

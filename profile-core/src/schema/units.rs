@@ -106,22 +106,20 @@ impl Quantity {
     }
 }
 
-/// What `key` measures, if it takes a unit.
+/// What `key` measures, if it takes a unit: read off the unit it is given
+/// in.
 pub fn quantity(key: Key) -> Option<Quantity> {
-    match key {
-        Key::MAX_START_HZ => Some(Quantity::Frequency),
-        Key::ROTOR_INERTIA | Key::LOAD_INERTIA => Some(Quantity::Inertia),
-        Key::FRICTION | Key::HOLDING_TORQUE | Key::DETENT_TORQUE => Some(Quantity::Torque),
-        Key::RESISTANCE => Some(Quantity::Resistance),
-        Key::INDUCTANCE => Some(Quantity::Inductance),
-        Key::RATED_CURRENT => Some(Quantity::Current),
-        Key::SUPPLY_VOLTAGE => Some(Quantity::Voltage),
-        Key::STEP_ANGLE => Some(Quantity::Angle),
-        _ => match super::unit(key) {
-            "Hz" | "Hz (steps/s)" => Some(Quantity::Frequency),
-            "s" => Some(Quantity::Time),
-            _ => None,
-        },
+    match super::unit(key) {
+        "Hz" | "Hz (steps/s)" => Some(Quantity::Frequency),
+        "s" => Some(Quantity::Time),
+        "kg·m²" => Some(Quantity::Inertia),
+        "N·m" => Some(Quantity::Torque),
+        "Ω" => Some(Quantity::Resistance),
+        "H" => Some(Quantity::Inductance),
+        "A" => Some(Quantity::Current),
+        "V" => Some(Quantity::Voltage),
+        "degrees" => Some(Quantity::Angle),
+        _ => None,
     }
 }
 
