@@ -8,7 +8,7 @@ use profile_core::build::Profiles;
 use profile_core::emit::{Profile, start_note};
 use profile_core::motor::{Drive, Motor};
 use profile_core::player::{Player, Ramp};
-use profile_core::schema::describe;
+use profile_core::schema::{describe, describe_motor};
 use profile_core::simulate::{self, SimOptions, SimResult};
 use profile_core::{Compact, Generated};
 use profile_core::{Discretization, Error, Rounding, Spec};
@@ -36,6 +36,25 @@ fn print_parameters(out: &mut String, profiles: &[Profile]) {
             .map(|(key, value)| format!("{key} = {value}"))
             .collect();
         let _ = writeln!(out, "{:<21} {}", p.name, params.join(", "));
+    }
+    let _ = writeln!(out);
+    let bound: Vec<(&str, &Motor)> = profiles
+        .iter()
+        .filter_map(|p| Some((p.name.as_str(), p.motor.as_ref()?)))
+        .collect();
+    if bound.is_empty() {
+        return;
+    }
+    let _ = writeln!(
+        out,
+        "Motors (as the check reads them, in a datasheet's units; defaults included):"
+    );
+    for (name, motor) in bound {
+        let figures: Vec<String> = describe_motor(motor)
+            .into_iter()
+            .map(|(key, value)| format!("{key} = {value}"))
+            .collect();
+        let _ = writeln!(out, "{name:<21} {}", figures.join(", "));
     }
     let _ = writeln!(out);
 }

@@ -396,6 +396,38 @@ fn report_names_a_stepped_drive_and_keeps_the_figures_in_their_columns() {
 }
 
 #[test]
+fn report_shows_each_motor_as_the_check_reads_it_in_datasheet_units() {
+    let expected = "p                     step_angle = 1.8°, microsteps = 1, \
+                    rotor_inertia = 68 g·cm², load_inertia = 136 g·cm², resistance = 0.5 Ω, \
+                    inductance = 0.6 mH, rated_current = 2.8 A, holding_torque = 0.4 N·m, \
+                    supply_voltage = 12 V, detent_torque = 0 N·m, drive = sine, \
+                    friction = 0.02 N·m, damping = 0 N·m·s/rad, damping_ratio = 0, safety = 1";
+    // In SI, and in the datasheet's units: the same figures.
+    let in_units = WINDINGS_ONLY
+        .replace("rotor_inertia = 6.8e-6", "rotor_inertia = \"68 g·cm²\"")
+        .replace("load_inertia = 1.36e-5", "load_inertia = \"136gcm2\"")
+        .replace("friction = 0.02", "friction = \"2 N·cm\"")
+        .replace("inductance = 0.6e-3", "inductance = \"600 µH\"")
+        .replace("holding_torque = 0.40", "holding_torque = \"400 mN·m\"");
+    assert_ne!(in_units, WINDINGS_ONLY);
+    for (name, file) in [
+        ("report_motor_si", WINDINGS_ONLY),
+        ("report_motor_units", &in_units),
+    ] {
+        let dir = work_dir(name);
+        fs::write(dir.join("profiles.toml"), file).unwrap();
+        let out = run(&dir, &["report", "profiles.toml"]);
+        assert!(out.status.success(), "{}", text(&out.stderr));
+        let report = text(&out.stdout);
+        let motors = report
+            .split("Motors (as the check reads them, in a datasheet's units; defaults included):\n")
+            .nth(1)
+            .unwrap_or_else(|| panic!("{report}"));
+        assert_eq!(motors.lines().next(), Some(expected), "{file}");
+    }
+}
+
+#[test]
 fn a_reader_that_stops_early_is_not_an_error() {
     let dir = work_dir("pipe");
     let mut child = Command::new(BIN)

@@ -5,9 +5,10 @@ use std::vec::Vec;
 
 use super::{Arg, Diagnostic};
 use crate::base::error::Error;
+use crate::base::error::Num;
 use crate::base::key::Key;
 use crate::curves::Param;
-use crate::motor::{MotorError, StartLimit};
+use crate::motor::{Motor, MotorError, StartLimit};
 use crate::table::spec::Spec;
 
 /// The spec's parameters as `(key, value)` pairs, in documentation order, as
@@ -34,6 +35,49 @@ pub fn describe(spec: &Spec) -> Vec<(Key, String)> {
         (Key::ROUNDING, spec.rounding.name().to_string()),
         (Key::ARITHMETIC, spec.arithmetic.name().to_string()),
     ]);
+    out
+}
+
+/// A motor's figures as `(key, value)` pairs, in documentation order,
+/// defaults included, in the units its datasheet prints (`68 g·cm²`,
+/// `0.6 mH`): what the check reads, for reports. A torque curve's points
+/// in Hz and N·m, as a profiles file writes them.
+pub fn describe_motor(motor: &Motor) -> Vec<(Key, String)> {
+    let show = |key: Key, v: f64| (key, super::units::show(key, v));
+    let mut out = std::vec![
+        show(Key::STEP_ANGLE, motor.step_angle),
+        (Key::MICROSTEPS, motor.microsteps.to_string()),
+        show(Key::ROTOR_INERTIA, motor.rotor_inertia),
+        show(Key::LOAD_INERTIA, motor.load_inertia),
+    ];
+    if let Some(curve) = &motor.torque_curve {
+        let points: Vec<String> = curve
+            .points()
+            .iter()
+            .map(|(hz, nm)| std::format!("[{}, {}]", Num(*hz), Num(*nm)))
+            .collect();
+        out.push((Key::TORQUE_CURVE, std::format!("[{}]", points.join(", "))));
+    }
+    if let Some(w) = &motor.windings {
+        out.extend([
+            show(Key::RESISTANCE, w.resistance),
+            show(Key::INDUCTANCE, w.inductance),
+            show(Key::RATED_CURRENT, w.rated_current),
+            show(Key::HOLDING_TORQUE, w.holding_torque),
+            show(Key::SUPPLY_VOLTAGE, w.supply_voltage),
+            show(Key::DETENT_TORQUE, w.detent_torque),
+            (Key::DRIVE, w.drive.name().to_string()),
+        ]);
+    }
+    out.extend([
+        show(Key::FRICTION, motor.friction),
+        show(Key::DAMPING, motor.damping),
+        (Key::DAMPING_RATIO, Num(motor.damping_ratio).to_string()),
+        (Key::SAFETY, Num(motor.safety).to_string()),
+    ]);
+    if let Some(hz) = motor.max_start_hz {
+        out.push(show(Key::MAX_START_HZ, hz));
+    }
     out
 }
 

@@ -21,7 +21,7 @@ mod reader;
 mod suggest;
 pub mod units;
 
-pub use describe::{describe, locate, locate_motor};
+pub use describe::{describe, describe_motor, locate, locate_motor};
 pub(crate) use read::value_problems;
 pub use read::{Request, read};
 pub use suggest::{Hint, did_you_mean, suggest};

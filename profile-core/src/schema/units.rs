@@ -75,6 +75,22 @@ impl Quantity {
         }
     }
 
+    /// The unit a datasheet prints values of this quantity in, with its
+    /// power of ten, for a motor's figures; `None` for frequencies and
+    /// times, shown in the largest unit that leaves a number of at least 1.
+    fn shown_in(self) -> Option<(&'static str, i32)> {
+        match self {
+            Quantity::Frequency | Quantity::Time => None,
+            Quantity::Inertia => Some(("g·cm²", -7)),
+            Quantity::Torque => Some(("N·m", 0)),
+            Quantity::Resistance => Some(("Ω", 0)),
+            Quantity::Inductance => Some(("mH", -3)),
+            Quantity::Current => Some(("A", 0)),
+            Quantity::Voltage => Some(("V", 0)),
+            Quantity::Angle => Some(("°", 0)),
+        }
+    }
+
     /// The power of ten of `unit`, if accepted, written as listed or as
     /// one of its symbols (`µs`, `g·cm²`, `N·m`, `Ω`).
     fn exponent(self, unit: &str) -> Option<i32> {
@@ -250,9 +266,15 @@ pub fn split(text: &str) -> Option<(&str, &str)> {
 /// `v` of `key` as a user would write it: `64 kHz`, `10 MHz`, `5 ms`,
 /// `1500 Hz/s`; the largest unit that leaves a number of at least 1. A
 /// value beyond 1e16 or below 1e-6 in the base unit in exponent form
-/// (`1e200 Hz/s`), not hundreds of digits.
+/// (`1e200 Hz/s`), not hundreds of digits. A motor's figures in the units
+/// datasheets print: `68 g·cm²`, `0.4 N·m`, `0.6 mH`, `1.8°`.
 pub fn show(key: Key, v: f64) -> String {
     let plain = Num(v).to_string();
+    if let Some((unit, exponent)) = quantity(key).and_then(Quantity::shown_in) {
+        let shown = shift_exponent(&plain, -exponent);
+        let space = if unit == "°" { "" } else { " " };
+        return format!("{shown}{space}{unit}");
+    }
     if plain.contains('e') {
         let unit = match quantity(key) {
             Some(q) => q.units()[0].0,
@@ -283,6 +305,22 @@ pub fn show(key: Key, v: f64) -> String {
     format!("{shown} {unit}")
 }
 
+/// The decimal text `s`, in exponent form or not (as [`Num`] writes it),
+/// times `10^k`: without an exponent where the result lies within 1e-6 to
+/// 1e16, as [`Num`] writes such numbers.
+fn shift_exponent(s: &str, k: i32) -> String {
+    let (mantissa, exponent) = match s.split_once('e') {
+        Some((m, e)) => (m, e.parse::<i32>().unwrap_or(0)),
+        None => (s, 0),
+    };
+    let exponent = exponent.saturating_add(k);
+    if (-6..=16).contains(&exponent) {
+        shift_decimal(mantissa, exponent).unwrap_or_else(|| s.to_string())
+    } else {
+        format!("{mantissa}e{exponent}")
+    }
+}
+
 /// The decimal text `s` (no exponent, as `f64`'s `Display` writes) times
 /// `10^k`, written without trailing zeros after a point.
 fn shift_decimal(s: &str, k: i32) -> Option<String> {
@@ -293,7 +331,10 @@ fn shift_decimal(s: &str, k: i32) -> Option<String> {
     let (int, frac) = rest.split_once('.').unwrap_or((rest, ""));
     let digits = format!("{int}{frac}");
     let point = i64::try_from(int.len()).ok()? + i64::from(k);
-    let point = usize::try_from(point).ok()?;
+    // A point before the first digit: zeros in front of them.
+    let lead = (1 - point).max(0);
+    let digits = format!("{}{digits}", "0".repeat(usize::try_from(lead).ok()?));
+    let point = usize::try_from(point + lead).ok()?;
     let digits = if point > digits.len() {
         format!("{digits}{}", "0".repeat(point - digits.len()))
     } else {
@@ -482,5 +523,20 @@ mod tests {
         assert_eq!(show(Key::TAU, 1e20), "1e20 s");
         assert_eq!(show(Key::TAU, 2.0), "2 s");
         assert_eq!(show(Key::TAU, 0.0000125), "12.5 us");
+        // A motor's figures in a datasheet's units.
+        assert_eq!(show(Key::ROTOR_INERTIA, 6.8e-6), "68 g·cm²");
+        assert_eq!(show(Key::LOAD_INERTIA, 5.4e-7), "5.4 g·cm²");
+        assert_eq!(show(Key::LOAD_INERTIA, 0.0), "0 g·cm²");
+        assert_eq!(show(Key::LOAD_INERTIA, 2.5e-3), "25000 g·cm²");
+        assert_eq!(show(Key::HOLDING_TORQUE, 0.4), "0.4 N·m");
+        assert_eq!(show(Key::INDUCTANCE, 0.6e-3), "0.6 mH");
+        assert_eq!(show(Key::INDUCTANCE, 3.4e-3), "3.4 mH");
+        assert_eq!(show(Key::INDUCTANCE, 2.5e-5), "0.025 mH");
+        assert_eq!(show(Key::RESISTANCE, 0.88), "0.88 Ω");
+        assert_eq!(show(Key::RATED_CURRENT, 2.8), "2.8 A");
+        assert_eq!(show(Key::SUPPLY_VOLTAGE, 24.0), "24 V");
+        assert_eq!(show(Key::STEP_ANGLE, 1.8), "1.8°");
+        assert_eq!(show(Key::DAMPING, 1e-4), "0.0001 N·m·s/rad");
+        assert_eq!(show(Key::MAX_START_HZ, 1200.0), "1.2 kHz");
     }
 }
