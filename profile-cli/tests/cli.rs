@@ -329,17 +329,27 @@ const WINDINGS_ONLY: &str = "[motors.m]\nstep_angle = 1.8\nrotor_inertia = 6.8e-
      [profiles.p]\ncurve = \"linear\"\nfmin = 300\nfmax = 3000\naccel = 10_000\n\
      timer_hz = 1_000_000\nmotor = \"m\"\n";
 
-#[test]
-fn report_labels_the_windings_curve_as_the_checked_one_when_it_is_the_only_one() {
-    let dir = work_dir("report_windings_only");
-    fs::write(dir.join("profiles.toml"), WINDINGS_ONLY).unwrap();
+/// The report of the profiles file `file`, written in a folder of its own.
+fn report_of(name: &str, file: &str) -> String {
+    let dir = work_dir(name);
+    fs::write(dir.join("profiles.toml"), file).unwrap();
     let out = run(&dir, &["report", "profiles.toml"]);
     assert!(out.status.success(), "{}", text(&out.stderr));
-    let report = text(&out.stdout);
-    let pull_out = report
-        .split("`p`: the motor's pull-out torque, N·m\n")
+    text(&out.stdout)
+}
+
+/// What follows `heading` in `report`.
+fn after<'a>(report: &'a str, heading: &str) -> &'a str {
+    report
+        .split(heading)
         .nth(1)
-        .unwrap_or_else(|| panic!("{report}"));
+        .unwrap_or_else(|| panic!("no {heading:?} in {report}"))
+}
+
+#[test]
+fn report_labels_the_windings_curve_as_the_checked_one_when_it_is_the_only_one() {
+    let report = report_of("report_windings_only", WINDINGS_ONLY);
+    let pull_out = after(&report, "`p`: the motor's pull-out torque, N·m\n");
     let lines: Vec<&str> = pull_out.lines().take(3).collect();
     assert!(
         lines[0].starts_with("  at step frequency (Hz)"),
@@ -367,19 +377,12 @@ fn report_labels_the_windings_curve_as_the_checked_one_when_it_is_the_only_one()
 
 #[test]
 fn report_names_a_stepped_drive_and_keeps_the_figures_in_their_columns() {
-    let dir = work_dir("report_windings_half_step");
-    let text_in = WINDINGS_ONLY.replace(
+    let half_steps = WINDINGS_ONLY.replace(
         "supply_voltage = 12\n",
         "supply_voltage = 12\ndrive = \"half_step\"\n",
     );
-    fs::write(dir.join("profiles.toml"), text_in).unwrap();
-    let out = run(&dir, &["report", "profiles.toml"]);
-    assert!(out.status.success(), "{}", text(&out.stderr));
-    let report = text(&out.stdout);
-    let pull_out = report
-        .split("`p`: the motor's pull-out torque, N·m\n")
-        .nth(1)
-        .unwrap_or_else(|| panic!("{report}"));
+    let report = report_of("report_windings_half_step", &half_steps);
+    let pull_out = after(&report, "`p`: the motor's pull-out torque, N·m\n");
     let lines: Vec<&str> = pull_out.lines().take(2).collect();
     assert!(
         lines[1].starts_with("  derived from the windings, half_step (used by the check)  "),
