@@ -38,8 +38,9 @@ struct Cli {
 
 #[derive(Debug, Subcommand)]
 enum Command {
-    /// Print every profile's parameters and figures, the accuracy of every
-    /// discretization and rounding, and the motor check
+    /// Print every profile's parameters and figures, each motor's figures as
+    /// the check reads them, the accuracy of every discretization and
+    /// rounding, and the motor check
     Report {
         /// The profiles file
         #[arg(default_value = "profiles.toml")]
