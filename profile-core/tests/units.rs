@@ -57,6 +57,40 @@ fn exponent(key: &str, unit: &str) -> Option<i32> {
     }
 }
 
+/// Reads `args`, whose value at `slot` is `number` with a unit (written
+/// `written`, of power of ten `exponent` where the key accepts it), and
+/// judges the outcome: refused with a message that names the key where the
+/// key does not take the unit, else `project`ed the same as the plain
+/// number computed by another route (the float parser on `number e
+/// exponent`, as `plain` writes it). `true` where accepted.
+fn judge<T: PartialEq + std::fmt::Debug>(
+    args: &[(&'static str, Value)],
+    (slot, number, exponent): (usize, &str, Option<i32>),
+    written: &str,
+    plain: impl Fn(f64) -> Value,
+    project: impl Fn(&schema::Request) -> T,
+) -> bool {
+    let key = args[slot].0;
+    let with_unit = read(args);
+    let Some(e) = exponent else {
+        let message = with_unit.expect_err(&format!("`{key} = {written}` accepted"));
+        assert!(
+            message.starts_with(&format!("`{key}` ")),
+            "`{key} = {written}`: {message}"
+        );
+        return false;
+    };
+    let value: f64 = format!("{number}e{e}").parse().unwrap();
+    let mut plain_args = args.to_vec();
+    plain_args[slot].1 = plain(value);
+    assert_eq!(
+        with_unit.as_ref().map(&project),
+        read(&plain_args).as_ref().map(&project),
+        "`{key} = {written}` against `{key} = {value}`"
+    );
+    true
+}
+
 /// A small deterministic generator (xorshift).
 struct Rng(u64);
 
@@ -103,10 +137,7 @@ fn no_suffix_is_ever_ignored() {
         } else {
             SUFFIXES[rng.below(SUFFIXES.len())].to_string()
         };
-        let (k, e) = match exponent(key, &unit) {
-            Some(e) => (e, e),
-            None => (0, 0),
-        };
+        let k = exponent(key, &unit).unwrap_or(0);
         // A number that, in the unit, stands near the base value.
         let base_value = match &args[slot].1 {
             Value::Int(v) => *v as f64,
@@ -121,32 +152,20 @@ fn no_suffix_is_ever_ignored() {
             unit: unit.clone(),
             written: format!("{number}{unit}"),
         };
-        let with_unit = read(&args);
-        match exponent(key, &unit) {
-            None => {
-                let message = with_unit.expect_err(&format!("`{key} = {number}{unit}` accepted"));
-                assert!(
-                    message.starts_with(&format!("`{key}` ")),
-                    "`{key} = {number}{unit}`: {message}"
-                );
-                refused += 1;
+        let plain = |value: f64| {
+            if value.fract() == 0.0 && value.abs() < 1e15 {
+                Value::Int(value as i128)
+            } else {
+                Value::Float(value)
             }
-            Some(_) => {
-                let value: f64 = format!("{number}e{e}").parse().unwrap();
-                let mut plain = args.clone();
-                plain[slot].1 = if value.fract() == 0.0 && value.abs() < 1e15 {
-                    Value::Int(value as i128)
-                } else {
-                    Value::Float(value)
-                };
-                let expected = read(&plain);
-                assert_eq!(
-                    with_unit.as_ref().map(|r| r.spec),
-                    expected.as_ref().map(|r| r.spec),
-                    "`{key} = {number}{unit}` against `{key} = {value}`"
-                );
-                accepted += 1;
-            }
+        };
+        let with_unit = (slot, number.as_str(), exponent(key, &unit));
+        if judge(&args, with_unit, &format!("{number}{unit}"), plain, |r| {
+            r.spec
+        }) {
+            accepted += 1;
+        } else {
+            refused += 1;
         }
     }
     println!("{cases} random suffixes: {accepted} read as their value, {refused} refused");
@@ -270,28 +289,12 @@ fn a_motors_keys_read_units_as_the_numbers_they_stand_for() {
         } else {
             Value::Name(format!("{number} {unit}"))
         };
-        let with_unit = read(&args);
-        match motor_exponent(key, unit) {
-            None => {
-                let message = with_unit.expect_err(&format!("`{key} = {number} {unit}` accepted"));
-                assert!(
-                    message.starts_with(&format!("`{key}` ")),
-                    "`{key} = {number} {unit}`: {message}"
-                );
-                refused += 1;
-            }
-            Some(e) => {
-                let value: f64 = format!("{number}e{e}").parse().unwrap();
-                let mut plain = args.clone();
-                plain[slot].1 = Value::Float(value);
-                let expected = read(&plain);
-                assert_eq!(
-                    with_unit.as_ref().map(|r| r.motor),
-                    expected.as_ref().map(|r| r.motor),
-                    "`{key} = {number} {unit}` against `{key} = {value}`"
-                );
-                accepted += 1;
-            }
+        let with_unit = (slot, number.as_str(), motor_exponent(key, unit));
+        let written = format!("{number} {unit}");
+        if judge(&args, with_unit, &written, Value::Float, |r| r.motor) {
+            accepted += 1;
+        } else {
+            refused += 1;
         }
     }
     println!("{cases} random motor units: {accepted} read as their value, {refused} refused");
