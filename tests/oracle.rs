@@ -289,8 +289,19 @@ fn index_entries(spec: &Spec, len: usize) -> Vec<f64> {
     }
 }
 
-/// The exact edges a table of `spec` is measured against, in ticks.
+/// The exact step edges a table of `spec` is measured against, in timer
+/// ticks: with `ticks_per_step = 2` the timer plays each entry twice, and a
+/// step edge is twice the entries' running sum.
 fn reference_edges(spec: &Spec, model: &Model, len: usize) -> Vec<f64> {
+    let repeat = f64::from(spec.timer.ticks_per_step);
+    entry_edges(spec, model, len)
+        .into_iter()
+        .map(|t| t * repeat)
+        .collect()
+}
+
+/// The exact running sums of the entries, in ticks of the entries.
+fn entry_edges(spec: &Spec, model: &Model, len: usize) -> Vec<f64> {
     let scale = scale(spec);
     match spec.discretization {
         Discretization::Exact => model.edges(len).into_iter().map(|t| t * scale).collect(),
@@ -313,9 +324,10 @@ fn reference_edges(spec: &Spec, model: &Model, len: usize) -> Vec<f64> {
     }
 }
 
-/// Edge errors of a played table against the reference, in ticks: the
-/// largest distance, the last edge's error, and the largest amount by which
-/// any edge exceeds `bound` (beyond its tolerance), with that edge.
+/// Step-edge errors of a played table against the reference, in timer
+/// ticks (each period played `repeat` times): the largest distance, the last
+/// edge's error, and the largest amount by which any edge exceeds `bound`
+/// (beyond its tolerance), with that edge.
 struct EdgeErrors {
     worst: f64,
     /// The largest distance among edges within 2^32 ticks of the start,
@@ -328,6 +340,7 @@ struct EdgeErrors {
 
 fn edge_errors(
     periods: impl IntoIterator<Item = u32>,
+    repeat: u8,
     reference: &[f64],
     bound: f64,
 ) -> EdgeErrors {
@@ -340,7 +353,7 @@ fn edge_errors(
     };
     let mut played = 0u64;
     for (k, (p, exact)) in periods.into_iter().zip(reference).enumerate() {
-        played += p as u64;
+        played += u64::from(p) * u64::from(repeat);
         let error = played as f64 - exact;
         // Both edges are f64s: a few ulps of the larger of the two.
         let tol = tolerance(exact.max(played as f64));
@@ -396,8 +409,13 @@ fn check(spec: &Spec, rng: &mut Lcg, tally: &mut Tally) {
     let f = &table.figures;
     let default =
         spec.discretization == Discretization::Exact && spec.rounding == Rounding::Diffuse;
-    let bound = if default { 0.5 } else { f.max_edge_error_ticks };
-    let e = edge_errors(table.periods.iter().copied(), &reference, bound);
+    let repeat = spec.timer.ticks_per_step;
+    let bound = if default {
+        0.5 * f64::from(repeat)
+    } else {
+        f.max_edge_error_ticks
+    };
+    let e = edge_errors(table.periods.iter().copied(), repeat, &reference, bound);
     if let Some((k, played, exact)) = e.over {
         panic!(
             "{spec:?}: edge {k} is at {played} ticks, {} from the oracle's {exact}, more than \
@@ -434,7 +452,7 @@ fn check(spec: &Spec, rng: &mut Lcg, tally: &mut Tally) {
                 .pairs
                 .iter()
                 .flat_map(|&(p, c)| std::iter::repeat_n(p, c as usize));
-            let e = edge_errors(played, &reference, f64::INFINITY);
+            let e = edge_errors(played, repeat, &reference, f64::INFINITY);
             // The worst edge may be another one in each computation, with
             // errors equal to their ulps: a few ulps of the largest edge.
             let largest = reference[len - 1].max(segments.figures.total_ticks as f64);
@@ -456,7 +474,7 @@ fn check(spec: &Spec, rng: &mut Lcg, tally: &mut Tally) {
         && len <= 20_000
         && rng.next_unit() < 0.3
     {
-        let compress = 0.5 + 2.5 * rng.next_unit();
+        let compress = (0.5 + 2.5 * rng.next_unit()) * f64::from(spec.timer.ticks_per_step);
         let spec = spec.with_rounding(Rounding::Diffuse);
         check_compressed(&spec, compress, &reference, tally);
     }
@@ -474,7 +492,7 @@ fn check_compressed(spec: &Spec, compress: f64, reference: &[f64], tally: &mut T
     };
     let played: Vec<u32> = runs::Expand::new(&table.runs).collect();
     assert_eq!(played.len(), reference.len(), "{spec:?}: compressed steps");
-    let e = edge_errors(played, reference, compress);
+    let e = edge_errors(played, spec.timer.ticks_per_step, reference, compress);
     if let Some((k, played, exact)) = e.over {
         panic!(
             "{spec:?} with compress = {compress}: edge {k} is at {played} ticks, {} from the \

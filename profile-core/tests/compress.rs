@@ -249,3 +249,81 @@ fn no_run_steps_faster_than_the_curve() {
     let shortest = Expand::new(&t.runs).min().unwrap();
     assert!(shortest + 1 >= fastest, "{shortest} against {fastest}");
 }
+
+/// A looser bound never costs runs, and the ramp ends where the curve ends
+/// as near as the bound lets the last run's end be chosen: on the linear
+/// ramp from 200 Hz, `compress` from 0.5 to 65 535 ticks.
+#[test]
+fn a_looser_bound_never_compresses_worse() {
+    let spec = linear();
+    let exact_end = 2_000_000.0;
+    let mut before = u32::MAX;
+    for compress in [0.5, 1.0, 4.0, 100.0, 1000.0, 10_000.0, 30_000.0, 65_535.0] {
+        let f = spec.run_table(compress).unwrap().figures;
+        println!(
+            "compress = {compress}: {} runs, ends {} ticks from the curve",
+            f.runs, f.total_error_ticks
+        );
+        assert!(
+            f.runs <= before,
+            "compress = {compress}: {} runs, more than the {before} of a tighter bound",
+            f.runs
+        );
+        assert!(f.max_edge_error_ticks <= compress, "{f:?}");
+        assert!(
+            (f.total_ticks as f64 - exact_end).abs() <= 1.0,
+            "compress = {compress}: the ramp ends at {} ticks, the curve at {exact_end}",
+            f.total_ticks
+        );
+        before = f.runs;
+    }
+}
+
+/// With `ticks_per_step = 2` the timer plays each entry twice: `compress`
+/// bounds the step edges the pin makes, in timer ticks, not the entries'
+/// running sum, and a tolerance below one tick is refused.
+#[test]
+fn with_two_reloads_per_step_compress_bounds_the_step_edges() {
+    let spec = Spec::new(
+        Curve::Linear(Linear {
+            fmin: 1600.0,
+            fmax: 48_000.0,
+            extent: LinearExtent::Accel(160_000.0),
+        }),
+        Timer {
+            timer_hz: 10_000_000,
+            word: Word::U16,
+            ticks_per_step: 2,
+        },
+    );
+    // The curve's step edges in timer ticks, summed on their own: the
+    // constant-acceleration ramp reaches speed f after (f^2 - fmin^2) / 2a
+    // steps, so step k is at t_k = (sqrt(fmin^2 + 2 a k) - fmin) / a.
+    let (fmin, a) = (1600.0f64, 160_000.0f64);
+    for compress in [1.0, 2.0, 10.0] {
+        let t = spec.run_table(compress).unwrap();
+        let mut edge = 0u64;
+        let mut worst = 0.0f64;
+        for (k, half) in Expand::new(&t.runs).enumerate() {
+            edge += 2 * u64::from(half);
+            let exact = ((fmin * fmin + 2.0 * a * (k + 1) as f64).sqrt() - fmin) / a * 1e7;
+            worst = worst.max((edge as f64 - exact).abs());
+        }
+        assert!(
+            worst <= compress + 1e-6,
+            "compress = {compress}: a step edge is {worst} timer ticks off the curve"
+        );
+        assert!(
+            (worst - t.figures.max_edge_error_ticks).abs() < 1e-6,
+            "compress = {compress}: the figures say {}, the pin {worst}",
+            t.figures.max_edge_error_ticks
+        );
+    }
+    let e = spec.run_table(0.5).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "`compress` is the largest step-edge error allowed, in timer ticks, and must be at \
+         least 1 with `ticks_per_step = 2`: each entry is played twice, so step edges fall on \
+         every other tick (got 0.5)"
+    );
+}

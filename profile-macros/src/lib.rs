@@ -38,12 +38,12 @@ mod include;
 /// | `curve` | `sigmoid`, `exponential`, `linear`, `three_stage`, `jerk_limited` | required |
 /// | `timer_hz` | timer tick rate after the prescaler | required |
 /// | `word` | `u16`, `u32`: the reload register's width | `u16` |
-/// | `ticks_per_step` | `1`, or `2` when the timer toggles the pin (each entry a half period, played twice: the edges' rounding doubles, up to one tick where the figures say half a tick of the entries) | `1` |
+/// | `ticks_per_step` | `1`, or `2` when the timer toggles the pin (each entry a half period, played twice: step edges fall on every other tick, within one tick of the curve; the edge figures and `compress` are in timer ticks at the step edges) | `1` |
 /// | `discretization` | `exact` (pulse edges where the curve puts them), `left_endpoint` (`1/f` at the step's start), `index` (the curve's x axis is the step index) | `exact` |
 /// | `rounding` | `truncate` (C's cast), `nearest`, `diffuse` (every edge within 0.5 tick) | `diffuse` |
 /// | `arithmetic` | `f64`; `f32` for the S-curve article's C code (`sigmoid`, `index`); `integer` for the S3C4510 article's (`linear`, `index`, `truncate`) | `f64` |
 /// | `segments` | N equal-time `(period, count)` pairs instead of one entry per step (a `[(u16, u16); N]`) | off |
-/// | `compress` | runs instead of one entry per step (an `[[u16; 5]; N]`, played by `runs::Expand` or the player), every pulse edge within this many ticks of the curve, from 0.5 to 65535: about a tenth of the flash of a long ramp at 1 tick | off |
+/// | `compress` | runs instead of one entry per step (an `[[u16; 5]; N]`, played by `runs::Expand` or the player), every step edge within this many timer ticks of the curve, from 0.5 (1 with `ticks_per_step = 2`) to 65535: about a tenth of the flash of a long ramp at 1 tick | off |
 /// | `motor` | in a profiles file, the `[motors.NAME]` table of the motor the profile drives; the macro takes the motor's keys inline (below) | none |
 ///
 /// Each curve's own keys:

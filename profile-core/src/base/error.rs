@@ -119,10 +119,14 @@ pub enum Error {
         /// The word of the counts.
         word: Word,
     },
-    /// `compress` below half a tick.
-    CompressBelowHalf {
+    /// `compress` below the nearest a step edge can land to every curve
+    /// edge: half a tick, or a whole tick with `ticks_per_step = 2` (each
+    /// entry played twice puts step edges on even ticks).
+    CompressTooSmall {
         /// The value given.
         value: f64,
+        /// The timer's reloads per step.
+        ticks_per_step: u8,
     },
     /// `compress` above [`MAX_COMPRESS_TICKS`](crate::MAX_COMPRESS_TICKS).
     CompressTooLarge {
@@ -232,7 +236,7 @@ impl Error {
             Error::EmptySegment { .. }
             | Error::SegmentTooLong { .. }
             | Error::SegmentsNeedTime { .. } => Some(Key::SEGMENTS),
-            Error::CompressBelowHalf { .. }
+            Error::CompressTooSmall { .. }
             | Error::CompressTooLarge { .. }
             | Error::CompressUnreachable { .. } => Some(Key::COMPRESS),
             Error::BufferLength { .. } | Error::WordMismatch { .. } => None,
@@ -430,7 +434,17 @@ impl Error {
                 word.name(),
                 word.max()
             ),
-            Error::CompressBelowHalf { value } => write!(
+            Error::CompressTooSmall {
+                value,
+                ticks_per_step: 2,
+            } => write!(
+                f,
+                "`compress` is the largest step-edge error allowed, in timer ticks, and must be \
+                 at least 1 with `ticks_per_step = 2`: each entry is played twice, so step edges \
+                 fall on every other tick (got {})",
+                Num(value)
+            ),
+            Error::CompressTooSmall { value, .. } => write!(
                 f,
                 "`compress` is the largest pulse-edge error allowed, in ticks, and must be at \
                  least 0.5: a whole tick cannot land nearer to every edge (got {})",

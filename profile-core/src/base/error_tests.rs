@@ -214,8 +214,18 @@ fn examples() -> Vec<(Error, &'static str)> {
             "the pulse time of step 7 did not converge within 100 iterations: the curve's step count is not a finite number there",
         ),
         (
-            Error::CompressBelowHalf { value: 0.25 },
+            Error::CompressTooSmall {
+                value: 0.25,
+                ticks_per_step: 1,
+            },
             "`compress` is the largest pulse-edge error allowed, in ticks, and must be at least 0.5: a whole tick cannot land nearer to every edge (got 0.25)",
+        ),
+        (
+            Error::CompressTooSmall {
+                value: 0.5,
+                ticks_per_step: 2,
+            },
+            "`compress` is the largest step-edge error allowed, in timer ticks, and must be at least 1 with `ticks_per_step = 2`: each entry is played twice, so step edges fall on every other tick (got 0.5)",
         ),
         (
             Error::CompressTooLarge { value: 1e20 },
@@ -256,7 +266,7 @@ fn covered(e: &Error) -> usize {
         Error::NoConvergence { .. } => 20,
         Error::NotAtLeast { .. } => 21,
         Error::SegmentTooLong { .. } => 22,
-        Error::CompressBelowHalf { .. } => 23,
+        Error::CompressTooSmall { .. } => 23,
         Error::CompressUnreachable { .. } => 24,
         Error::CompressTooLarge { .. } => 25,
     }

@@ -1,6 +1,11 @@
-//! Fitting runs to a curve: the compressed layout's table, every pulse edge
-//! within `compress` ticks of the curve's exact edge, and no period shorter
-//! than the curve's shortest, rounded down.
+//! Fitting runs to a curve: the compressed layout's table, every step edge
+//! within `compress` timer ticks of the curve's exact edge, and no period
+//! shorter than the curve's shortest, rounded down.
+//!
+//! With `ticks_per_step = 2` each entry is a half period the timer plays
+//! twice, so a step edge lies twice as far from the curve as the entries'
+//! running sum: the runs are fitted to half the tolerance, in ticks of the
+//! entries, and the figures give the step edges' distance in timer ticks.
 //!
 //! A run starting after edge `s` (at fixed-point position `P_s`) puts edge
 //! `s + j` at `P_s + j I + j (j - 1) / 2 A`, linear in the run's `interval`
@@ -23,8 +28,10 @@ use crate::base::timer::Word;
 use crate::table::runs::{RUN_FRACTION_BITS, RUN_START_FRACTION, Run};
 use crate::table::spec::{CheckedSpec, Spec};
 
-/// The smallest `compress` allowed: an integer edge cannot land nearer than
-/// half a tick to every point of the curve.
+/// The smallest `compress` allowed with one reload per step: an integer edge
+/// cannot land nearer than half a tick to every point of the curve. With
+/// `ticks_per_step = 2` step edges fall on every other tick, and the
+/// smallest is twice this.
 pub const MIN_COMPRESS_TICKS: f64 = 0.5;
 
 /// The largest `compress` allowed: the longest period a run's 16-bit word
@@ -43,20 +50,23 @@ pub struct RunFigures {
     pub flash_bytes: u32,
     /// Flash of the per-step table of the same ramp, in bytes.
     pub per_step_flash_bytes: u32,
-    /// The largest pulse-edge error allowed (`compress`), in ticks.
+    /// The largest step-edge error allowed (`compress`), in timer ticks.
     pub tolerance_ticks: f64,
-    /// Sum of the played periods, in ticks.
+    /// Sum of the played periods, in ticks of the entries (with
+    /// `ticks_per_step = 2` the timer counts twice this).
     pub total_ticks: u64,
     /// Ramp duration as played, in s.
     pub duration_s: f64,
-    /// Largest distance of a played pulse edge from the curve's exact edge,
-    /// in ticks: at most `tolerance_ticks`.
+    /// Largest distance of a played step edge from the curve's exact edge,
+    /// in timer ticks: at most `tolerance_ticks`.
     pub max_edge_error_ticks: f64,
-    /// Last played edge minus the curve's, in ticks.
+    /// Last played step edge minus the curve's, in timer ticks.
     pub total_error_ticks: f64,
 }
 
 const ONE: f64 = (1u64 << RUN_FRACTION_BITS) as f64;
+/// The longest step a run plays, in fixed point: 65 535 whole ticks.
+const LONGEST: f64 = u16::MAX as f64 * ONE;
 /// Polygons kept to step back to when the longest run has no integer point.
 const BACKTRACK: usize = 48;
 
@@ -137,8 +147,10 @@ fn row(poly: &Polygon, y: f64) -> Option<(f64, f64)> {
 }
 
 /// Integer points of `poly` to try: up to 5 rows of `add` across it and up
-/// to 3 `interval`s across each row.
-fn candidates(poly: &Polygon) -> Vec<(i64, i64)> {
+/// to 3 `interval`s across each row, and on each row the two whole
+/// `interval`s around `aim(add)`, where that row's run ends nearest its
+/// exact edge.
+fn candidates(poly: &Polygon, aim: impl Fn(f64) -> f64) -> Vec<(i64, i64)> {
     let (ylo, yhi) = poly
         .iter()
         .fold((f64::MAX, f64::MIN), |s, p| (s.0.min(p.1), s.1.max(p.1)));
@@ -169,6 +181,10 @@ fn candidates(poly: &Polygon) -> Vec<(i64, i64)> {
         for x in spread(xlo, xhi, 3) {
             out.push((x as i64, y as i64));
         }
+        let x = aim(y).clamp(xlo, xhi);
+        for x in [libm::floor(x), libm::ceil(x)] {
+            out.push((x as i64, y as i64));
+        }
     }
     out
 }
@@ -185,6 +201,7 @@ struct At {
 struct Fit<'a> {
     /// Exact edge `k + 1` in ticks, at index `k`.
     exact: &'a [f64],
+    /// The step edges' tolerance, in timer ticks.
     tolerance: f64,
     /// Edge `k`'s band of fixed-point positions (see [`Fit::band`]), at
     /// index `k`: worked out once, read for every run tried.
@@ -212,13 +229,17 @@ impl<'a> Fit<'a> {
     /// `exact` holds at most [`MAX_LEN`](crate::MAX_LEN) edges of periods
     /// a word holds, and `tolerance` is at most [`MAX_COMPRESS_TICKS`]: every
     /// band lies below 2^33 ticks, 2^49 in fixed point.
-    fn new(exact: &'a [f64], tolerance: f64) -> Self {
+    /// Step edges lie `repeat` times as far from the curve as the entries'
+    /// running sum that the fit places: each band is `tolerance / repeat`
+    /// wide on either side.
+    fn new(exact: &'a [f64], tolerance: f64, repeat: f64) -> Self {
         let fixed = |ticks: f64| (ticks as i64).saturating_mul(1 << RUN_FRACTION_BITS);
+        let half_width = tolerance / repeat;
         let bands = exact
             .iter()
             .map(|&t| {
-                let lo = fixed(libm::ceil(t - tolerance));
-                let hi = fixed(libm::floor(t + tolerance) + 1.0);
+                let lo = fixed(libm::ceil(t - half_width));
+                let hi = fixed(libm::floor(t + half_width) + 1.0);
                 (lo, hi.saturating_sub(1))
             })
             .collect();
@@ -293,6 +314,13 @@ impl<'a> Fit<'a> {
             let (lo, hi) = ((lo - at.pos) as f64, (hi - at.pos) as f64);
             clip(&poly, j, c, hi, &mut half);
             clip(&half, -j, -c, -lo, &mut clipped);
+            // The period this step plays, `interval + len add`, stays
+            // within the word and above the shortest: a step of at most
+            // 65 535 ticks less one fraction never plays more than 65 535
+            // whole ticks, and one of `shortest` whole ticks never fewer.
+            let k = len as f64;
+            clip(&clipped, 1.0, k, LONGEST - 1.0, &mut half);
+            clip(&half, -1.0, -k, -(self.shortest as f64 * ONE), &mut clipped);
             if clipped.len() < 3 || !has_integer(&clipped) {
                 break;
             }
@@ -328,7 +356,9 @@ impl<'a> Fit<'a> {
     /// the one ending nearest its exact edge.
     fn runs_of(&self, at: At, len: usize, poly: &Polygon) -> Vec<(Run, i64)> {
         let target = (self.exact[at.done + len - 1] + 0.5) * ONE;
-        let mut found: Vec<(Run, i64)> = candidates(poly)
+        let (j, c) = (len as f64, (len * (len - 1) / 2) as f64);
+        let aim = |add: f64| (target - at.pos as f64 - c * add) / j;
+        let mut found: Vec<(Run, i64)> = candidates(poly, aim)
             .into_iter()
             .filter_map(|(interval, add)| {
                 let run = Run {
@@ -391,12 +421,16 @@ impl<'a> Fit<'a> {
 }
 
 impl CheckedSpec {
-    /// Checks that the table can be compressed with edges within
-    /// `tolerance` ticks: from half a tick to [`MAX_COMPRESS_TICKS`], 16-bit
-    /// periods.
+    /// Checks that the table can be compressed with step edges within
+    /// `tolerance` timer ticks: from half a tick (a whole tick with
+    /// `ticks_per_step = 2`) to [`MAX_COMPRESS_TICKS`], 16-bit periods.
     pub fn check_compress(&self, tolerance: f64) -> Result<(), Error> {
-        if tolerance.is_nan() || tolerance < MIN_COMPRESS_TICKS {
-            return Err(Error::CompressBelowHalf { value: tolerance });
+        let ticks_per_step = self.spec().timer.ticks_per_step;
+        if tolerance.is_nan() || tolerance < MIN_COMPRESS_TICKS * f64::from(ticks_per_step) {
+            return Err(Error::CompressTooSmall {
+                value: tolerance,
+                ticks_per_step,
+            });
         }
         if tolerance > MAX_COMPRESS_TICKS {
             return Err(Error::CompressTooLarge { value: tolerance });
@@ -427,9 +461,9 @@ impl CheckedSpec {
         Ok(())
     }
 
-    /// Fits runs to the curve's exact edges, each played edge within
-    /// `tolerance` ticks of its exact time, and no period shorter than the
-    /// curve's shortest, rounded down.
+    /// Fits runs to the curve's exact edges, each played step edge within
+    /// `tolerance` timer ticks of its exact time, and no period shorter than
+    /// the curve's shortest, rounded down.
     ///
     /// The runs stand for the per-step table of the same spec and hold the
     /// same 16-bit periods: a period that table refuses (longer than the
@@ -440,7 +474,8 @@ impl CheckedSpec {
         let scale = self.spec().timer.ticks_per_second();
         let mut exact = Vec::with_capacity(self.len() as usize);
         self.for_each_period_and_edge(|_, _, t| exact.push(t * scale))?;
-        let fit = Fit::new(&exact, tolerance);
+        let repeat = f64::from(self.spec().timer.ticks_per_step);
+        let fit = Fit::new(&exact, tolerance, repeat);
         let mut at = At {
             done: 0,
             pos: RUN_START_FRACTION as i64,
@@ -454,7 +489,7 @@ impl CheckedSpec {
                 pos: end,
             };
         }
-        let figures = run_figures(&runs, &exact, tolerance, scale);
+        let figures = run_figures(&runs, &exact, tolerance, scale, repeat);
         Ok(RunTable {
             spec: *self.spec(),
             runs,
@@ -463,8 +498,15 @@ impl CheckedSpec {
     }
 }
 
-/// The figures of `runs`, played and compared with the exact edges.
-fn run_figures(runs: &[[u16; 5]], exact: &[f64], tolerance: f64, scale: f64) -> RunFigures {
+/// The figures of `runs`, played and compared with the exact edges (in ticks
+/// of the entries), the edges' errors in timer ticks: `repeat` times theirs.
+fn run_figures(
+    runs: &[[u16; 5]],
+    exact: &[f64],
+    tolerance: f64,
+    scale: f64,
+    repeat: f64,
+) -> RunFigures {
     let (mut edge, mut worst, mut last) = (0u64, 0.0f64, 0.0);
     for (period, t) in super::runs::Expand::new(runs).zip(exact) {
         edge += u64::from(period);
@@ -480,8 +522,8 @@ fn run_figures(runs: &[[u16; 5]], exact: &[f64], tolerance: f64, scale: f64) -> 
         tolerance_ticks: tolerance,
         total_ticks: edge,
         duration_s: edge as f64 / scale,
-        max_edge_error_ticks: worst,
-        total_error_ticks: last,
+        max_edge_error_ticks: worst * repeat,
+        total_error_ticks: last * repeat,
     }
 }
 
@@ -497,8 +539,9 @@ pub struct RunTable {
 }
 
 impl Spec {
-    /// Checks the spec and fits runs to it, each edge within `tolerance`
-    /// ticks, no period shorter than the curve's shortest, rounded down.
+    /// Checks the spec and fits runs to it, each step edge within
+    /// `tolerance` timer ticks, no period shorter than the curve's shortest,
+    /// rounded down.
     pub fn run_table(&self, tolerance: f64) -> Result<RunTable, Error> {
         self.check()?.run_table(tolerance)
     }

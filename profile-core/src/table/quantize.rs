@@ -45,14 +45,14 @@ pub struct Figures {
     /// (The integer table's own jerk is this plus rounding noise that grows
     /// with the cube of the step frequency: not a figure of the ramp.)
     pub curve_max_jerk_hz_s2: f64,
-    /// Largest distance of a pulse edge (a prefix sum of the table) from its
-    /// unrounded time under the chosen discretization, in ticks of the
-    /// entries. With `ticks_per_step = 2` each entry is a half period the
-    /// timer plays twice, so the step's edges lie twice this far from the
-    /// curve's, in timer ticks (up to one tick where this says half a tick).
+    /// Largest distance of a step edge from its unrounded time under the
+    /// chosen discretization, in timer ticks. A step edge is the running sum
+    /// of the entries, times `ticks_per_step`: with `ticks_per_step = 2`
+    /// each entry is a half period the timer plays twice, step edges fall
+    /// on every other tick, and `diffuse` keeps them within one tick (half
+    /// a tick of the entries' sum).
     pub max_edge_error_ticks: f64,
-    /// Last pulse edge minus its unrounded time, in ticks of the entries
-    /// (the drift; twice this in timer ticks with `ticks_per_step = 2`).
+    /// Last step edge minus its unrounded time, in timer ticks (the drift).
     pub total_error_ticks: f64,
     /// Ticks left between the longest entry and the largest value the word holds.
     pub overflow_margin_ticks: u32,
@@ -276,7 +276,7 @@ impl Quantizer {
     /// Records entry `index`: `ticks` as emitted, `entry` unrounded.
     fn record(&mut self, index: u32, ticks: u32, entry: f64) {
         let fig = &mut self.figures;
-        let error = self.emitted as f64 - self.exact_edge;
+        let error = (self.emitted as f64 - self.exact_edge) * f64::from(self.timer.ticks_per_step);
         fig.max_edge_error_ticks = fig.max_edge_error_ticks.max(libm::fabs(error));
         fig.total_error_ticks = error;
         fig.min_ticks = fig.min_ticks.min(ticks);

@@ -28,9 +28,11 @@ pub struct SegmentFigures {
     pub total_ticks: u64,
     /// Ramp duration as played, in s.
     pub duration_s: f64,
-    /// Largest distance of a played pulse edge from the curve's exact edge, in ticks.
+    /// Largest distance of a played step edge from the curve's exact edge,
+    /// in timer ticks (with `ticks_per_step = 2`, twice the distance of the
+    /// periods' running sum).
     pub max_edge_error_ticks: f64,
-    /// Last played edge minus the exact end of the ramp, in ticks.
+    /// Last played step edge minus the exact end of the ramp, in timer ticks.
     pub total_error_ticks: f64,
 }
 
@@ -96,6 +98,7 @@ impl CheckedSpec {
         let spec = self.spec();
         let len = self.len();
         let scale = spec.timer.ticks_per_second();
+        let repeat = f64::from(spec.timer.ticks_per_step);
         let word = spec.timer.word;
         let model = spec.curve.time_model();
         let c = model.curve();
@@ -131,7 +134,7 @@ impl CheckedSpec {
             for _ in 0..count {
                 played += period as u64;
                 step += 1;
-                let error = played as f64 - edge_time(c, step)? * scale;
+                let error = (played as f64 - edge_time(c, step)? * scale) * repeat;
                 max_error = max_error.max(libm::fabs(error));
                 last_error = error;
             }
