@@ -169,15 +169,19 @@ fn compact_note(table: &Generated) -> Option<String> {
     let asked = c
         .tolerance_ticks
         .map_or(String::new(), |e| format!(" (`compress = {e}`)"));
+    let (flash, per_step) = (f64::from(c.flash_bytes), f64::from(c.per_step_flash_bytes));
+    let against = if c.flash_bytes < c.per_step_flash_bytes {
+        format!("{:.1} times less", per_step / flash)
+    } else {
+        format!(
+            "{:.1} times more: one entry per step is smaller here",
+            flash / per_step.max(1.0)
+        )
+    };
     Some(format!(
-        "{} {} take {} bytes of flash against {} for one entry per step ({:.1} times less); \
-         every pulse edge is within {:.3} ticks of the curve{asked}.",
-        c.entries,
-        c.kind,
-        c.flash_bytes,
-        c.per_step_flash_bytes,
-        f64::from(c.per_step_flash_bytes) / f64::from(c.flash_bytes.max(1)),
-        c.max_edge_error_ticks
+        "{} {} take {} bytes of flash against {} for one entry per step ({against}); \
+         every step edge is within {:.3} ticks of the curve{asked}.",
+        c.entries, c.kind, c.flash_bytes, c.per_step_flash_bytes, c.max_edge_error_ticks
     ))
 }
 

@@ -280,10 +280,10 @@ fn report_gives_a_compact_layout_flash_against_one_entry_per_step() {
     let report = text(&out.stdout);
     for note in [
         "note: microstep_runs: 97 runs take 970 bytes of flash against 14384 for one entry per \
-         step (14.8 times less); every pulse edge is within 1.000 ticks of the curve \
+         step (14.8 times less); every step edge is within 1.000 ticks of the curve \
          (`compress = 1`).\n",
         "note: exponential_segments: 8 segments take 32 bytes of flash against 240 for one \
-         entry per step (7.5 times less); every pulse edge is within 421.621 ticks of the \
+         entry per step (7.5 times less); every step edge is within 421.621 ticks of the \
          curve.\n",
     ] {
         assert!(report.contains(note), "{report}");
@@ -330,6 +330,23 @@ const WINDINGS_ONLY: &str = "[motors.m]\nstep_angle = 1.8\nrotor_inertia = 6.8e-
      timer_hz = 1_000_000\nmotor = \"m\"\n";
 
 /// The report of the profiles file `file`, written in a folder of its own.
+/// A layout larger than one entry per step says so, not "0.2 times less".
+#[test]
+fn report_says_when_a_compact_layout_is_larger_than_the_table() {
+    let report = report_of(
+        "report_compact_larger",
+        "[profiles.one]\ncurve = \"linear\"\nfmin = 1000\nfmax = 2000\nlen = 1\n\
+         timer_hz = 1000000\ncompress = 1\n",
+    );
+    assert!(
+        report.contains(
+            "note: one: 1 runs take 10 bytes of flash against 2 for one entry per step (5.0 \
+             times more: one entry per step is smaller here); every step edge is within"
+        ),
+        "{report}"
+    );
+}
+
 fn report_of(name: &str, file: &str) -> String {
     let dir = work_dir(name);
     fs::write(dir.join("profiles.toml"), file).unwrap();
