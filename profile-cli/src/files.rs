@@ -94,15 +94,17 @@ fn pull_out_curves(
     curves
 }
 
-/// Each pulse edge of `periods` against the curve's, in ticks, by step.
-fn edge_errors(spec: &Spec, periods: &[u32]) -> Result<Vec<(f64, f64)>, profile_core::Error> {
+/// Each step edge of `periods` against the curve's, in timer ticks, by step.
+pub fn edge_errors(spec: &Spec, periods: &[u32]) -> Result<Vec<(f64, f64)>, profile_core::Error> {
     let scale = spec.timer.ticks_per_second();
+    // Each entry is played `ticks_per_step` times: step edges in timer ticks.
+    let repeat = f64::from(spec.timer.ticks_per_step);
     let mut played = 0u64;
     let mut errors = Vec::with_capacity(periods.len());
     spec.for_each_exact_edge(|k, t| {
         if let Some(&p) = periods.get(k as usize - 1) {
             played += u64::from(p);
-            errors.push((f64::from(k), played as f64 - t * scale));
+            errors.push((f64::from(k), (played as f64 - t * scale) * repeat));
         }
     })?;
     Ok(errors)
@@ -127,7 +129,13 @@ fn write_compact_plot(
         .windows(2)
         .map(|w| (w[0], 1.0 / (w[1] - w[0])))
         .collect();
-    let played = Series::from_periods(&layout, color, &compact, spec.timer.ticks_per_second());
+    let played = Series::new(
+        &layout,
+        color,
+        &compact,
+        spec.timer.ticks_per_second(),
+        spec,
+    );
     let line = |label: &str, color: RGBColor, points: Vec<(f64, f64)>| Line {
         label: label.to_string(),
         color,
@@ -152,7 +160,7 @@ fn write_compact_plot(
 
 fn series(label: &str, color: RGBColor, t: &Table) -> Series {
     let tps = t.spec.timer.timer_hz as f64 / t.spec.timer.ticks_per_step as f64;
-    Series::from_periods(label, color, &t.periods, tps)
+    Series::new(label, color, &t.periods, tps, &t.spec)
 }
 
 /// Writes, for every profile, `NAME.svg` (frequency and acceleration against
@@ -172,7 +180,7 @@ pub fn write_plots(
         let periods = p.table.step_periods();
         let spec = p.table.spec();
         let tps = spec.timer.timer_hz as f64 / spec.timer.ticks_per_step as f64;
-        let s = Series::from_periods(&p.name, color, &periods, tps).with_curve(spec);
+        let s = Series::new(&p.name, color, &periods, tps, spec);
         let svg = out.join(format!("{}.svg", p.name));
         plots::profile(&svg, &p.name, &s)?;
         written.push(svg);

@@ -3,25 +3,47 @@
 use std::path::Path;
 
 use plotters::prelude::*;
-use profile_core::{ACCEL_WINDOW, Spec};
+use profile_core::{AccelWindows, Spec};
 
 /// One table as plotted: `(time of the step's start in s, frequency in Hz)`
-/// per step, the table's acceleration over windows of entries, and the
-/// curve's own acceleration when known.
+/// per step, the table's acceleration over windows of entries (as the
+/// figures read it), and the curve's own acceleration.
 pub struct Series {
     pub label: String,
     pub color: RGBColor,
     /// Per step: start time (s), step frequency (Hz).
     pub steps: Vec<(f64, f64)>,
-    /// Entries per window of `accel`.
-    pub window: usize,
-    /// Between consecutive windows of `window` entries: the time of the
-    /// edge between them (s), the change of their mean frequency over the
-    /// time between their centres (Hz/s).
+    /// Between consecutive windows of entries ([`AccelWindows`], sized by
+    /// the curve's acceleration as for the figures): the time of the edge
+    /// between them (s), the change of their mean frequency over the time
+    /// between their centres (Hz/s).
     pub accel: Vec<(f64, f64)>,
     /// The curve's acceleration from its unrounded periods, step by step
-    /// (empty when not computed).
+    /// (empty when its edges cannot be computed).
     pub curve_accel: Vec<(f64, f64)>,
+}
+
+/// The table's acceleration (`periods` in s) over [`AccelWindows`], each
+/// sized by the curve's own frequency and acceleration there (`exact`: the
+/// curve's periods in s, entry by entry), at the edge between windows.
+fn table_accel(periods: &[f64], exact: &[f64], scale: f64) -> Vec<(f64, f64)> {
+    let total: f64 = periods.iter().sum();
+    let mut windows = AccelWindows::new(total * scale / 4.0);
+    let (mut out, mut t, mut start) = (Vec::new(), 0.0, 0.0);
+    let mut before: Option<f64> = None;
+    for (&p, &e) in periods.iter().zip(exact) {
+        t += p;
+        let f = 1.0 / e;
+        let accel = before.map_or(0.0, |b| (f - 1.0 / b) / ((b + e) / 2.0));
+        before = Some(e);
+        if let Some(a) = windows.push(p * scale, scale, f, accel) {
+            out.push((start, a));
+        }
+        if windows.open_ticks() == 0.0 {
+            start = t;
+        }
+    }
+    out
 }
 
 /// Acceleration of `periods` (in s) between the mean frequencies of
@@ -45,12 +67,14 @@ fn windowed_accel(periods: &[f64], w: usize) -> Vec<(f64, f64)> {
 }
 
 impl Series {
-    /// From periods in ticks on a timer of `ticks_per_second` (per step).
-    pub fn from_periods(
+    /// From periods in ticks on a timer of `ticks_per_second` (per step),
+    /// a table of `spec`.
+    pub fn new(
         label: &str,
         color: RGBColor,
         periods: &[u32],
         ticks_per_second: f64,
+        spec: &Spec,
     ) -> Self {
         let seconds: Vec<f64> = periods
             .iter()
@@ -62,30 +86,19 @@ impl Series {
             steps.push((t, 1.0 / dt));
             t += dt;
         }
-        let window = if periods.len() >= 2 * ACCEL_WINDOW as usize {
-            ACCEL_WINDOW as usize
+        let mut edges = vec![0.0];
+        let exact: Vec<f64> = if spec.for_each_exact_edge(|_, t| edges.push(t)).is_ok() {
+            edges.windows(2).map(|w| w[1] - w[0]).collect()
         } else {
-            1
+            Vec::new()
         };
         Series {
             label: label.to_string(),
             color,
             steps,
-            window,
-            accel: windowed_accel(&seconds, window),
-            curve_accel: Vec::new(),
+            accel: table_accel(&seconds, &exact, ticks_per_second),
+            curve_accel: windowed_accel(&exact, 1),
         }
-    }
-
-    /// Adds the acceleration of the curve behind `spec`, from its unrounded
-    /// pulse edges.
-    pub fn with_curve(mut self, spec: &Spec) -> Self {
-        let mut edges = vec![0.0];
-        if spec.for_each_exact_edge(|_, t| edges.push(t)).is_ok() {
-            let periods: Vec<f64> = edges.windows(2).map(|w| w[1] - w[0]).collect();
-            self.curve_accel = windowed_accel(&periods, 1);
-        }
-        self
     }
 
     fn duration(&self) -> f64 {
@@ -244,7 +257,7 @@ pub fn profile(path: &Path, title: &str, s: &Series) -> PlotResult {
         &[(s, by_step)],
     )?;
     let mut lines = vec![Line {
-        label: format!("table, between windows of {} entries", s.window),
+        label: "table, between windows (rounding under 5% of the curve's)".to_string(),
         color: s.color,
         points: s.accel.clone(),
     }];

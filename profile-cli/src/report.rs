@@ -59,21 +59,12 @@ fn print_parameters(out: &mut String, profiles: &[Profile]) {
     let _ = writeln!(out);
 }
 
-/// Pulse-edge error of a table against the continuous curve, in ticks:
+/// Step-edge error of a table against the continuous curve, in timer ticks:
 /// `(largest |error|, error of the last edge)`.
 fn edge_error(spec: &Spec, periods: &[u32]) -> Result<(f64, f64), Error> {
-    let scale = spec.timer.timer_hz as f64 / spec.timer.ticks_per_step as f64;
-    let mut played = 0u64;
-    let mut worst = 0.0f64;
-    let mut last = 0.0;
-    spec.for_each_exact_edge(|k, t| {
-        if let Some(p) = periods.get(k as usize - 1) {
-            played += *p as u64;
-            last = played as f64 - t * scale;
-            worst = worst.max(last.abs());
-        }
-    })?;
-    Ok((worst, last))
+    let errors = crate::files::edge_errors(spec, periods)?;
+    let worst = errors.iter().fold(0.0f64, |w, e| w.max(e.1.abs()));
+    Ok((worst, errors.last().map_or(0.0, |e| e.1)))
 }
 
 fn print_table(out: &mut String, profiles: &[Profile]) -> Result<(), Error> {
@@ -103,15 +94,11 @@ fn print_table(out: &mut String, profiles: &[Profile]) -> Result<(), Error> {
             "ticks",
         ],
     );
-    let mut windows = Vec::new();
     for p in profiles {
         match &p.table {
             Generated::Steps(t) => {
                 let (f, s) = (&t.figures, &t.spec);
                 let (edge, _) = edge_error(s, &t.periods)?;
-                if !windows.contains(&f.accel_window) {
-                    windows.push(f.accel_window);
-                }
                 row(
                     out,
                     [
@@ -138,18 +125,19 @@ fn print_table(out: &mut String, profiles: &[Profile]) -> Result<(), Error> {
             }
         }
     }
-    let windows: Vec<String> = windows.iter().map(u32::to_string).collect();
     let _ = writeln!(
         out,
         "\nlen: entries (a segment table: steps in all). start, end: step frequency of the \
          first and last entry. ramp: the table's duration as played. flash: the table's bytes.\n\
          a table: the integer table's largest acceleration, between the mean frequencies of \
-         windows of {} entries (one entry's rounding would read as acceleration). a curve, \
+         consecutive windows of at least 8 entries and 1/64 of the ramp, longer where one tick \
+         of rounding could read as 5% of the ramp's mean acceleration (one entry's rounding \
+         would read as acceleration). a curve, \
          j curve: the curve's own acceleration and jerk, from the unrounded periods.\n\
-         edge err: the largest distance of a pulse edge from the continuous curve (a truncated \
+         edge err: the largest distance of a step edge from the continuous curve, in timer \
+         ticks (a truncated \
          table drifts: each entry loses up to a tick). margin: ticks between the longest period \
-         and the largest the word holds.",
-        windows.join(" or ")
+         and the largest the word holds."
     );
     for p in profiles {
         if let Some(note) = start_note(&p.table) {

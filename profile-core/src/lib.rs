@@ -57,7 +57,7 @@ pub use motor::simulate;
 pub use table::compress::{MAX_COMPRESS_TICKS, MIN_COMPRESS_TICKS, RunFigures, RunTable};
 #[cfg(feature = "std")]
 pub use table::owned::{Compact, Generated, SegmentTable, Table};
-pub use table::quantize::{ACCEL_WINDOW, Figures};
+pub use table::quantize::{AccelWindows, Figures};
 pub use table::runs;
 pub use table::segments::SegmentFigures;
 pub use table::spec::{CheckedSpec, Spec};

@@ -16,6 +16,8 @@
 //! edges of a 65 536-entry table are as accurate as the first (each to a few
 //! ulps of its time, and the residual to about 1e-13 step).
 
+use stepper_profiles::{Curve, ExponentialExtent, LinearExtent};
+
 /// Kronrod nodes on `[0, 1]` (the other half mirrored), QUADPACK's `qk15`.
 const XGK: [f64; 8] = [
     0.991_455_371_120_812_6,
@@ -394,5 +396,33 @@ pub fn entries(steps: f64) -> Option<u64> {
         None
     } else {
         Some(steps.ceil() as u64)
+    }
+}
+
+/// The oracle's model of a curve in time, from a production curve's parameters (the parameters only: every
+/// formula is this file's own).
+pub fn model(curve: &Curve) -> Model {
+    match *curve {
+        Curve::Sigmoid(s) => sigmoid(s.fmin, s.fmax, s.flexible, s.len),
+        Curve::Exponential(e) => exponential(
+            e.fmin,
+            e.fmax,
+            e.f_inf,
+            match e.extent {
+                ExponentialExtent::Len(n) => Extent::Len(n),
+                ExponentialExtent::Tau(tau) => Extent::Given(tau),
+            },
+        ),
+        Curve::Linear(l) => linear(
+            l.fmin,
+            l.fmax,
+            match l.extent {
+                LinearExtent::Len(n) => Extent::Len(n),
+                LinearExtent::Accel(a) => Extent::Given(a),
+            },
+        ),
+        Curve::ThreeStage(z) => three_stage(z.fmin, z.fmax, z.accel, z.f1, z.f2, z.shape),
+        Curve::JerkLimited(j) => jerk_limited(j.fmin, j.fmax, j.accel, j.jerk),
+        _ => unreachable!("every curve has a model"),
     }
 }

@@ -219,9 +219,9 @@ pub fn doc_lines(table: &Generated) -> std::vec::Vec<String> {
             let f = &t.figures;
             lines.push(format!(
                 "{} entries, {} to {} ticks ({:.2} Hz to {:.2} Hz), {} ticks in all ({:.6} s); \
-                 pulse edges within {:.3} tick of the unrounded curve, drift {:.3} tick; \
-                 acceleration up to {:.0} Hz/s between windows of {} entries (the curve's \
-                 own peak: {:.0} Hz/s).",
+                 step edges within {:.3} tick of the unrounded curve, drift {:.3} tick; \
+                 acceleration up to {:.0} Hz/s between windows long enough that rounding reads \
+                 under 5% of the curve's acceleration (the curve's own peak: {:.0} Hz/s).",
                 f.len,
                 f.first_ticks,
                 f.last_ticks,
@@ -232,7 +232,6 @@ pub fn doc_lines(table: &Generated) -> std::vec::Vec<String> {
                 f.max_edge_error_ticks,
                 f.total_error_ticks,
                 f.max_accel_hz_s,
-                f.accel_window,
                 f.curve_max_accel_hz_s
             ));
             if let Some(note) = start_note(table) {

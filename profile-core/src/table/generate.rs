@@ -84,6 +84,14 @@ impl CheckedSpec {
         let scale = modes.scale();
         let mut quantizer = Quantizer::new(spec);
         if spec.discretization == Discretization::Index {
+            // The windows of the acceleration figure are bounded by the
+            // ramp's duration: one pass over the entries.
+            let mut duration = 0.0;
+            spec.curve.index_entries(&modes, &mut |entry| {
+                duration += entry.exact;
+                Ok(())
+            })?;
+            quantizer.set_duration(duration);
             let (mut k, mut t) = (0, 0.0);
             spec.curve.index_entries(&modes, &mut |entry| {
                 let ticks = match entry.rounded {
@@ -100,6 +108,8 @@ impl CheckedSpec {
         let model = spec.curve.time_model();
         let c = model.curve();
         quantizer.reachable(c.freq(0.0), c.end_freq())?;
+        let duration = edge_time(c, self.len())?;
+        quantizer.set_duration(duration * scale);
         let mut t = 0.0;
         for k in 0..self.len() {
             let next = edge_time(c, k + 1)?;

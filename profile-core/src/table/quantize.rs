@@ -29,15 +29,17 @@ pub struct Figures {
     pub start_hz: f64,
     /// Step frequency of the last entry.
     pub final_hz: f64,
-    /// Largest acceleration of the integer table as a rotor feels it:
-    /// between the mean step frequencies of two consecutive windows of
-    /// [`accel_window`](Self::accel_window) entries, over the time between
-    /// their centres. (Between single entries, one tick of rounding would
-    /// read as acceleration.)
+    /// Largest acceleration of the integer table, averaged as a rotor
+    /// feels it ([`AccelWindows`]): between the mean step frequencies of
+    /// consecutive windows, over the time between their centres, each window
+    /// long enough that one tick of rounding cannot read as more than 5 % of
+    /// the curve's acceleration there (`sqrt(40 f / (a scale))` s at step
+    /// frequency `f` and acceleration `a`, `scale` ticks per second), at
+    /// most a quarter of the ramp. Between single entries at high step
+    /// frequencies, one tick of rounding would read as acceleration; where
+    /// the table follows the curve within half a tick, this follows the
+    /// curve's acceleration. (A table of one entry reads 0.)
     pub max_accel_hz_s: f64,
-    /// Entries per window of `max_accel_hz_s`: [`ACCEL_WINDOW`], or 1 for a
-    /// table of fewer than two windows.
-    pub accel_window: u32,
     /// Largest acceleration of the curve itself: between the unrounded
     /// periods of consecutive steps.
     pub curve_max_accel_hz_s: f64,
@@ -58,9 +60,84 @@ pub struct Figures {
     pub overflow_margin_ticks: u32,
 }
 
-/// Entries per window of a table's acceleration and jerk figures.
-pub const ACCEL_WINDOW: u32 = 8;
-const W: usize = ACCEL_WINDOW as usize;
+/// An integer table's acceleration as a rotor feels it: between the mean
+/// step frequencies of consecutive windows of entries, each long enough that
+/// one tick of rounding cannot read as more than 5 % of the curve's
+/// acceleration where the window closes ([`AccelWindows::needed`]), and at
+/// most `longest` ticks. The figures' [`Figures::max_accel_hz_s`] and the
+/// command-line tool's plots read it. A last window cut short by the
+/// table's end gives no reading.
+#[derive(Clone, Copy, Debug)]
+pub struct AccelWindows {
+    longest: f64,
+    /// The open window: entries and ticks.
+    count: u32,
+    ticks: f64,
+    /// The last closed window: its mean frequency and its ticks.
+    last: Option<(f64, f64)>,
+    max_accel: f64,
+}
+
+impl AccelWindows {
+    /// Windows of at most `longest` ticks (a quarter of the ramp, say).
+    pub fn new(longest: f64) -> Self {
+        AccelWindows {
+            longest,
+            count: 0,
+            ticks: 0.0,
+            last: None,
+            max_accel: 0.0,
+        }
+    }
+
+    /// The ticks a window needs at step frequency `f` and the curve's
+    /// acceleration `accel` (`scale` ticks per second). With every edge
+    /// within half a tick of the curve, a window of `T` s is within a tick
+    /// of its exact length, which moves its mean frequency by up to
+    /// `f / (T scale)` and the acceleration between two windows by up to
+    /// `2 f / (T² scale)`: at most 5 % of `accel` from
+    /// `T = sqrt(40 f / (accel scale))`.
+    pub fn needed(&self, f: f64, accel: f64, scale: f64) -> f64 {
+        let needed = libm::sqrt(40.0 * f / (libm::fabs(accel) * scale)) * scale;
+        if needed.is_nan() {
+            self.longest
+        } else {
+            needed.min(self.longest)
+        }
+    }
+
+    /// Adds an entry of `ticks` (`scale` ticks per second) where the curve
+    /// runs at `f` Hz and accelerates at `accel` Hz/s. When it closes a
+    /// window that follows another: the acceleration between the two, in
+    /// Hz/s, read at the edge between them.
+    pub fn push(&mut self, ticks: f64, scale: f64, f: f64, accel: f64) -> Option<f64> {
+        self.count += 1;
+        self.ticks += ticks;
+        if self.ticks < self.needed(f, accel, scale) {
+            return None;
+        }
+        let mean = self.count as f64 * scale / self.ticks;
+        let reading = self.last.map(|(before, ticks_before)| {
+            let dt = (ticks_before + self.ticks) / 2.0 / scale;
+            (mean - before) / dt
+        });
+        if let Some(accel) = reading {
+            self.max_accel = self.max_accel.max(libm::fabs(accel));
+        }
+        self.last = Some((mean, self.ticks));
+        (self.count, self.ticks) = (0, 0.0);
+        reading
+    }
+
+    /// The ticks of the window still open: the reading of the next one is
+    /// at the edge that many ticks back.
+    pub fn open_ticks(&self) -> f64 {
+        self.ticks
+    }
+}
+
+/// Entries kept by a [`Slope`]: two windows of one entry.
+const W: usize = 1;
 
 /// Acceleration and jerk of a sequence of periods: between single periods
 /// (`window` 1) or between the means of windows of periods. Keeps the last
@@ -123,11 +200,6 @@ impl Slope {
         }
         self.accels[slot] = (accel, at);
     }
-
-    /// Whether at least one acceleration was measured (two windows seen).
-    fn complete(&self) -> bool {
-        self.count >= 2 * self.window
-    }
 }
 
 /// Turns exact periods into integers and keeps the figures.
@@ -137,9 +209,10 @@ pub(crate) struct Quantizer {
     scale: f64,
     exact_edge: f64,
     emitted: u64,
-    /// The integer table, windowed and entry by entry (for short tables).
-    windowed: Slope,
-    single: Slope,
+    /// The integer table's acceleration.
+    windowed: AccelWindows,
+    /// The last unrounded entry, in ticks.
+    last_exact: Option<f64>,
     /// The unrounded periods.
     curve: Slope,
     figures: Figures,
@@ -153,8 +226,8 @@ impl Quantizer {
             scale: spec.timer.ticks_per_second(),
             exact_edge: 0.0,
             emitted: 0,
-            windowed: Slope::new(W),
-            single: Slope::new(1),
+            windowed: AccelWindows::new(f64::INFINITY),
+            last_exact: None,
             curve: Slope::new(1),
             figures: Figures {
                 len: 0,
@@ -167,7 +240,6 @@ impl Quantizer {
                 start_hz: 0.0,
                 final_hz: 0.0,
                 max_accel_hz_s: 0.0,
-                accel_window: ACCEL_WINDOW,
                 curve_max_accel_hz_s: 0.0,
                 curve_max_jerk_hz_s2: 0.0,
                 max_edge_error_ticks: 0.0,
@@ -175,6 +247,12 @@ impl Quantizer {
                 overflow_margin_ticks: 0,
             },
         }
+    }
+
+    /// Bounds the windows of the table's acceleration to a quarter of a
+    /// ramp of `duration` exact ticks; before any entry is pushed.
+    pub(crate) fn set_duration(&mut self, duration: f64) {
+        self.windowed = AccelWindows::new(duration / 4.0);
     }
 
     /// Quantizes entry `index`, whose exact length is `entry` ticks and whose
@@ -284,8 +362,14 @@ impl Quantizer {
         if index == 0 {
             fig.first_ticks = ticks;
         }
-        self.windowed.push(ticks as f64, self.scale);
-        self.single.push(ticks as f64, self.scale);
+        // The curve's own frequency and acceleration here, between this
+        // unrounded entry and the one before: what the windows resolve.
+        let f = self.scale / entry;
+        let accel = self.last_exact.map_or(0.0, |before| {
+            (f - self.scale / before) / ((before + entry) / 2.0 / self.scale)
+        });
+        self.last_exact = Some(entry);
+        self.windowed.push(ticks as f64, self.scale, f, accel);
         self.curve.push(entry, self.scale);
         fig.last_ticks = ticks;
         fig.len = index + 1;
@@ -298,13 +382,7 @@ impl Quantizer {
         fig.start_hz = self.scale / fig.first_ticks as f64;
         fig.final_hz = self.scale / fig.last_ticks as f64;
         fig.overflow_margin_ticks = self.timer.word.max() - fig.max_ticks;
-        let table = if self.windowed.complete() {
-            self.windowed
-        } else {
-            self.single
-        };
-        fig.accel_window = table.window as u32;
-        fig.max_accel_hz_s = table.max_accel;
+        fig.max_accel_hz_s = self.windowed.max_accel;
         fig.curve_max_accel_hz_s = self.curve.max_accel;
         fig.curve_max_jerk_hz_s2 = self.curve.max_jerk;
         self.figures
