@@ -203,8 +203,8 @@ fn an_aggressive_ramp_fails_the_check() {
     assert_eq!(error.key(), Key::MOTOR);
     assert_eq!(
         error.to_string(),
-        "the motor cannot follow step 7 at 1757.5 Hz: it needs 0.1799 N·m but gives \
-         0.1746 N·m after the safety factor, short by 0.0053 N·m"
+        "the motor cannot follow step 7 at 1757.5 Hz: it needs 0.1791 N·m but gives \
+         0.1746 N·m after the safety factor, short by 0.0045 N·m"
     );
     // Beyond the curve's last point the motor gives nothing, and says so.
     let mut short = motor;
@@ -739,24 +739,31 @@ fn the_check_never_passes_a_non_finite_torque() {
          number (got 1e308)"
     );
     assert_eq!(error.key(), Key::LOAD_INERTIA);
-    let heavy = Motor {
-        rotor_inertia: 1.7e308,
-        load_inertia: 0.0,
+    // A drag whose torque at the first entry's speed overflows.
+    let dragged = Motor {
+        damping: 1e308,
         ..nema17(1)
     };
-    let error = heavy.check(&spec, &table).unwrap_err();
+    let error = dragged.check(&spec, &table).unwrap_err();
     assert_eq!(
         error,
         MotorError::NotFinite {
-            step: 1,
+            step: 0,
             what: "needed"
         }
     );
     assert_eq!(
         error.to_string(),
-        "the torque needed at step 1 is not a finite number: the motor's inertia, friction, \
+        "the torque needed at step 0 is not a finite number: the motor's inertia, friction, \
          damping or torque is too large to compute with"
     );
+    // An inertia too large to accelerate is refused, whatever it reads.
+    let heavy = Motor {
+        rotor_inertia: 1.7e308,
+        load_inertia: 0.0,
+        ..nema17(1)
+    };
+    assert!(heavy.check(&spec, &table).is_err());
     assert_eq!(
         nema17(1).check(&spec, &[]),
         Err(MotorError::EmptyTable),
@@ -860,6 +867,21 @@ fn electromagnetic_damping_calms_the_swing_the_check_cannot_see() {
     let d = 2.0 * 0.1 * (k * (5.4e-6f64 + 2.0e-5)).sqrt();
     assert!((damped.field_damping() - d).abs() < 1e-15);
     assert!((damped.stiffness() - k).abs() < 1e-9);
+    // What the check says of these moves undamped (the README's figures).
+    for accel in [
+        100_000.0, 120_000.0, 140_000.0, 160_000.0, 180_000.0, 200_000.0,
+    ] {
+        let (spec, table) = ramp(accel, 1);
+        for (motor, safety) in [(nema17(1), "1.5"), (undamped, "1")] {
+            match motor.check(&spec, &table) {
+                Ok(f) => println!(
+                    "{accel} full steps/s², safety {safety}: {:.3} N·m to spare",
+                    f.min_margin_nm
+                ),
+                Err(e) => println!("{accel} full steps/s², safety {safety}: {e}"),
+            }
+        }
+    }
     for (accel, undamped_loses) in [
         (120_000.0, true),
         (140_000.0, false),
@@ -885,5 +907,251 @@ fn electromagnetic_damping_calms_the_swing_the_check_cannot_see() {
         assert_eq!(bare != 0, undamped_loses, "{accel}");
         assert_eq!(calm, 0, "{accel}");
         assert!(check.is_ok(), "{accel}: {check:?}");
+    }
+}
+
+/// A profiles file of one linear ramp on a motor given by its TOML lines.
+fn motor_file(motor: &str, fmin: f64, fmax: f64, accel: f64, timer_hz: u32) -> String {
+    format!(
+        "[motors.m]\n{motor}\n\n[profiles.r]\ncurve = \"linear\"\nfmin = {fmin}\nfmax = {fmax}\n\
+         accel = {accel}\ntimer_hz = {timer_hz}\nmotor = \"m\"\n"
+    )
+}
+
+/// The motor check's verdict on a profiles file: `Ok` or the message.
+fn verdict(source: &str) -> Result<(), String> {
+    Profiles::parse("profiles.toml", source)
+        .map(|_| ())
+        .map_err(|e| e.to_string())
+}
+
+/// The README's 17HS-like windings, undamped unless `extra` says otherwise.
+fn windings_17hs(extra: &str) -> String {
+    format!(
+        "step_angle = 1.8\nrotor_inertia = 5.4e-6\nresistance = 1.65\ninductance = 2.8e-3\n\
+         rated_current = 1.68\nholding_torque = 0.44\nsupply_voltage = 24\n{extra}"
+    )
+}
+
+/// `damping_ratio` is a fraction of critical damping, at most 1: a larger
+/// one no longer makes the start check pass what the ratio 1 refuses.
+#[test]
+fn damping_ratio_above_critical_is_refused() {
+    let motor = |zeta: &str| {
+        format!(
+            "step_angle = 1.8\nmicrosteps = 8\nrotor_inertia = 6.8e-6\nload_inertia = 1e-4\n\
+             torque_curve = [[0, 0.4], [32000, 0.25]]\ndamping_ratio = {zeta}"
+        )
+    };
+    let file = |zeta: &str| motor_file(&motor(zeta), 30_000.0, 31_000.0, 20_000.0, 10_000_000);
+    for zeta in ["0", "1"] {
+        let e = verdict(&file(zeta)).unwrap_err();
+        assert!(e.contains("the motor cannot start at"), "ζ = {zeta}: {e}");
+    }
+    for zeta in ["1.5", "10", "1e6", "1e300"] {
+        let e = verdict(&file(zeta)).unwrap_err();
+        assert!(
+            e.contains(
+                "`damping_ratio` must be from 0 to 1, a fraction of critical damping: a motor's \
+                 own electromagnetic damping is a small fraction of critical, and a larger ratio \
+                 would drag the model's rotor along with any field (got "
+            ),
+            "ζ = {zeta}: {e}"
+        );
+        assert!(e.starts_with("profiles.toml:7:17: "), "ζ = {zeta}: {e}");
+    }
+}
+
+/// No damping makes the model unable to integrate: the damping is taken
+/// on the new speed, so the simulation plays a ramp at any `damping` and at
+/// every allowed `damping_ratio`, and the start check judges it.
+#[test]
+fn no_damping_makes_the_model_unable_to_integrate() {
+    let (spec, periods) = ramp(2000.0, 1);
+    for damping in [0.0, 1e-3, 1.0, 1e3] {
+        for damping_ratio in [0.0, 0.5, 1.0] {
+            let motor = Motor {
+                damping,
+                damping_ratio,
+                ..nema17(1)
+            };
+            let options = SimOptions::suggested(&motor, &spec, &periods);
+            let run = simulate::run(&motor, &spec, &periods, &options);
+            assert!(
+                run.is_ok(),
+                "damping {damping}, ζ {damping_ratio}: {:?}",
+                run.err()
+            );
+        }
+    }
+}
+
+/// An undamped rotor rings at low step rates: the refusal says that
+/// damping helps, and with `damping_ratio = 0.1` the same ramp passes;
+/// starting slower does not help, and the message says so.
+#[test]
+fn an_undamped_refusal_advises_damping_and_damping_helps() {
+    for fmin in [50.0, 100.0, 200.0] {
+        let e = verdict(&motor_file(
+            &windings_17hs(""),
+            fmin,
+            1000.0,
+            2000.0,
+            1_000_000,
+        ))
+        .unwrap_err();
+        assert!(
+            e.contains(
+                "(with `damping_ratio = 0.1` the model's rotor makes it: give the motor's own \
+                 damping, as a rotor without rings; at half the rate it slips too, so starting \
+                 slower does not help)"
+            ),
+            "fmin = {fmin}: {e}"
+        );
+        let damped = windings_17hs("damping_ratio = 0.1");
+        assert_eq!(
+            verdict(&motor_file(&damped, fmin, 1000.0, 2000.0, 1_000_000)),
+            Ok(()),
+            "fmin = {fmin} with the advised damping"
+        );
+        // And the advice not given does not help: half the rate slips too.
+        let half = motor_file(&windings_17hs(""), fmin / 2.0, 1000.0, 500.0, 1_000_000);
+        assert!(verdict(&half).is_err(), "fmin = {}", fmin / 2.0);
+    }
+}
+
+/// A damped rotor that slips on a steep start: the refusal advises half the
+/// rate and a quarter of the acceleration, and that ramp passes.
+#[test]
+fn a_start_too_steep_advises_a_slower_start_and_it_helps() {
+    let motor = windings_17hs("load_inertia = 1e-4\ndamping_ratio = 0.1");
+    let e = verdict(&motor_file(&motor, 600.0, 3000.0, 20_000.0, 1_000_000)).unwrap_err();
+    assert!(
+        e.contains(
+            "the motor cannot start on this ramp with its load: from rest at 616.1 Hz the model's \
+             rotor slips before pulse 5, before it reaches the field's speed (start slower and \
+             accelerate less: at half the rate throughout (half the start frequency, a quarter \
+             of the acceleration) the model's rotor makes it)"
+        ),
+        "{e}"
+    );
+    assert_eq!(
+        verdict(&motor_file(&motor, 300.0, 3000.0, 5000.0, 1_000_000)),
+        Ok(())
+    );
+}
+
+/// A start above the model's limit: started below the limit it names, the
+/// rotor pulls in; the acceleration right after is judged next, and its
+/// own advice, followed, passes.
+#[test]
+fn a_start_above_the_limit_names_one_that_starts() {
+    let motor = windings_17hs("load_inertia = 1e-4\ndamping_ratio = 0.1");
+    let e = verdict(&motor_file(&motor, 1000.0, 3000.0, 2000.0, 1_000_000)).unwrap_err();
+    let limit: f64 = e
+        .split("it starts at ")
+        .nth(1)
+        .and_then(|s| s.split(" Hz at most").next())
+        .and_then(|s| s.parse().ok())
+        .unwrap_or_else(|| panic!("{e}"));
+    // The first entry is a little faster than `fmin`: start below the limit.
+    let fmin = (limit * 0.99).floor();
+    let e = verdict(&motor_file(&motor, fmin, 3000.0, 2000.0, 1_000_000)).unwrap_err();
+    assert!(
+        !e.contains("the motor cannot start at"),
+        "fmin = {fmin}: {e}"
+    );
+    assert!(
+        e.contains("(start slower and accelerate less: at half the rate throughout"),
+        "{e}"
+    );
+    assert_eq!(
+        verdict(&motor_file(&motor, fmin / 2.0, 3000.0, 500.0, 1_000_000)),
+        Ok(()),
+        "fmin = {}, as advised",
+        fmin / 2.0
+    );
+}
+
+/// A driver that steps the current plays its own steps: half steps are two
+/// table steps a full step, full steps one; any other `microsteps` is
+/// refused at that key.
+#[test]
+fn a_stepped_drive_takes_its_own_steps() {
+    let file = |drive: &str, microsteps: u32| {
+        let motor = windings_17hs(&format!(
+            "drive = \"{drive}\"\nmicrosteps = {microsteps}\ndamping_ratio = 0.1"
+        ));
+        let k = f64::from(microsteps);
+        motor_file(&motor, 400.0 * k, 1000.0 * k, 2000.0 * k, 1_000_000)
+    };
+    assert_eq!(verdict(&file("half_step", 2)), Ok(()));
+    assert_eq!(verdict(&file("full_step", 1)), Ok(()));
+    assert_eq!(verdict(&file("sine", 8)), Ok(()));
+    for (drive, microsteps, expected) in [
+        (
+            "half_step",
+            8,
+            "2 with `drive = half_step`: the driver moves half a step per pulse, so each table \
+             step is a half step (got 8)",
+        ),
+        (
+            "half_step",
+            1,
+            "2 with `drive = half_step`: the driver moves half a step per pulse, so each table \
+             step is a half step (got 1)",
+        ),
+        (
+            "full_step",
+            256,
+            "1 with `drive = full_step`: the driver moves a full step per pulse, so each table \
+             step is a full step (got 256)",
+        ),
+    ] {
+        let e = verdict(&file(drive, microsteps)).unwrap_err();
+        assert!(
+            e.contains(&format!("`microsteps` must be {expected}")),
+            "{drive}, {microsteps}: {e}"
+        );
+        assert!(e.starts_with("profiles.toml:10:14: "), "{e}");
+    }
+}
+
+/// One tick of rounding is no torque: a 1/8-step ramp to 31 kHz on a
+/// 1e-4 kg·m² load needs about 0.008 N·m to accelerate at 20 000 Hz/s, and
+/// passes on a 1, 2 and 10 MHz timer alike. Along the ramp the torque the
+/// check reads stays within 0.02 N·m of that need (one entry's tick at
+/// 28 kHz on 1 MHz read 0.29 N·m over windows of a full step); only at the
+/// table's end, where the player goes on at the whole-tick last period, a
+/// step of speed the rotor does feel is read.
+#[test]
+fn rounding_is_not_read_as_torque() {
+    let motor = "step_angle = 1.8\nmicrosteps = 8\nrotor_inertia = 6.8e-6\nload_inertia = 1e-4\n\
+                 torque_curve = [[0, 0.4], [32000, 0.25]]\ndamping_ratio = 0.1";
+    // J α: the load's inertia times the ramp's angular acceleration.
+    let ramp_needs = (6.8e-6 + 1e-4) * 20_000.0 * (1.8f64 / 8.0).to_radians();
+    for timer_hz in [1_000_000, 2_000_000, 10_000_000] {
+        let source = motor_file(motor, 1000.0, 31_000.0, 20_000.0, timer_hz);
+        let profiles = Profiles::parse("profiles.toml", &source)
+            .unwrap_or_else(|e| panic!("{timer_hz} Hz: {e}"));
+        let p = &profiles.profiles()[0];
+        let Generated::Steps(table) = &p.table else {
+            panic!("a per-step table");
+        };
+        let motor = p.motor.expect("a motor");
+        // The last 2.5 ms, where the window reaches past the table's end.
+        let end = table.periods.len() as u32 - 80;
+        let mut worst = 0.0f64;
+        motor
+            .check_with(&table.spec, &table.periods, |step, _, needed, _| {
+                if step > 0 && step < end {
+                    worst = worst.max(needed);
+                }
+            })
+            .unwrap();
+        assert!(
+            worst < ramp_needs + 0.02,
+            "{timer_hz} Hz: the check reads {worst} N·m where the ramp needs {ramp_needs:.4}"
+        );
     }
 }

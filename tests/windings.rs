@@ -38,11 +38,17 @@ fn qsh4218(volts: f64) -> Motor {
 
 /// 300 to 9000 full steps/s at 100 000 full steps/s², on a 10 MHz timer.
 fn ramp() -> (Spec, Vec<u32>) {
+    ramp_in(1)
+}
+
+/// The same ramp in table steps of `1 / per_full_step` of a step.
+fn ramp_in(per_full_step: u32) -> (Spec, Vec<u32>) {
+    let k = f64::from(per_full_step);
     let spec = Spec::new(
         Curve::Linear(Linear {
-            fmin: 300.0,
-            fmax: 9000.0,
-            extent: LinearExtent::Accel(100_000.0),
+            fmin: 300.0 * k,
+            fmax: 9000.0 * k,
+            extent: LinearExtent::Accel(100_000.0 * k),
         }),
         Timer::new(10_000_000),
     );
@@ -71,8 +77,8 @@ fn the_check_and_the_simulation_use_the_torque_the_windings_give() {
     let error = weak.check(&spec, &table).unwrap_err();
     assert_eq!(
         error.to_string(),
-        "the motor cannot follow step 185 at 6101.3 Hz: it needs 0.1069 N·m but gives \
-         0.1031 N·m after the safety factor, short by 0.0038 N·m (the pull-out torque derived \
+        "the motor cannot follow step 280 at 7496.3 Hz: it needs 0.0848 N·m but gives \
+         0.0846 N·m after the safety factor, short by 0.0002 N·m (the pull-out torque derived \
          from the windings)"
     );
     let MotorError::Torque {
@@ -157,10 +163,15 @@ motor = "qsh4218"
     assert!((motor.pull_out(0.0) - 0.39).abs() < 1e-15);
 }
 
+/// The motor on a driver of `drive`: a half-step driver's table steps are
+/// half steps.
 fn stepping(drive: Drive) -> Motor {
     let mut motor = qsh4218(24.0);
     if let Some(w) = motor.windings.as_mut() {
         w.drive = drive;
+    }
+    if drive == Drive::HalfStep {
+        motor.microsteps = 2;
     }
     motor
 }
@@ -173,34 +184,43 @@ fn stepping(drive: Drive) -> Motor {
 fn a_driver_that_steps_the_current_gives_its_fundamentals_share() {
     let (spec, table) = ramp();
     let sine = stepping(Drive::Sine);
-    let half = stepping(Drive::HalfStep);
+    let mut half = stepping(Drive::HalfStep);
     let full = stepping(Drive::FullStep);
     let share = |m: &Motor| m.pull_out(0.0) / sine.pull_out(0.0);
     let pi = std::f64::consts::PI;
     assert!((share(&half) - 4.0 / pi * (pi / 8.0).cos() / 2f64.sqrt()).abs() < 1e-12);
     assert!((share(&full) - 4.0 / pi / 2f64.sqrt()).abs() < 1e-12);
-    // With a safety factor of 1.6 the sine drive follows the ramp, half
-    // steps fall short where the ramp ends.
-    let (mut sine, mut half) = (sine, half);
-    sine.safety = 1.6;
-    half.safety = 1.6;
-    assert!(sine.check(&spec, &table).is_ok());
-    assert_eq!(
-        half.check(&spec, &table).unwrap_err().to_string(),
-        "the motor cannot follow step 395 at 8904.7 Hz: it needs 0.1552 N·m but gives \
-         0.1519 N·m after the safety factor, short by 0.0033 N·m (the pull-out torque derived \
-         from the windings, in half steps)"
+    // The same ramp in half steps has less torque to spare where it ends:
+    // the share of the half-step drive's fundamental at that speed.
+    let (half_spec, half_table) = ramp_in(2);
+    let on_sine = sine.check(&spec, &table).unwrap();
+    let on_half = half.check(&half_spec, &half_table).unwrap();
+    assert!(
+        on_half.min_margin_nm < on_sine.min_margin_nm,
+        "{on_half:?} {on_sine:?}"
+    );
+    let last_hz = on_sine.hz;
+    let ratio = half.available(2.0 * last_hz) / sine.available(last_hz);
+    assert!(ratio < 0.85, "{ratio}");
+    // Where less torque is left than the ramp needs, the refusal says the
+    // torque is derived in half steps.
+    half.safety = 3.0;
+    let refused = half.check(&half_spec, &half_table).unwrap_err().to_string();
+    assert!(
+        refused.ends_with("(the pull-out torque derived from the windings, in half steps)"),
+        "{refused}"
     );
 }
 
-// The macro takes the drive by name.
-static HALF_STEPS: [u16; 405] = period_table!(
+// The macro takes the drive by name, half steps in table steps.
+static HALF_STEPS: [u16; 810] = period_table!(
     curve = linear,
-    fmin = 300,
-    fmax = 9000,
-    accel = 100_000,
+    fmin = 600,
+    fmax = 18000,
+    accel = 200_000,
     timer_hz = 10_000_000,
     step_angle = 1.8,
+    microsteps = 2,
     rotor_inertia = 6.8e-6,
     load_inertia = 1.36e-5,
     friction = 0.02,
@@ -216,7 +236,7 @@ static HALF_STEPS: [u16; 405] = period_table!(
 
 #[test]
 fn the_macro_and_a_profiles_file_take_the_drive() {
-    let (_, table) = ramp();
+    let (_, table) = ramp_in(2);
     assert_eq!(HALF_STEPS.map(u32::from).as_slice(), table.as_slice());
     let text = r#"
 [motors.qsh4218]

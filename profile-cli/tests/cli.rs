@@ -329,7 +329,6 @@ const WINDINGS_ONLY: &str = "[motors.m]\nstep_angle = 1.8\nrotor_inertia = 6.8e-
      [profiles.p]\ncurve = \"linear\"\nfmin = 300\nfmax = 3000\naccel = 10_000\n\
      timer_hz = 1_000_000\nmotor = \"m\"\n";
 
-/// The report of the profiles file `file`, written in a folder of its own.
 /// A layout larger than one entry per step says so, not "0.2 times less".
 #[test]
 fn report_says_when_a_compact_layout_is_larger_than_the_table() {
@@ -347,6 +346,7 @@ fn report_says_when_a_compact_layout_is_larger_than_the_table() {
     );
 }
 
+/// The report of the profiles file `file`, written in a folder of its own.
 fn report_of(name: &str, file: &str) -> String {
     let dir = work_dir(name);
     fs::write(dir.join("profiles.toml"), file).unwrap();
@@ -394,10 +394,16 @@ fn report_labels_the_windings_curve_as_the_checked_one_when_it_is_the_only_one()
 
 #[test]
 fn report_names_a_stepped_drive_and_keeps_the_figures_in_their_columns() {
-    let half_steps = WINDINGS_ONLY.replace(
-        "supply_voltage = 12\n",
-        "supply_voltage = 12\ndrive = \"half_step\"\n",
-    );
+    // A half-step driver's table steps are half steps.
+    let half_steps = WINDINGS_ONLY
+        .replace(
+            "supply_voltage = 12\n",
+            "supply_voltage = 12\ndrive = \"half_step\"\nmicrosteps = 2\n",
+        )
+        .replace(
+            "fmin = 300\nfmax = 3000\naccel = 10_000\n",
+            "fmin = 600\nfmax = 6000\naccel = 20_000\n",
+        );
     let report = report_of("report_windings_half_step", &half_steps);
     let pull_out = after(&report, "`p`: the motor's pull-out torque, N·m\n");
     let lines: Vec<&str> = pull_out.lines().take(2).collect();

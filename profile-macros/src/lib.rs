@@ -82,7 +82,7 @@ mod include;
 /// | `drive` | the current the driver sets: `sine` (a microstepping driver, at any microstep setting), `half_step` (each phase on at `rated_current` or off, in turn one phase then both), `full_step` (both phases on) | `sine` |
 /// | `friction` | constant load and friction torque, N·m | `0` |
 /// | `damping` | viscous damping on the rotor's speed, N·m·s/rad | `0` |
-/// | `damping_ratio` | electromagnetic damping ζ, on the rotor's speed relative to the field's (`simulate`) | `0` |
+/// | `damping_ratio` | electromagnetic damping ζ, on the rotor's speed relative to the field's (`simulate`), from 0 to 1 | `0` |
 /// | `safety` | the curve's torque is divided by it (at least 1) | `1` |
 /// | `max_start_hz` | the motor's start frequency without load: the table must start below it over `sqrt(1 + load_inertia / rotor_inertia)`; without it, below the start the model's rotor pulls in to | none |
 ///

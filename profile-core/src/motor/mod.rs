@@ -12,33 +12,44 @@
 //! and the shortfall; otherwise the smallest margin and where it is are the
 //! table's figures.
 //!
-//! With microsteps, the speeds on each side of an edge are averaged over one
-//! full step (`microsteps` entries). Rounding to whole timer ticks makes
-//! consecutive microstep periods differ by a tick or so, which read one by one
-//! are accelerations far above the ramp's (on a 10 MHz timer a 1/8-step ramp
-//! at 15 kHz would read ±350 000 Hz/s from one tick), yet they move the field
-//! by a small fraction of a microstep, which the rotor does not feel (the
-//! simulation in `simulate` shows it). In full steps every edge is judged
-//! on its own two periods.
+//! The acceleration judged is the one the rotor feels: the table's, its
+//! speed averaged on each side of an edge over at least one full step
+//! (`microsteps` entries) and at least the rotor's `1 / ω_n`
+//! ([`Motor::felt_window`]). Rounding to whole timer ticks makes consecutive
+//! periods differ by a tick or so, which read one by one are accelerations
+//! far above the ramp's (on a 1 MHz timer a 1/8-step ramp at 28 kHz would
+//! read 0.29 N·m of torque on a 1e-4 kg·m² load from one tick), yet they
+//! move the field by a small fraction of a step, which the rotor, a spring
+//! and mass of natural frequency `ω_n`, does not follow (the simulation in
+//! `simulate` shows it). A change of speed faster than `1 / ω_n` (a segment
+//! table's jump) pulls the rotor with the spring's torque, `J Δω ω_n`: what
+//! the window reads.
 //!
 //! Units: angles in degrees as written (`step_angle`), inertia in kg·m²,
 //! torque in N·m, damping in N·m·s/rad, frequencies in Hz of the table's
 //! steps (microsteps when `microsteps > 1`).
 
+mod check;
 mod chopper;
 pub mod simulate;
 mod start;
 mod stepped;
 mod windings;
 
-pub use start::{END_FULL_STEPS, START_FULL_STEPS, START_MAX_STEPS, START_RESOLUTION, StartLimit};
+pub use start::{
+    END_FULL_STEPS, REMEDY_DAMPING_RATIO, Remedies, START_FULL_STEPS, START_MAX_STEPS,
+    START_RESOLUTION, StartLimit,
+};
 pub use windings::{Drive, Windings};
 
 use core::fmt;
 
 use crate::base::error::Num;
 use crate::base::key::Key;
-use crate::table::spec::Spec;
+
+/// The largest [`Motor::damping_ratio`]: critical damping. A motor's own
+/// electromagnetic damping is a small fraction of it.
+pub const MAX_DAMPING_RATIO: f64 = 1.0;
 
 /// The most points a pull-out torque curve may have.
 pub const MAX_CURVE_POINTS: usize = 32;
@@ -213,6 +224,8 @@ pub enum MotorError {
         pulse: u32,
         /// The ramp's start frequency, in Hz.
         hz: f64,
+        /// What the model found would let its rotor start.
+        remedies: Remedies,
     },
     /// The model's rotor slips on the shortest move the ramp's start makes:
     /// from rest up the ramp's first entries (16 full steps) and down again,
@@ -225,6 +238,8 @@ pub enum MotorError {
         pulse: u32,
         /// The move's steps.
         steps: u32,
+        /// What the model found would let its rotor make the move.
+        remedies: Remedies,
     },
     /// The loaded rotor cannot pull in to the ramp's first step from rest.
     Start {
@@ -375,6 +390,15 @@ impl Motor {
         non_negative(Key::FRICTION, self.friction)?;
         non_negative(Key::DAMPING, self.damping)?;
         non_negative(Key::DAMPING_RATIO, self.damping_ratio)?;
+        if self.damping_ratio > MAX_DAMPING_RATIO {
+            return Err(MotorError::Invalid {
+                key: Key::DAMPING_RATIO,
+                value: self.damping_ratio,
+                expected: "from 0 to 1, a fraction of critical damping: a motor's own \
+                           electromagnetic damping is a small fraction of critical, and a \
+                           larger ratio would drag the model's rotor along with any field",
+            });
+        }
         if !(self.safety.is_finite() && self.safety >= 1.0) {
             return Err(MotorError::Invalid {
                 key: Key::SAFETY,
@@ -387,6 +411,7 @@ impl Motor {
         }
         if let Some(windings) = &self.windings {
             windings.validate()?;
+            self.validate_drive(windings.drive)?;
         }
         let Some(curve) = &self.torque_curve else {
             return match self.windings {
@@ -404,6 +429,32 @@ impl Motor {
         Ok(())
     }
 
+    /// A driver that steps the current plays its own steps, one per table
+    /// entry: half steps (`microsteps = 2`) or full steps (`microsteps = 1`).
+    fn validate_drive(&self, drive: Drive) -> Result<(), MotorError> {
+        let (steps, expected) = match drive {
+            Drive::Sine => return Ok(()),
+            Drive::HalfStep => (
+                2,
+                "2 with `drive = half_step`: the driver moves half a step per pulse, so each \
+                 table step is a half step",
+            ),
+            Drive::FullStep => (
+                1,
+                "1 with `drive = full_step`: the driver moves a full step per pulse, so each \
+                 table step is a full step",
+            ),
+        };
+        if self.microsteps == steps {
+            return Ok(());
+        }
+        Err(MotorError::Invalid {
+            key: Key::MICROSTEPS,
+            value: f64::from(self.microsteps),
+            expected,
+        })
+    }
+
     /// Radians per table step.
     pub fn step_radians(&self) -> f64 {
         self.step_angle.to_radians() / self.microsteps as f64
@@ -412,125 +463,6 @@ impl Motor {
     /// Torque available at step frequency `hz` over the safety factor, in N·m.
     pub fn available(&self, hz: f64) -> f64 {
         self.pull_out(hz) / self.safety
-    }
-
-    /// Checks that the motor can follow `periods` (a table of `spec`): every
-    /// edge's torque need against the pull-out curve, and the start frequency.
-    pub fn check(&self, spec: &Spec, periods: &[u32]) -> Result<TorqueFigures, MotorError> {
-        self.check_with(spec, periods, |_, _, _, _| {})
-    }
-
-    /// [`Motor::check`], also calling `each(step, hz, needed, available)` for
-    /// every edge (step 0 is the start from rest), for plots.
-    pub fn check_with<F: FnMut(u32, f64, f64, f64)>(
-        &self,
-        spec: &Spec,
-        periods: &[u32],
-        mut each: F,
-    ) -> Result<TorqueFigures, MotorError> {
-        self.validate()?;
-        let per_second = spec.timer.timer_hz as f64 / spec.timer.ticks_per_step as f64;
-        let inertia = self.rotor_inertia + self.load_inertia;
-        let theta = self.step_radians();
-        // The start is an edge too: from rest to the first entry's speed.
-        // Pulling in from rest is judged above; what the check asks of the
-        // first step here is the torque to keep that speed.
-        let Some(&first) = periods.first() else {
-            return Err(MotorError::EmptyTable);
-        };
-        let hz = per_second / first as f64;
-        let mut worst = self.judge(0, hz, self.friction + self.damping * theta * hz, &mut each)?;
-
-        // Speeds are averaged over one full step on each side of an edge
-        // (`microsteps` entries, fewer at the ends of the table).
-        let m = (self.microsteps as usize).max(1);
-        let n = periods.len();
-        // Window a = entries [a_start, k + 1), window b = [k + 1, b_end).
-        let (mut sum_a, mut a_start, mut sum_b, mut b_end) = (0u64, 0usize, 0u64, 1usize);
-        for (k, w) in periods.windows(2).enumerate() {
-            sum_a += w[0] as u64;
-            if k + 1 - a_start > m {
-                sum_a -= periods[a_start] as u64;
-                a_start += 1;
-            }
-            if k > 0 {
-                sum_b -= w[0] as u64;
-            }
-            while b_end < n && b_end < k + 1 + m {
-                sum_b += periods[b_end] as u64;
-                b_end += 1;
-            }
-            let (ta, tb) = (sum_a as f64 / per_second, sum_b as f64 / per_second);
-            let (la, lb) = ((k + 1 - a_start) as f64, (b_end - k - 1) as f64);
-            // Angular acceleration between the two windows' mean speeds, a
-            // time apart of half of both windows (with one entry per window:
-            // between the two steps' speeds, half of both periods apart).
-            let alpha = theta * (lb / tb - la / ta) / ((ta + tb) / 2.0);
-            let (fa, fb) = (per_second / w[0] as f64, per_second / w[1] as f64);
-            // Less torque at higher frequency: judge at the faster step.
-            let hz = fa.max(fb);
-            let needed = inertia * alpha + self.friction + self.damping * theta * hz;
-            let figures = self.judge(k as u32 + 1, hz, needed, &mut each)?;
-            if figures.min_margin_nm < worst.min_margin_nm {
-                worst = figures;
-            }
-        }
-        // Then the ends of a move, from the model: the start from rest and
-        // the stop.
-        let hz = per_second / first as f64;
-        if !self.starts_at(hz) {
-            return Err(MotorError::Start {
-                hz,
-                limit: self.start_limit(hz),
-            });
-        }
-        self.check_ends(per_second, periods)?;
-        Ok(worst)
-    }
-
-    /// One edge: the torque `needed` at step frequency `hz` against what the
-    /// motor gives there.
-    fn judge<F: FnMut(u32, f64, f64, f64)>(
-        &self,
-        step: u32,
-        hz: f64,
-        needed: f64,
-        each: &mut F,
-    ) -> Result<TorqueFigures, MotorError> {
-        let available = self.available(hz);
-        for (value, what) in [(needed, "needed"), (available, "available")] {
-            if !value.is_finite() {
-                return Err(MotorError::NotFinite { step, what });
-            }
-        }
-        each(step, hz, needed, available);
-        if needed > available {
-            return Err(MotorError::Torque {
-                step,
-                hz,
-                needed_nm: needed,
-                available_nm: available,
-                beyond_curve: self.torque_curve.is_some_and(|c| hz > c.top()),
-                from_windings: match (&self.torque_curve, &self.windings) {
-                    (None, Some(w)) => Some(w.drive),
-                    _ => None,
-                },
-            });
-        }
-        let margin = available - needed;
-        if !margin.is_finite() {
-            return Err(MotorError::NotFinite {
-                step,
-                what: "margin",
-            });
-        }
-        Ok(TorqueFigures {
-            min_margin_nm: margin,
-            step,
-            hz,
-            needed_nm: needed,
-            available_nm: available,
-        })
     }
 }
 

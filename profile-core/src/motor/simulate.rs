@@ -10,12 +10,16 @@
 //!
 //! ```text
 //! J θ'' = T_peak(f) · sin(lag_e) - friction · sign(θ') - damping · θ'
+//!         + D · (ω_cmd - θ')
 //! lag_e = (θ_cmd - θ) · (π/2) / θ_fullstep
 //! ```
 //!
 //! - `J` is the rotor and load inertia; `friction` a Coulomb torque that
 //!   opposes motion and holds the rotor still while the drive torque is
-//!   smaller (stiction); `damping` the viscous coefficient `β`.
+//!   smaller (stiction); `damping` the viscous coefficient `β`; `D` the
+//!   electromagnetic damping on the rotor's speed relative to the field's
+//!   `ω_cmd` ([`Motor::field_damping`], from
+//!   [`Motor::damping_ratio`](crate::motor::Motor::damping_ratio)).
 //! - `lag_e` is the electrical lag of the rotor behind the commanded angle: a
 //!   full step is 90° electrical (a 1.8° motor has 50 rotor teeth), the
 //!   torque is largest at a lag of one full step and changes sign beyond two,
@@ -40,8 +44,9 @@
 //!   the last pulse it is 0 (the motor holds) and `θ_cmd` stays fixed for
 //!   [`SimOptions::settle_s`].
 //!
-//! The integrator is semi-implicit (symplectic) Euler with a fixed step of at
-//! most [`SimOptions::dt_s`], shortened so that every pulse edge falls on a
+//! The integrator is semi-implicit (symplectic) Euler, the damping terms
+//! taken on the new speed (implicit, so no damping makes it unstable), with
+//! a fixed step of at most [`SimOptions::dt_s`], shortened so that every pulse edge falls on a
 //! step boundary (no edge is moved by the grid), with friction applied as an
 //! impulse that can stop the rotor but never reverse it within a step. Halve
 //! `dt_s` to check that it is small enough: the results should not change.
@@ -283,19 +288,13 @@ pub(super) fn step_for(motor: &Motor, shortest: f64) -> f64 {
 /// The longest integration step the semi-implicit Euler integrator takes
 /// stably, in s, with a factor of 2 to spare: `1/ω` where `ω` is the rotor's
 /// natural angular frequency at the curve's largest torque (the method is
-/// stable for `h ω < 2`), and `J / (β + D)` for the viscous and the
-/// electromagnetic damping (explicit in both, stable for `h (β + D) / J < 2`).
+/// stable for `h ω < 2`). The viscous and the electromagnetic damping are
+/// taken implicitly, stable at any step: no damping makes the model
+/// unable to integrate.
 pub(super) fn stable_step(motor: &Motor) -> f64 {
     let (poles, inertia) = (motor.poles(), motor.rotor_inertia + motor.load_inertia);
     let peak = motor.peak_torque();
-    let omega = libm::sqrt(peak * poles / inertia);
-    let drag = motor.damping + motor.field_damping();
-    let by_damping = if drag > 0.0 {
-        inertia / drag
-    } else {
-        f64::INFINITY
-    };
-    (1.0 / omega).min(by_damping)
+    1.0 / libm::sqrt(peak * poles / inertia)
 }
 
 /// Integration steps for an interval of `duration` s, at most `dt` each.
@@ -372,10 +371,12 @@ impl Rotor {
         mut each: impl FnMut(f64, f64, f64),
     ) {
         let impulse = self.friction * h / self.inertia;
+        // The damping on the new speed (implicit): `ω' = ω + h (T - β ω' +
+        // D (ω_f - ω')) / J`, solved for `ω'`, is stable at any step.
+        let drag = 1.0 + h * (self.damping + self.field_damping) / self.inertia;
         for _ in 0..n {
-            let drive = peak * libm::sin(self.lag(cmd)) - self.damping * self.omega
-                + self.field_damping * (field_omega - self.omega);
-            let mut omega = self.omega + h * drive / self.inertia;
+            let drive = peak * libm::sin(self.lag(cmd)) + self.field_damping * field_omega;
+            let mut omega = (self.omega + h * drive / self.inertia) / drag;
             // Friction opposes the motion and may stop it, never reverse it.
             if omega > impulse {
                 omega -= impulse;

@@ -52,6 +52,26 @@ pub const START_FULL_STEPS: u32 = 4;
 /// shortest move up them and down again.
 pub const END_FULL_STEPS: u32 = 4 * START_FULL_STEPS;
 
+/// The field damping ratio the model tries when its rotor slips at an end
+/// of a move with less ([`Remedies::damping`]): a small fraction of
+/// critical, as a motor's own electromagnetic damping is.
+pub const REMEDY_DAMPING_RATIO: f64 = 0.1;
+
+/// What the model found, by playing them, would let its rotor make an end
+/// of a move it slips on. A refusal advises only what is found here.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct Remedies {
+    /// Tried (the motor's `damping_ratio` is below
+    /// [`REMEDY_DAMPING_RATIO`]) and found to help: with
+    /// `damping_ratio = REMEDY_DAMPING_RATIO` the rotor makes it.
+    pub damping: Option<bool>,
+    /// The same pulses at half the rate (every period doubled: half the
+    /// start frequency, a quarter of the acceleration) let the rotor make
+    /// it.
+    pub slower: bool,
+}
+
 /// The relative resolution of a start limit found from the model.
 pub const START_RESOLUTION: f64 = 1e-3;
 
@@ -153,21 +173,53 @@ impl Motor {
     /// down again, the field held) must leave the rotor within the field's stable region.
     pub(super) fn check_ends(&self, per_second: f64, periods: &[u32]) -> Result<(), MotorError> {
         let hz = per_second / periods.first().map_or(1, |&p| p) as f64;
-        let seconds = |p: &u32| *p as f64 / per_second;
         let window = END_FULL_STEPS as usize * self.microsteps.max(1) as usize;
         let window = &periods[..window.min(periods.len())];
-        if let Some(pulse) = meets(self, window.iter().map(seconds), End::Start) {
-            return Err(MotorError::PullIn { pulse, hz });
+        // The start up the window, then the shortest move: up and down.
+        let start = |motor: &Motor, stretch: f64| {
+            let seconds = |p: &u32| *p as f64 * stretch / per_second;
+            meets(motor, window.iter().map(seconds), End::Start)
+        };
+        let short = |motor: &Motor, stretch: f64| {
+            let seconds = |p: &u32| *p as f64 * stretch / per_second;
+            let there_and_back = window.iter().chain(window.iter().rev());
+            meets(motor, there_and_back.map(seconds), End::Stop)
+        };
+        if let Some(pulse) = start(self, 1.0) {
+            let remedies = self.remedies(|m, stretch| start(m, stretch).is_none());
+            return Err(MotorError::PullIn {
+                pulse,
+                hz,
+                remedies,
+            });
         }
-        let short = window.iter().chain(window.iter().rev()).map(seconds);
-        if let Some(pulse) = meets(self, short, End::Stop) {
+        if let Some(pulse) = short(self, 1.0) {
+            let remedies = self.remedies(|m, stretch| short(m, stretch).is_none());
             return Err(MotorError::ShortMove {
                 hz,
                 pulse,
                 steps: 2 * window.len() as u32,
+                remedies,
             });
         }
         Ok(())
+    }
+
+    /// Which changes let the model's rotor make an end of a move it slips
+    /// on: `makes(motor, stretch)` plays it to `motor` with every period
+    /// `stretch` times as long.
+    fn remedies(&self, makes: impl Fn(&Motor, f64) -> bool) -> Remedies {
+        let damping = (self.damping_ratio < REMEDY_DAMPING_RATIO).then(|| {
+            let damped = Motor {
+                damping_ratio: REMEDY_DAMPING_RATIO,
+                ..*self
+            };
+            makes(&damped, 1.0)
+        });
+        Remedies {
+            damping,
+            slower: makes(self, 2.0),
+        }
     }
 }
 
@@ -275,17 +327,56 @@ pub(super) fn meets<I: Iterator<Item = f64> + Clone>(
     None
 }
 
+/// The advice of a refusal at an end of a move: only what the model found
+/// to help ([`Remedies`]), or that neither helps.
+fn advise(remedies: Remedies, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+    let slower = "start slower and accelerate less: at half the rate throughout (half the start \
+                  frequency, a quarter of the acceleration) the model's rotor makes it";
+    match (remedies.damping, remedies.slower) {
+        (Some(true), true) => write!(
+            f,
+            " (with `damping_ratio = {REMEDY_DAMPING_RATIO}` the model's rotor makes it: give \
+             the motor's own damping, as a rotor without rings; or {slower})"
+        ),
+        (Some(true), false) => write!(
+            f,
+            " (with `damping_ratio = {REMEDY_DAMPING_RATIO}` the model's rotor makes it: give \
+             the motor's own damping, as a rotor without rings; at half the rate it slips too, \
+             so starting slower does not help)"
+        ),
+        (_, true) => write!(f, " ({slower})"),
+        (Some(false), false) => write!(
+            f,
+            " (neither half the rate nor `damping_ratio = {REMEDY_DAMPING_RATIO}` helps the \
+             model's rotor here)"
+        ),
+        (None, false) => f.write_str(
+            " (at half the rate throughout it slips too: starting slower does not help here)",
+        ),
+    }
+}
+
 /// The message of an error about the ends of a move.
 pub(super) fn describe(error: &MotorError, f: &mut fmt::Formatter<'_>) -> fmt::Result {
     match *error {
-        MotorError::PullIn { pulse, hz } => write!(
-            f,
-            "the motor cannot start on this ramp with its load: from rest at {hz:.1} Hz the \
-             model's rotor slips before pulse {pulse}, before it reaches the field's speed (the \
-             start and the acceleration right after it are too much together; start slower or \
-             accelerate less at first)"
-        ),
-        MotorError::ShortMove { hz, pulse, steps } => {
+        MotorError::PullIn {
+            pulse,
+            hz,
+            remedies,
+        } => {
+            write!(
+                f,
+                "the motor cannot start on this ramp with its load: from rest at {hz:.1} Hz the \
+                 model's rotor slips before pulse {pulse}, before it reaches the field's speed"
+            )?;
+            advise(remedies, f)
+        }
+        MotorError::ShortMove {
+            hz,
+            pulse,
+            steps,
+            remedies,
+        } => {
             write!(
                 f,
                 "the motor cannot make the shortest move on this ramp, from rest up its first {} \
@@ -301,7 +392,7 @@ pub(super) fn describe(error: &MotorError, f: &mut fmt::Formatter<'_>) -> fmt::R
                      an electrical turn"
                 )?;
             }
-            f.write_str(" (start slower, or accelerate less near the start)")
+            advise(remedies, f)
         }
         MotorError::Start { hz, limit } => {
             write!(
@@ -329,5 +420,66 @@ pub(super) fn describe(error: &MotorError, f: &mut fmt::Formatter<'_>) -> fmt::R
             }
         }
         _ => Ok(()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::string::{String, ToString};
+
+    /// Every combination of what the model found says only that.
+    #[test]
+    fn each_refusal_advises_what_was_found() {
+        let message = |damping, slower| {
+            MotorError::PullIn {
+                pulse: 3,
+                hz: 200.0,
+                remedies: Remedies { damping, slower },
+            }
+            .to_string()
+        };
+        let head = "the motor cannot start on this ramp with its load: from rest at 200.0 Hz \
+                    the model's rotor slips before pulse 3, before it reaches the field's speed";
+        let slower = "start slower and accelerate less: at half the rate throughout (half the \
+                      start frequency, a quarter of the acceleration) the model's rotor makes it";
+        let cases: [(Option<bool>, bool, String); 6] = [
+            (
+                Some(true),
+                true,
+                std::format!(
+                    " (with `damping_ratio = 0.1` the model's rotor makes it: give the motor's \
+                     own damping, as a rotor without rings; or {slower})"
+                ),
+            ),
+            (
+                Some(true),
+                false,
+                " (with `damping_ratio = 0.1` the model's rotor makes it: give the motor's own \
+                 damping, as a rotor without rings; at half the rate it slips too, so starting \
+                 slower does not help)"
+                    .into(),
+            ),
+            (Some(false), true, std::format!(" ({slower})")),
+            (None, true, std::format!(" ({slower})")),
+            (
+                Some(false),
+                false,
+                " (neither half the rate nor `damping_ratio = 0.1` helps the model's rotor here)"
+                    .into(),
+            ),
+            (
+                None,
+                false,
+                " (at half the rate throughout it slips too: starting slower does not help here)"
+                    .into(),
+            ),
+        ];
+        for (damping, slower_helps, advice) in cases {
+            assert_eq!(
+                message(damping, slower_helps),
+                std::format!("{head}{advice}")
+            );
+        }
     }
 }

@@ -86,7 +86,8 @@ pub fn describe_motor(motor: &Motor) -> Vec<(Key, String)> {
 /// motor cannot follow (when no `motor` names it: for a start too fast at
 /// `max_start_hz`, or at `fmin` when the model judged it or the ends of a
 /// move; at `supply_voltage` for a torque the windings give too little of;
-/// else at `torque_curve`), or on `whole`.
+/// at `drive` for `microsteps` a stepped drive does not take, when
+/// `microsteps` is not written; else at `torque_curve`), or on `whole`.
 pub fn locate_motor<L: Clone>(error: &MotorError, args: &[Arg<L>], whole: &L) -> Diagnostic<L> {
     let find = |k: Key| {
         args.iter()
@@ -105,6 +106,11 @@ pub fn locate_motor<L: Clone>(error: &MotorError, args: &[Arg<L>], whole: &L) ->
             from_windings: Some(_),
             ..
         } => Key::SUPPLY_VOLTAGE,
+        // `microsteps` left at 1 under a stepped drive: at the drive.
+        MotorError::Invalid {
+            key: Key::MICROSTEPS,
+            ..
+        } => Key::DRIVE,
         _ => Key::TORQUE_CURVE,
     };
     // A torque curve's point, where the front door knows where it is.
