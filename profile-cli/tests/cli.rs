@@ -94,6 +94,41 @@ fn check_passes_a_good_file_and_fails_a_bad_one_with_the_caret() {
     assert_eq!(run(&dir, &["check"]).status.code(), Some(2));
 }
 
+/// Four segments of a ramp whose step 0 needs 70 634 ticks, more than
+/// `u16` holds: the segments average it away, the per-step table the plot
+/// draws them against cannot.
+const SEGMENTS_OVERFLOW: &str = "[profiles.pp]\ncurve = \"jerk_limited\"\nfmin = 100\n\
+     fmax = 5000\naccel = 50000\njerk = 5e6\ntimer_hz = \"10 MHz\"\nsegments = 4\n";
+
+/// One verdict: a table that cannot be drawn is refused by `check` as by
+/// every command that writes, at its profile, and nothing is left behind.
+#[test]
+fn check_refuses_what_plot_and_report_cannot_draw() {
+    let dir = work_dir("one_verdict");
+    fs::write(dir.join("pp.toml"), SEGMENTS_OVERFLOW).unwrap();
+    let message = "pp.toml:3:8: entry 0 is 70634 ticks, more than `word = u16` holds (65535); \
+                   at `timer_hz = 10000000` the lowest step frequency that fits is 152.59 Hz\n  \
+                   |\n3 | fmin = 100\n  |        ^^^\n";
+    for args in [
+        &["check", "pp.toml"][..],
+        &["plot", "pp.toml", "-o", "plots"],
+        &["report", "pp.toml", "-o", "report"],
+        &["header", "pp.toml", "-o", "pp.h"],
+        &["rust", "pp.toml", "-o", "pp.rs"],
+    ] {
+        let out = run(&dir, args);
+        assert_eq!(out.status.code(), Some(1), "{args:?}");
+        assert_eq!(text(&out.stderr), message, "{args:?}");
+        assert_eq!(text(&out.stdout), "", "{args:?}");
+    }
+    let mut left: Vec<String> = fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    left.sort();
+    assert_eq!(left, ["pp.toml"]);
+}
+
 #[test]
 fn header_writes_the_c_of_the_library_one_file_or_split() {
     let dir = work_dir("header");
