@@ -687,6 +687,40 @@ fn a_placement_that_would_break_the_c_is_refused() {
     assert!(!dir.join("p.h").exists());
 }
 
+/// The split files are written both or neither: a source that cannot be
+/// written leaves no header behind.
+#[test]
+fn split_files_are_written_both_or_neither() {
+    let profiles = Profiles::parse(
+        "p.toml",
+        "[profiles.a]\ncurve = \"linear\"\nfmin = 100\nfmax = 1000\nlen = 10\ntimer_hz = 1_000_000\n",
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let dir = work_dir("both_or_neither");
+    fs::create_dir(dir.join("p.c")).unwrap();
+    let err = profiles
+        .write_c_split(dir.join("p.h"), &CStyle::default())
+        .unwrap_err();
+    assert_eq!(
+        err.to_string(),
+        format!(
+            "cannot write `{}`: it is a folder",
+            dir.join("p.c").display()
+        )
+    );
+    let left: Vec<_> = fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(left, ["p.c"]);
+    fs::remove_dir(dir.join("p.c")).unwrap();
+    let (h, c) = profiles
+        .write_c_split(dir.join("p.h"), &CStyle::default())
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert!(h.is_file() && c.is_file());
+    assert_eq!(fs::read_dir(&dir).unwrap().count(), 2);
+}
+
 /// Compressed ramps in C: the runs and the header's player, which plays
 /// them period for period as `runs::Expand` (compared through every
 /// period's sum and an order-sensitive checksum), as one header and split.

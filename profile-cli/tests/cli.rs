@@ -121,12 +121,79 @@ fn check_refuses_what_plot_and_report_cannot_draw() {
         assert_eq!(text(&out.stderr), message, "{args:?}");
         assert_eq!(text(&out.stdout), "", "{args:?}");
     }
-    let mut left: Vec<String> = fs::read_dir(&dir)
+    assert_eq!(listing(&dir), ["pp.toml"]);
+}
+
+/// The names in a folder, sorted.
+fn listing(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> = fs::read_dir(dir)
         .unwrap()
         .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
         .collect();
-    left.sort();
-    assert_eq!(left, ["pp.toml"]);
+    names.sort();
+    names
+}
+
+/// A command that fails while writing leaves no file behind and keeps the
+/// files it would have replaced: each file is written aside and moved into
+/// place only once all of them are written.
+#[test]
+fn a_command_that_fails_leaves_no_file_behind() {
+    let dir = work_dir("no_partial_files");
+    fs::write(
+        dir.join("p.toml"),
+        "[profiles.p]\ncurve = \"linear\"\nfmin = 500\nfmax = 5000\nlen = 50\n\
+         timer_hz = 1_000_000\n",
+    )
+    .unwrap();
+    // A folder where a file is to go: the command fails after writing others.
+    fs::create_dir_all(dir.join("plots/p.csv")).unwrap();
+    fs::write(dir.join("plots/overview.svg"), "old").unwrap();
+    fs::create_dir_all(dir.join("report/profiles.h")).unwrap();
+    fs::create_dir_all(dir.join("c/ramps.c")).unwrap();
+    fs::create_dir_all(dir.join("rust/p.rs")).unwrap();
+    for (args, message, folder, left) in [
+        (
+            &["plot", "p.toml", "-o", "plots"][..],
+            "cannot write `plots/p.csv`: it is a folder\n",
+            "plots",
+            &["overview.svg", "p.csv"][..],
+        ),
+        (
+            &["report", "p.toml", "-o", "report"],
+            "cannot write `report/profiles.h`: it is a folder\n",
+            "report",
+            &["profiles.h"],
+        ),
+        (
+            &["header", "p.toml", "-o", "c/ramps.h", "--split"],
+            "cannot write `c/ramps.c`: it is a folder\n",
+            "c",
+            &["ramps.c"],
+        ),
+        (
+            &["header", "p.toml", "-o", "c/ramps.c"],
+            "cannot write `c/ramps.c`: it is a folder\n",
+            "c",
+            &["ramps.c"],
+        ),
+        (
+            &["rust", "p.toml", "-o", "rust/p.rs"],
+            "cannot write `rust/p.rs`: it is a folder\n",
+            "rust",
+            &["p.rs"],
+        ),
+    ] {
+        let out = run(&dir, args);
+        assert_eq!(out.status.code(), Some(1), "{args:?}");
+        assert_eq!(text(&out.stderr), message, "{args:?}");
+        assert_eq!(listing(&dir.join(folder)), left, "{args:?}");
+    }
+    assert_eq!(
+        fs::read_to_string(dir.join("plots/overview.svg")).unwrap(),
+        "old"
+    );
+    assert_eq!(listing(&dir), ["c", "p.toml", "plots", "report", "rust"]);
 }
 
 #[test]
@@ -263,6 +330,8 @@ fn plot_writes_an_svg_and_a_csv_per_profile() {
         assert!(svg.contains(label), "{label}");
     }
     assert!(dir.join("figures/overview.svg").exists());
+    // Nothing but the files: the folder they were written in aside is gone.
+    assert_eq!(listing(&dir.join("figures")).len(), 31);
 }
 
 #[test]

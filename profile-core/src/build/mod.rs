@@ -222,8 +222,7 @@ impl Profiles {
             .file_name()
             .map_or("profiles.h".into(), |n| n.to_string_lossy().into_owned());
         let files = self.c_split(&name, style);
-        write(&header, &files.header)?;
-        write(&source, &files.source)?;
+        write_all(&[(&header, &files.header), (&source, &files.source)])?;
         Ok((header, source))
     }
 }
@@ -266,12 +265,49 @@ fn out_path(path: &Path) -> PathBuf {
 }
 
 fn write(path: &Path, contents: &str) -> Result<(), LoadError> {
-    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
-        std::fs::create_dir_all(dir).map_err(|e| LoadError {
-            text: format!("cannot create the folder `{}`: {e}", dir.display()),
-        })?;
-    }
-    std::fs::write(path, contents).map_err(|e| LoadError {
+    write_all(&[(path, contents)])
+}
+
+/// Writes every file or none, creating their folders: each is written
+/// beside its place under a hidden name, and moved there once all are.
+fn write_all(files: &[(&Path, &str)]) -> Result<(), LoadError> {
+    let cannot = |path: &Path, e: &dyn core::fmt::Display| LoadError {
         text: format!("cannot write `{}`: {e}", path.display()),
-    })
+    };
+    let mut aside = Vec::new();
+    let mut written = Ok(());
+    for &(path, contents) in files {
+        if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+            if let Err(e) = std::fs::create_dir_all(dir) {
+                written = Err(LoadError {
+                    text: format!("cannot create the folder `{}`: {e}", dir.display()),
+                });
+                break;
+            }
+        }
+        if path.is_dir() {
+            written = Err(cannot(path, &"it is a folder"));
+            break;
+        }
+        let name = path.file_name().unwrap_or_default().to_string_lossy();
+        let temp = path.with_file_name(format!(".{name}.{}.partial", std::process::id()));
+        aside.push(temp.clone());
+        if let Err(e) = std::fs::write(&temp, contents) {
+            written = Err(cannot(path, &e));
+            break;
+        }
+    }
+    if written.is_ok() {
+        for (&(path, _), temp) in files.iter().zip(&aside) {
+            if let Err(e) = std::fs::rename(temp, path) {
+                written = Err(cannot(path, &e));
+                break;
+            }
+        }
+    }
+    // What was not moved into place.
+    for temp in aside.iter().filter(|t| t.exists()) {
+        let _ = std::fs::remove_file(temp);
+    }
+    written
 }
