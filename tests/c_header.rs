@@ -20,7 +20,8 @@ use profile_core::build::{CStyle, Profiles};
 const FLAGS: &[&str] = &["-Wall", "-Wextra", "-Werror", "-pedantic"];
 /// A storage word as a user's toolchain would define it (`__code` on SDCC);
 /// gcc has none, so it is a macro here.
-const DEFINES: &[&str] = &["-DROM="];
+/// `ALIGNED(n)` is an attribute macro as CMSIS's `__ALIGNED(n)` is.
+const DEFINES: &[&str] = &["-DROM=", "-DALIGNED(n)=__attribute__((aligned(n)))"];
 
 fn work_dir_existing(name: &str) -> PathBuf {
     Path::new(env!("CARGO_TARGET_TMPDIR"))
@@ -344,7 +345,7 @@ fn run(command: &mut Command, what: &str) -> String {
 /// How the C is laid out: one header of `static` tables, or a header of
 /// `extern` declarations and one source file, with a placement.
 enum Layout {
-    Single,
+    Single(CStyle),
     Split(CStyle),
 }
 
@@ -361,10 +362,15 @@ fn check_header(
     let header_path = dir.join("profiles.h");
     let mut sources = vec!["main.c", "other.c"];
     let header = match layout {
-        Layout::Single => {
+        Layout::Single(style) if *style == CStyle::default() => {
             profiles.write_c_header(&header_path).unwrap();
             let header = fs::read_to_string(&header_path).unwrap();
             assert_eq!(header, profiles.c_header());
+            header
+        }
+        Layout::Single(style) => {
+            let header = profiles.c_header_with(style);
+            fs::write(&header_path, &header).unwrap();
             header
         }
         Layout::Split(style) => {
@@ -527,7 +533,7 @@ fn the_c_header_compiles_and_matches_the_rust_tables() {
             .c_header()
             .contains("#ifndef STEPPER_PROFILES_PROFILES_H\n")
     );
-    let printed = check_header(&profiles, "shipped", &Layout::Single);
+    let printed = check_header(&profiles, "shipped", &Layout::Single(CStyle::default()));
 
     // The seeds, through C.
     let orange = &printed["sigmoid_orange"];
@@ -579,7 +585,7 @@ segments = 6
             .c_header()
             .contains("#ifndef STEPPER_PROFILES_SLOW_H\n")
     );
-    let printed = check_header(&profiles, "u32", &Layout::Single);
+    let printed = check_header(&profiles, "u32", &Layout::Single(CStyle::default()));
     assert_eq!(printed["slow_linear"]["word_bytes"], Figure::Int(4));
     assert!(printed["slow_linear"]["first"] > Figure::Int(65_535));
     assert!(printed["slow_segments"]["first"] > Figure::Int(65_535));
@@ -671,7 +677,8 @@ fn a_placement_that_would_break_the_c_is_refused() {
     let err = profiles.write_c_split(dir.join("p.h"), &bad).unwrap_err();
     assert_eq!(
         err.to_string(),
-        "the C attribute `PROGMEM; int x` must be one line without `;`"
+        "the C `attribute` cannot hold `;`: give words such as `PROGMEM`, or \
+         `__attribute__((...))` with balanced parentheses (got `PROGMEM; int x`)"
     );
     let blank = CStyle {
         storage: Some(" ".into()),
@@ -682,9 +689,66 @@ fn a_placement_that_would_break_the_c_is_refused() {
             .write_c_split(dir.join("p.h"), &blank)
             .unwrap_err()
             .to_string(),
-        "the C storage is blank: give a word such as `__code`"
+        "the C `storage` is blank: give a word that qualifies the element type, such as \
+         `__code` or `__flash`"
     );
     assert!(!dir.join("p.h").exists());
+}
+
+/// What `CStyle::check` accepts compiles: storage words (`volatile`, and
+/// `ROM`, a macro standing in for `__code`) before the element type and on
+/// the run player's pointers; attributes with nested parentheses, strings
+/// and commas, or a macro taking an argument, after the name. In one
+/// header and split, C89 and C99, with the run player.
+#[test]
+fn accepted_placements_compile() {
+    let source = r#"
+[defaults]
+timer_hz = 1_000_000
+curve = "linear"
+fmin = 500
+fmax = 5000
+
+[profiles.runs]
+len = 300
+compress = 1
+
+[profiles.steps]
+len = 50
+
+[profiles.segments]
+len = 300
+segments = 4
+"#;
+    let profiles = Profiles::parse("ramps.toml", source).unwrap_or_else(|e| panic!("{e}"));
+    for (i, (storage, attribute)) in [
+        (
+            Some("ROM volatile"),
+            Some("__attribute__((section(\".ramps\"), aligned(4)))"),
+        ),
+        (
+            Some("volatile"),
+            Some("__attribute__ ((aligned (8))) __attribute__((unused))"),
+        ),
+        (None, Some("ALIGNED(2)")),
+        (Some("ROM"), None),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let style = CStyle {
+            storage: storage.map(String::from),
+            attribute: attribute.map(String::from),
+        };
+        style.check().unwrap_or_else(|e| panic!("{e}"));
+        for (name, layout) in [
+            ("single", Layout::Single(style.clone())),
+            ("split", Layout::Split(style.clone())),
+        ] {
+            let printed = check_header(&profiles, &format!("placement_{i}_{name}"), &layout);
+            assert_eq!(printed["runs"]["steps"], Figure::Int(300));
+        }
+    }
 }
 
 /// The split files are written both or neither: a source that cannot be
@@ -765,7 +829,7 @@ len = 100
         attribute: None,
     };
     for (dir, layout) in [
-        ("runs_single", Layout::Single),
+        ("runs_single", Layout::Single(CStyle::default())),
         ("runs_split", Layout::Split(CStyle::default())),
         ("runs_storage", Layout::Split(storage)),
     ] {
@@ -805,7 +869,10 @@ compress = 1
         let split = profiles.c_split("profiles.h", &CStyle::default());
         assert!(split.header.contains(expected), "{}", split.header);
         assert!(profiles.c_header().contains(expected));
-        for layout in [Layout::Single, Layout::Split(CStyle::default())] {
+        for layout in [
+            Layout::Single(CStyle::default()),
+            Layout::Split(CStyle::default()),
+        ] {
             let printed = check_header(&profiles, dir, &layout);
             assert_eq!(printed["ramp"]["steps"], Figure::Int(300));
         }

@@ -72,11 +72,13 @@ enum Command {
         /// Declarations in OUT.h, the tables defined once in OUT.c
         #[arg(long, requires = "out")]
         split: bool,
-        /// Written before each array's element type, e.g. `__code` (SDCC) or
-        /// `__flash` (AVR GCC)
-        #[arg(long, value_name = "WORD")]
+        /// Words written before each array's element type that qualify it,
+        /// e.g. `__code` (SDCC) or `__flash` (AVR GCC); not `const` or
+        /// `static`, which the header writes itself
+        #[arg(long, value_name = "WORDS")]
         storage: Option<String>,
-        /// Written after each array's name, e.g. `PROGMEM` or
+        /// Written after each array's name: words, each with balanced
+        /// parentheses if any, e.g. `PROGMEM` or
         /// `'__attribute__((section(".ramps")))'`
         #[arg(long, value_name = "TEXT")]
         attribute: Option<String>,
@@ -184,7 +186,9 @@ fn run(command: Command) -> Result<(), Failure> {
             attribute,
         } => {
             let style = CStyle { storage, attribute };
-            style.check()?;
+            style
+                .check()
+                .map_err(|e| format!("`--{}` {}", e.field, e.problem))?;
             let profiles = load(&file)?;
             match (out, split) {
                 (Some(out), true) => {

@@ -259,7 +259,8 @@ fn header_writes_the_c_of_the_library_one_file_or_split() {
     assert_eq!(out.status.code(), Some(1));
     assert_eq!(
         text(&out.stderr),
-        "the C attribute `PROGMEM;` must be one line without `;`\n"
+        "`--attribute` cannot hold `;`: give words such as `PROGMEM`, or \
+         `__attribute__((...))` with balanced parentheses (got `PROGMEM;`)\n"
     );
     assert_eq!(
         run(&dir, &["header", file, "--split"]).status.code(),

@@ -43,7 +43,7 @@ use std::vec::Vec;
 
 use proc_macro2::TokenStream;
 
-pub use crate::emit::c::{CStyle, Split};
+pub use crate::emit::c::{CStyle, CStyleError, Split};
 use crate::emit::{self, Profile};
 use crate::pipeline::{self, Budget, Options};
 
@@ -215,7 +215,9 @@ impl Profiles {
         header: impl AsRef<Path>,
         style: &CStyle,
     ) -> Result<(PathBuf, PathBuf), LoadError> {
-        style.check().map_err(|text| LoadError { text })?;
+        style.check().map_err(|e| LoadError {
+            text: format!("the C {e}"),
+        })?;
         let header = out_path(header.as_ref());
         let source = header.with_extension("c");
         let name = header

@@ -15,45 +15,9 @@ use crate::base::timer::Word;
 use crate::schema::describe;
 use crate::table::owned::Generated;
 
-/// Where the tables go: text placed around every array, so that it lands in
-/// the memory the target reads constants from.
-///
-/// Both are written as given, in the declarations and the definitions. The
-/// run player's pointers carry the storage word too; with `PROGMEM` in the
-/// attribute the header includes `<avr/pgmspace.h>` and the run player
-/// reads with `pgm_read_word`.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct CStyle {
-    /// Before the element type: `__code` (SDCC, 8051 code memory),
-    /// `__flash` (AVR GCC's named address space).
-    pub storage: Option<String>,
-    /// After the array's name: `PROGMEM` (avr-libc), or
-    /// `__attribute__((section(".ramps")))` for a linker section.
-    pub attribute: Option<String>,
-}
+mod style;
 
-impl CStyle {
-    /// Checks that the texts are one line each and not blank: they are
-    /// pasted into the C source as they are.
-    pub fn check(&self) -> Result<(), String> {
-        for (what, text) in [("storage", &self.storage), ("attribute", &self.attribute)] {
-            if let Some(t) = text {
-                if t.trim().is_empty() {
-                    return Err(format!(
-                        "the C {what} is blank: give a word such as `__code`"
-                    ));
-                }
-                if t.contains(['\n', '\r', ';']) {
-                    return Err(format!(
-                        "the C {what} `{}` must be one line without `;`",
-                        t.escape_debug()
-                    ));
-                }
-            }
-        }
-        Ok(())
-    }
-}
+pub use style::{CStyle, CStyleError};
 
 /// A header of `extern` declarations and `#define`d figures, and the one
 /// source file that defines the tables.
