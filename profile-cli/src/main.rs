@@ -82,6 +82,12 @@ enum Command {
         /// `'__attribute__((section(".ramps")))'`
         #[arg(long, value_name = "TEXT")]
         attribute: Option<String>,
+        /// The header's name in C, a C identifier: its include guard
+        /// `STEPPER_PROFILES_NAME_H` and its run player `NAME_runs_*` (by
+        /// default the output's name, `x_axis` for `x_axis.h`, or the
+        /// profiles file's without `-o`)
+        #[arg(long, value_name = "NAME")]
+        prefix: Option<String>,
     },
     /// Write the Rust: one module per profile, as `include_profiles!`
     /// expands to and a build script writes
@@ -140,7 +146,8 @@ fn run(command: Command) -> Result<(), Failure> {
                 let mut files = Staging::new(&out)?;
                 files::write_plots(&profiles, &mut files)
                     .map_err(|e| format!("cannot write into `{}`: {e}", out.display()))?;
-                files.write("profiles.h", &profiles.c_header())?;
+                let header = profiles.c_header_named("profiles.h", &CStyle::default());
+                files.write("profiles.h", &header)?;
                 let written = files.commit()?;
                 stdout(&format!(
                     "\nwrote {} files to {}\n",
@@ -184,8 +191,13 @@ fn run(command: Command) -> Result<(), Failure> {
             split,
             storage,
             attribute,
+            prefix,
         } => {
-            let style = CStyle { storage, attribute };
+            let style = CStyle {
+                storage,
+                attribute,
+                prefix,
+            };
             style
                 .check()
                 .map_err(|e| format!("`--{}` {}", e.field, e.problem))?;
@@ -212,7 +224,12 @@ fn run(command: Command) -> Result<(), Failure> {
                     ));
                     Ok(())
                 }
-                (out, _) => emit(out.as_deref(), &profiles.c_header_with(&style)),
+                (Some(out), false) => {
+                    let (_, name) = folder_and_name(&out)?;
+                    let header = profiles.c_header_named(&name.to_string_lossy(), &style);
+                    emit(Some(&out), &header)
+                }
+                (None, _) => stdout(&profiles.c_header_with(&style)),
             }
         }
         Command::Rust { file, out } => emit(out.as_deref(), &load(&file)?.rust_source()),

@@ -241,3 +241,142 @@ fn storage_and_attribute_take_what_a_declaration_holds() {
         assert!(header.contains(declaration), "{header}");
     }
 }
+
+/// Two files of the same name give headers named after where they are
+/// written, or after `--prefix`: a guard, a run player and a read macro of
+/// their own, so that one C file can include both.
+#[test]
+fn a_header_is_named_after_its_file_or_its_prefix() {
+    let dir = work_dir("names");
+    for axis in ["a", "b"] {
+        fs::create_dir(dir.join(axis)).unwrap();
+        fs::write(dir.join(axis).join("profiles.toml"), RAMPS).unwrap();
+    }
+    let names = |stem: &str, prefix: &str| {
+        let upper = stem.to_uppercase();
+        [
+            format!("#ifndef STEPPER_PROFILES_{upper}_H\n#define STEPPER_PROFILES_{upper}_H\n"),
+            format!("#ifndef {}_RUNS_READ\n", prefix.to_uppercase()),
+            format!("}} {prefix}_runs_t;\n"),
+            format!("void {prefix}_runs_start({prefix}_runs_t *p, "),
+            format!("uint16_t {prefix}_runs_next({prefix}_runs_t *p);\n"),
+        ]
+    };
+    for (args, file, stem, prefix) in [
+        (
+            &["header", "a/profiles.toml", "-o", "x_axis.h"][..],
+            "x_axis.h",
+            "X_AXIS",
+            "x_axis",
+        ),
+        (
+            &["header", "b/profiles.toml", "-o", "out/y-axis.h", "--split"],
+            "out/y-axis.h",
+            "Y_AXIS",
+            "y_axis",
+        ),
+        (
+            &["header", "a/profiles.toml", "-o", "z.h", "--prefix", "Left"],
+            "z.h",
+            "LEFT",
+            "Left",
+        ),
+        (
+            &["header", "b/profiles.toml", "-o", "3d.h"],
+            "3d.h",
+            "3D",
+            "profiles_3d",
+        ),
+    ] {
+        let out = run(&dir, args);
+        assert!(out.status.success(), "{}", text(&out.stderr));
+        let header = fs::read_to_string(dir.join(file)).unwrap();
+        for name in names(stem, prefix) {
+            assert!(header.contains(&name), "{args:?}: {name}\n{header}");
+        }
+        assert!(!header.contains("PROFILES_PROFILES"), "{header}");
+    }
+    let implementation = "#ifdef STEPPER_PROFILES_X_AXIS_IMPLEMENTATION\n";
+    assert!(
+        fs::read_to_string(dir.join("x_axis.h"))
+            .unwrap()
+            .contains(implementation)
+    );
+    let source = fs::read_to_string(dir.join("out/y-axis.c")).unwrap();
+    assert!(source.contains("#include \"y-axis.h\"\n"), "{source}");
+    // Without a file, the profiles file names it, unless `--prefix` does.
+    for (args, stem, prefix) in [
+        (&["header", "a/profiles.toml"][..], "PROFILES", "profiles"),
+        (
+            &["header", "a/profiles.toml", "--prefix", "motor_x"],
+            "MOTOR_X",
+            "motor_x",
+        ),
+    ] {
+        let out = run(&dir, args);
+        assert!(out.status.success(), "{}", text(&out.stderr));
+        let header = text(&out.stdout);
+        for name in names(stem, prefix) {
+            assert!(header.contains(&name), "{args:?}: {name}\n{header}");
+        }
+    }
+}
+
+#[test]
+fn a_prefix_must_be_a_c_identifier() {
+    let dir = work_dir("prefix_refused");
+    fs::write(dir.join("ramps.toml"), RAMPS).unwrap();
+    let expected = "a letter, then letters, digits or `_`, such as `x_axis`";
+    for (prefix, message) in [
+        (
+            "3d",
+            format!("`--prefix` must be a C identifier, {expected} (got `3d`)"),
+        ),
+        (
+            "_x",
+            format!("`--prefix` must be a C identifier, {expected} (got `_x`)"),
+        ),
+        (
+            "x-y",
+            format!("`--prefix` must be a C identifier, {expected} (got `x-y`)"),
+        ),
+        (
+            "x y",
+            format!("`--prefix` must be a C identifier, {expected} (got `x y`)"),
+        ),
+        (
+            "é",
+            format!("`--prefix` must be a C identifier, {expected} (got `é`)"),
+        ),
+        (
+            "/*",
+            format!("`--prefix` must be a C identifier, {expected} (got `/*`)"),
+        ),
+        (
+            "x\n",
+            format!("`--prefix` must be a C identifier, {expected} (got `x\\n`)"),
+        ),
+        (
+            "",
+            "`--prefix` is blank: give a C identifier such as `x_axis`".to_string(),
+        ),
+    ] {
+        for args in [
+            &["header", "ramps.toml", "--prefix", prefix][..],
+            &[
+                "header",
+                "ramps.toml",
+                "-o",
+                "r.h",
+                "--split",
+                "--prefix",
+                prefix,
+            ],
+        ] {
+            let out = run(&dir, args);
+            assert_eq!(out.status.code(), Some(1), "{args:?}");
+            assert_eq!(text(&out.stderr), format!("{message}\n"), "{args:?}");
+        }
+    }
+    assert_eq!(fs::read_dir(&dir).unwrap().count(), 1);
+}

@@ -209,9 +209,10 @@ fn header_writes_the_c_of_the_library_one_file_or_split() {
 
     let out = run(&dir, &["header", file, "-o", "include/ramps.h"]);
     assert!(out.status.success(), "{}", text(&out.stderr));
+    // Named after the file it is written to.
     assert_eq!(
         fs::read_to_string(dir.join("include/ramps.h")).unwrap(),
-        profiles.c_header()
+        profiles.c_header_named("ramps.h", &CStyle::default())
     );
 
     let out = run(
@@ -233,6 +234,7 @@ fn header_writes_the_c_of_the_library_one_file_or_split() {
     let style = CStyle {
         storage: Some("__code".into()),
         attribute: Some("PROGMEM".into()),
+        ..CStyle::default()
     };
     let want = profiles.c_split("ramps.h", &style);
     assert_eq!(

@@ -8,8 +8,8 @@ use std::format;
 use std::string::{String, ToString};
 use std::vec::Vec;
 
-/// Where the tables go: text placed around every array, so that it lands in
-/// the memory the target reads constants from.
+/// How the C is written: text placed around every array, so that it lands
+/// in the memory the target reads constants from, and the header's name.
 ///
 /// Both are written as given, in the declarations and the definitions,
 /// once [`check`](Self::check) accepts them. The run player's pointers
@@ -24,13 +24,18 @@ pub struct CStyle {
     /// After the array's name: `PROGMEM` (avr-libc), or
     /// `__attribute__((section(".ramps")))` for a linker section.
     pub attribute: Option<String>,
+    /// The header's name in C, a C identifier: its include guard
+    /// (`STEPPER_PROFILES_<PREFIX>_H`), its run player (`<prefix>_runs_t`,
+    /// `<prefix>_runs_start`, ...) and their macros. Without it, the name
+    /// of the file the header is written to (`x_axis` for `x_axis.h`).
+    pub prefix: Option<String>,
 }
 
 /// A [`CStyle`] text that would not make a declaration: which one, and why.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct CStyleError {
-    /// The field at fault, `storage` or `attribute` (the command line's
-    /// `--storage` and `--attribute`).
+    /// The field at fault, `storage`, `attribute` or `prefix` (the command
+    /// line's `--storage`, `--attribute` and `--prefix`).
     pub field: &'static str,
     /// What is wrong and what is expected, to follow the field's name.
     pub problem: String,
@@ -52,6 +57,7 @@ impl CStyle {
     /// balanced, holding only words, numbers, strings and commas.
     /// Everything else is refused: `;`, `=`, braces, comments, `#`, `\`,
     /// line breaks, and `const` or `static`, which the header writes itself.
+    /// The prefix: a C identifier that starts with a letter.
     pub fn check(&self) -> Result<(), CStyleError> {
         if let Some(text) = &self.storage {
             storage(text).map_err(|problem| CStyleError {
@@ -62,6 +68,12 @@ impl CStyle {
         if let Some(text) = &self.attribute {
             attribute(text).map_err(|problem| CStyleError {
                 field: "attribute",
+                problem,
+            })?;
+        }
+        if let Some(text) = &self.prefix {
+            prefix(text).map_err(|problem| CStyleError {
+                field: "prefix",
                 problem,
             })?;
         }
@@ -310,6 +322,22 @@ fn attribute(text: &str) -> Result<(), String> {
         return Err(unbalanced());
     }
     Ok(())
+}
+
+fn prefix(text: &str) -> Result<(), String> {
+    if text.trim().is_empty() {
+        return Err("is blank: give a C identifier such as `x_axis`".to_string());
+    }
+    let mut chars = text.chars();
+    let starts = chars.next().is_some_and(|c| c.is_ascii_alphabetic());
+    if starts && chars.all(is_word_char) {
+        return Ok(());
+    }
+    Err(format!(
+        "must be a C identifier, a letter, then letters, digits or `_`, such as `x_axis` \
+         (got `{}`)",
+        shown(text)
+    ))
 }
 
 #[cfg(test)]
