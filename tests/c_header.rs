@@ -20,7 +20,8 @@ use profile_core::build::{CStyle, Profiles};
 const FLAGS: &[&str] = &["-Wall", "-Wextra", "-Werror", "-pedantic"];
 /// A storage word as a user's toolchain would define it (`__code` on SDCC);
 /// gcc has none, so it is a macro here.
-const DEFINES: &[&str] = &["-DROM="];
+/// `ALIGNED(n)` is an attribute macro as CMSIS's `__ALIGNED(n)` is.
+const DEFINES: &[&str] = &["-DROM=", "-DALIGNED(n)=__attribute__((aligned(n)))"];
 
 fn work_dir_existing(name: &str) -> PathBuf {
     Path::new(env!("CARGO_TARGET_TMPDIR"))
@@ -156,7 +157,14 @@ fn checksum(periods: &[u32]) -> u64 {
     })
 }
 
-/// The run player's prefix: the profiles file's stem.
+/// The header's file name: the profiles file's stem (`ramps.h` for
+/// `ramps.toml`), after which the header is named in C.
+fn header_name(profiles: &Profiles) -> String {
+    let stem = Path::new(profiles.file()).file_stem().unwrap();
+    format!("{}.h", stem.to_string_lossy())
+}
+
+/// The run player's prefix: the header's (and the profiles file's) stem.
 fn prefix(profiles: &Profiles) -> String {
     let stem = Path::new(profiles.file())
         .file_stem()
@@ -172,8 +180,8 @@ fn prefix(profiles: &Profiles) -> String {
     }
 }
 
-/// The include guard's stem: the file stem in upper case, every other
-/// character than a letter or digit made `_`.
+/// The include guard's stem: the file stem in upper case, every run of
+/// characters other than a letter or digit one `_`, none at either end.
 fn guard_stem(profiles: &Profiles) -> String {
     let stem = Path::new(profiles.file())
         .file_stem()
@@ -181,8 +189,8 @@ fn guard_stem(profiles: &Profiles) -> String {
         .to_string_lossy()
         .to_uppercase();
     match stem.as_str() {
-        "É" => "_".to_string(),
-        "X--Y_" => "X__Y_".to_string(),
+        "É" | "__" => "PROFILES".to_string(),
+        "X--Y_" => "X_Y".to_string(),
         _ => stem,
     }
 }
@@ -198,7 +206,7 @@ fn defines(header: &str, profiles: &Profiles) -> BTreeMap<String, Vec<(String, b
         let Some((macro_name, value)) = rest.split_once(' ') else {
             continue; // the include guard
         };
-        if macro_name.starts_with("STEPPER_RUNS_READ") {
+        if macro_name.ends_with("_RUNS_READ(p)") {
             continue; // the run player's memory access
         }
         let owner = profiles
@@ -232,7 +240,11 @@ fn program(profiles: &Profiles, defines: &BTreeMap<String, Vec<(String, bool)>>)
     // The one file that defines a single header's run player.
     let stem = guard_stem(profiles);
     let _ = writeln!(c, "#define STEPPER_PROFILES_{stem}_IMPLEMENTATION");
-    c.push_str("#include \"profiles.h\"\n#include \"profiles.h\" /* the guard */\n\n");
+    let header = header_name(profiles);
+    let _ = writeln!(
+        c,
+        "#include \"{header}\"\n#include \"{header}\" /* the guard */\n"
+    );
     c.push_str("unsigned long other_first(void);\n\n");
     c.push_str(
         "int main(void)\n{\n    size_t i, n;\n    unsigned long long sum, steps;\n\n    \
@@ -344,7 +356,7 @@ fn run(command: &mut Command, what: &str) -> String {
 /// How the C is laid out: one header of `static` tables, or a header of
 /// `extern` declarations and one source file, with a placement.
 enum Layout {
-    Single,
+    Single(CStyle),
     Split(CStyle),
 }
 
@@ -358,31 +370,39 @@ fn check_header(
     layout: &Layout,
 ) -> BTreeMap<String, BTreeMap<String, Figure>> {
     let dir = work_dir(dir_name);
-    let header_path = dir.join("profiles.h");
+    let name = header_name(profiles);
+    let header_path = dir.join(&name);
+    let source_name = Path::new(&name).with_extension("c");
+    let source_name = source_name.to_str().unwrap();
     let mut sources = vec!["main.c", "other.c"];
     let header = match layout {
-        Layout::Single => {
+        Layout::Single(style) if *style == CStyle::default() => {
             profiles.write_c_header(&header_path).unwrap();
             let header = fs::read_to_string(&header_path).unwrap();
             assert_eq!(header, profiles.c_header());
+            header
+        }
+        Layout::Single(style) => {
+            let header = profiles.c_header_with(style);
+            fs::write(&header_path, &header).unwrap();
             header
         }
         Layout::Split(style) => {
             let (h, c) = profiles.write_c_split(&header_path, style).unwrap();
             assert_eq!(
                 (h.as_path(), c.as_path()),
-                (header_path.as_path(), dir.join("profiles.c").as_path())
+                (header_path.as_path(), dir.join(source_name).as_path())
             );
             let header = fs::read_to_string(&h).unwrap();
             let source = fs::read_to_string(&c).unwrap();
-            assert_eq!(header, profiles.c_split("profiles.h", style).header);
-            assert!(source.contains("#include \"profiles.h\"\n"));
+            assert_eq!(header, profiles.c_split(&name, style).header);
+            assert!(source.contains(&format!("#include \"{name}\"\n")));
             // Declarations only: no table is defined in the header.
             assert!(
                 !header.contains("] = {") && !header.contains("static"),
                 "{header}"
             );
-            sources.push("profiles.c");
+            sources.push(source_name);
             header
         }
     };
@@ -405,7 +425,7 @@ fn check_header(
     fs::write(
         dir.join("other.c"),
         format!(
-            "#include \"profiles.h\"\n\nunsigned long other_first(void);\n\n{}\
+            "#include \"{name}\"\n\nunsigned long other_first(void);\n\n{}\
              unsigned long other_first(void)\n{{\n    return {first_table};\n}}\n",
             match profiles.profiles()[0].table {
                 Generated::Runs(_) => {
@@ -527,7 +547,7 @@ fn the_c_header_compiles_and_matches_the_rust_tables() {
             .c_header()
             .contains("#ifndef STEPPER_PROFILES_PROFILES_H\n")
     );
-    let printed = check_header(&profiles, "shipped", &Layout::Single);
+    let printed = check_header(&profiles, "shipped", &Layout::Single(CStyle::default()));
 
     // The seeds, through C.
     let orange = &printed["sigmoid_orange"];
@@ -579,7 +599,7 @@ segments = 6
             .c_header()
             .contains("#ifndef STEPPER_PROFILES_SLOW_H\n")
     );
-    let printed = check_header(&profiles, "u32", &Layout::Single);
+    let printed = check_header(&profiles, "u32", &Layout::Single(CStyle::default()));
     assert_eq!(printed["slow_linear"]["word_bytes"], Figure::Int(4));
     assert!(printed["slow_linear"]["first"] > Figure::Int(65_535));
     assert!(printed["slow_segments"]["first"] > Figure::Int(65_535));
@@ -601,6 +621,7 @@ fn split_c_files_define_the_tables_once_where_the_user_places_them() {
     let style = CStyle {
         storage: Some("ROM".into()),
         attribute: Some("__attribute__((section(\".rodata.ramps\")))".into()),
+        ..CStyle::default()
     };
     let files = profiles.c_split("profiles.h", &style);
     assert!(
@@ -667,24 +688,236 @@ fn a_placement_that_would_break_the_c_is_refused() {
     let bad = CStyle {
         storage: None,
         attribute: Some("PROGMEM; int x".into()),
+        ..CStyle::default()
     };
     let err = profiles.write_c_split(dir.join("p.h"), &bad).unwrap_err();
     assert_eq!(
         err.to_string(),
-        "the C attribute `PROGMEM; int x` must be one line without `;`"
+        "the C `attribute` cannot hold `;`: give words such as `PROGMEM`, or \
+         `__attribute__((...))` with balanced parentheses (got `PROGMEM; int x`)"
     );
     let blank = CStyle {
         storage: Some(" ".into()),
         attribute: None,
+        ..CStyle::default()
     };
     assert_eq!(
         profiles
             .write_c_split(dir.join("p.h"), &blank)
             .unwrap_err()
             .to_string(),
-        "the C storage is blank: give a word such as `__code`"
+        "the C `storage` is blank: give a word that qualifies the element type, such as \
+         `__code` or `__flash`"
     );
     assert!(!dir.join("p.h").exists());
+}
+
+/// What `CStyle::check` accepts compiles: storage words (`volatile`, and
+/// `ROM`, a macro standing in for `__code`) before the element type and on
+/// the run player's pointers; attributes with nested parentheses, strings
+/// and commas, or a macro taking an argument, after the name. In one
+/// header and split, C89 and C99, with the run player.
+#[test]
+fn accepted_placements_compile() {
+    let source = r#"
+[defaults]
+timer_hz = 1_000_000
+curve = "linear"
+fmin = 500
+fmax = 5000
+
+[profiles.runs]
+len = 300
+compress = 1
+
+[profiles.steps]
+len = 50
+
+[profiles.segments]
+len = 300
+segments = 4
+"#;
+    let profiles = Profiles::parse("ramps.toml", source).unwrap_or_else(|e| panic!("{e}"));
+    for (i, (storage, attribute)) in [
+        (
+            Some("ROM volatile"),
+            Some("__attribute__((section(\".ramps\"), aligned(4)))"),
+        ),
+        (
+            Some("volatile"),
+            Some("__attribute__ ((aligned (8))) __attribute__((unused))"),
+        ),
+        (None, Some("ALIGNED(2)")),
+        (Some("ROM"), None),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let style = CStyle {
+            storage: storage.map(String::from),
+            attribute: attribute.map(String::from),
+            ..CStyle::default()
+        };
+        style.check().unwrap_or_else(|e| panic!("{e}"));
+        for (name, layout) in [
+            ("single", Layout::Single(style.clone())),
+            ("split", Layout::Split(style.clone())),
+        ] {
+            let printed = check_header(&profiles, &format!("placement_{i}_{name}"), &layout);
+            assert_eq!(printed["runs"]["steps"], Figure::Int(300));
+        }
+    }
+}
+
+/// One axis's profiles: a compressed ramp and a per-step table, named
+/// after the axis (`x_runs`, `x_steps`).
+fn axis(name: &str) -> String {
+    format!(
+        "[defaults]\ntimer_hz = 1_000_000\ncurve = \"linear\"\nfmin = 500\nfmax = 5000\n\n\
+         [profiles.{name}_runs]\nlen = 300\ncompress = 1\n\n[profiles.{name}_steps]\nlen = 50\n"
+    )
+}
+
+/// Two headers from two files of the same name (`a/profiles.toml`,
+/// `b/profiles.toml`) in one translation unit: each is named after its
+/// own file (`x_axis.h`: the guard `STEPPER_PROFILES_X_AXIS_H`, the player
+/// `x_axis_runs_*`, `X_AXIS_RUNS_READ`), so neither is dropped as the
+/// other's guard and the program uses both tables and both run players;
+/// the one whose tables are in program memory reads them with
+/// `pgm_read_word` (counted by a host's stand-in), the other with a load.
+#[test]
+fn two_headers_in_one_translation_unit() {
+    let x = Profiles::parse("a/profiles.toml", &axis("x")).unwrap_or_else(|e| panic!("{e}"));
+    let y = Profiles::parse("b/profiles.toml", &axis("y")).unwrap_or_else(|e| panic!("{e}"));
+    let progmem = CStyle {
+        attribute: Some("PROGMEM".into()),
+        ..CStyle::default()
+    };
+    let main = "#include <stdio.h>\n\
+        #define STEPPER_PROFILES_X_AXIS_IMPLEMENTATION\n\
+        #define STEPPER_PROFILES_Y_AXIS_IMPLEMENTATION\n\
+        #include \"x_axis.h\"\n#include \"y_axis.h\"\n#include \"x_axis.h\"\n\n\
+        unsigned long pgm_reads = 0;\n\n\
+        int main(void)\n{\n    \
+            x_axis_runs_t x;\n    y_axis_runs_t y;\n    uint16_t q;\n    \
+            unsigned long n = 0, sum = 0, reads;\n\n    \
+            x_axis_runs_start(&x, X_RUNS_RUNS, (uint16_t)X_RUNS_RUN_COUNT);\n    \
+            while ((q = x_axis_runs_next(&x)) != 0) {\n        n++;\n        sum += q;\n    }\n    \
+            printf(\"x_runs %lu %lu %lu\\n\", n, sum, pgm_reads);\n    \
+            reads = pgm_reads;\n    n = 0;\n    sum = 0;\n    \
+            y_axis_runs_start(&y, Y_RUNS_RUNS, (uint16_t)Y_RUNS_RUN_COUNT);\n    \
+            while ((q = y_axis_runs_next(&y)) != 0) {\n        n++;\n        sum += q;\n    }\n    \
+            printf(\"y_runs %lu %lu %lu\\n\", n, sum, pgm_reads - reads);\n    \
+            printf(\"x_steps %lu %lu\\n\", (unsigned long)X_STEPS_PERIODS[0], \
+                   (unsigned long)X_STEPS_LEN);\n    \
+            printf(\"y_steps %lu %lu\\n\", (unsigned long)Y_STEPS_PERIODS[0], \
+                   (unsigned long)Y_STEPS_LEN);\n    \
+            return 0;\n}\n";
+    // avr-libc's program memory as a host stands in for it: reads counted.
+    let pgmspace = "#include <stdint.h>\n#define PROGMEM\nextern unsigned long pgm_reads;\n\
+                    #define pgm_read_word(p) (pgm_reads++, *(p))\n";
+    let cc = std::env::var("CC").unwrap_or_else(|_| "cc".to_string());
+    for (layout, y_style) in [("single", None), ("split", Some(&progmem))] {
+        let dir = work_dir(&format!("two_headers_{layout}"));
+        fs::create_dir(dir.join("avr")).unwrap();
+        fs::write(dir.join("avr/pgmspace.h"), pgmspace).unwrap();
+        fs::write(dir.join("main.c"), main).unwrap();
+        let mut sources = vec!["main.c"];
+        match y_style {
+            None => {
+                x.write_c_header(dir.join("x_axis.h")).unwrap();
+                y.write_c_header(dir.join("y_axis.h")).unwrap();
+            }
+            Some(style) => {
+                x.write_c_split(dir.join("x_axis.h"), &CStyle::default())
+                    .unwrap();
+                y.write_c_split(dir.join("y_axis.h"), style).unwrap();
+                sources.extend(["x_axis.c", "y_axis.c"]);
+            }
+        }
+        let header = fs::read_to_string(dir.join("x_axis.h")).unwrap();
+        assert!(
+            header.contains("#ifndef STEPPER_PROFILES_X_AXIS_H\n")
+                && header.contains("x_axis_runs_t"),
+            "{header}"
+        );
+        for std in ["-std=c89", "-std=c99"] {
+            let exe = dir.join(format!("axes{std}"));
+            run(
+                Command::new(&cc)
+                    .arg(std)
+                    .args(FLAGS)
+                    .args(["-I", "."])
+                    .arg("-o")
+                    .arg(&exe)
+                    .args(&sources)
+                    .current_dir(&dir),
+                &format!("`{cc} {std} {}` of two headers", FLAGS.join(" ")),
+            );
+            let printed = run(&mut Command::new(&exe), "the program of two headers");
+            let mut want = String::new();
+            for (profiles, reads) in [(&x, 0), (&y, y_style.map_or(0, |_| 5))] {
+                let [runs, steps] = profiles.profiles() else {
+                    panic!("two profiles");
+                };
+                let (Generated::Runs(r), Generated::Steps(t)) = (&runs.table, &steps.table) else {
+                    panic!("runs, then one entry per step");
+                };
+                let periods = runs.table.step_periods();
+                let _ = writeln!(
+                    want,
+                    "{} {} {} {}",
+                    runs.name,
+                    periods.len(),
+                    periods.iter().map(|&p| u64::from(p)).sum::<u64>(),
+                    reads * r.runs.len()
+                );
+                let _ = write!(
+                    want,
+                    "{}",
+                    format_args!("{} {} {}\n", steps.name, t.periods[0], t.periods.len())
+                );
+            }
+            // In the program's order: both players, then both tables.
+            let mut lines: Vec<&str> = want.lines().collect();
+            lines.swap(1, 2);
+            assert_eq!(printed, lines.join("\n") + "\n", "{layout} {std}");
+        }
+    }
+}
+
+/// The split files are written both or neither: a source that cannot be
+/// written leaves no header behind.
+#[test]
+fn split_files_are_written_both_or_neither() {
+    let profiles = Profiles::parse(
+        "p.toml",
+        "[profiles.a]\ncurve = \"linear\"\nfmin = 100\nfmax = 1000\nlen = 10\ntimer_hz = 1_000_000\n",
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let dir = work_dir("both_or_neither");
+    fs::create_dir(dir.join("p.c")).unwrap();
+    let err = profiles
+        .write_c_split(dir.join("p.h"), &CStyle::default())
+        .unwrap_err();
+    assert_eq!(
+        err.to_string(),
+        format!(
+            "cannot write `{}`: it is a folder",
+            dir.join("p.c").display()
+        )
+    );
+    let left: Vec<_> = fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(left, ["p.c"]);
+    fs::remove_dir(dir.join("p.c")).unwrap();
+    let (h, c) = profiles
+        .write_c_split(dir.join("p.h"), &CStyle::default())
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert!(h.is_file() && c.is_file());
+    assert_eq!(fs::read_dir(&dir).unwrap().count(), 2);
 }
 
 /// Compressed ramps in C: the runs and the header's player, which plays
@@ -729,9 +962,10 @@ len = 100
     let storage = CStyle {
         storage: Some("volatile".into()),
         attribute: None,
+        ..CStyle::default()
     };
     for (dir, layout) in [
-        ("runs_single", Layout::Single),
+        ("runs_single", Layout::Single(CStyle::default())),
         ("runs_split", Layout::Split(CStyle::default())),
         ("runs_storage", Layout::Split(storage)),
     ] {
@@ -743,9 +977,10 @@ len = 100
     }
 }
 
-/// A file whose name is no C identifier still gives a player whose names
-/// are identifiers C leaves to programs: no leading digit, no leading or
-/// double `_`; the C compiles and plays as with any other name.
+/// A header named after a file whose name is no C identifier (the
+/// profiles file's, or its own) still gives a player whose names are
+/// identifiers C leaves to programs: no leading digit, no leading or double
+/// `_`; the C compiles and plays as with any other name.
 #[test]
 fn run_players_of_files_named_like_no_identifier() {
     let source = r#"
@@ -768,10 +1003,27 @@ compress = 1
         ("x--y_.toml", "runs_dashes", "x_y_runs_start"),
     ] {
         let profiles = Profiles::parse(file, source).unwrap_or_else(|e| panic!("{e}"));
-        let split = profiles.c_split("profiles.h", &CStyle::default());
+        let split = profiles.c_split(&header_name(&profiles), &CStyle::default());
         assert!(split.header.contains(expected), "{}", split.header);
         assert!(profiles.c_header().contains(expected));
-        for layout in [Layout::Single, Layout::Split(CStyle::default())] {
+        // Named after the file it is written to, whatever the profiles file.
+        let named = Profiles::parse("profiles.toml", source).unwrap_or_else(|e| panic!("{e}"));
+        let name = header_name(&profiles);
+        assert!(
+            named
+                .c_header_named(&name, &CStyle::default())
+                .contains(expected)
+        );
+        assert!(
+            named
+                .c_split(&name, &CStyle::default())
+                .header
+                .contains(expected)
+        );
+        for layout in [
+            Layout::Single(CStyle::default()),
+            Layout::Split(CStyle::default()),
+        ] {
             let printed = check_header(&profiles, dir, &layout);
             assert_eq!(printed["ramp"]["steps"], Figure::Int(300));
         }
@@ -780,7 +1032,8 @@ compress = 1
 
 /// Tables in avr-libc's program memory (`PROGMEM`) cannot be read by a
 /// plain load: the header brings `PROGMEM` in and the run player reads with
-/// `pgm_read_word`, unless the user defines `STEPPER_RUNS_READ` first.
+/// `pgm_read_word`, unless the user defines `RAMPS_RUNS_READ` (this
+/// header's) or `STEPPER_RUNS_READ` (every header's) first.
 #[test]
 fn progmem_tables_are_read_from_program_memory() {
     let source = "[profiles.ramp]\ncurve = \"linear\"\nfmin = 500\nfmax = 5000\n\
@@ -789,6 +1042,7 @@ fn progmem_tables_are_read_from_program_memory() {
     let style = CStyle {
         storage: None,
         attribute: Some("PROGMEM".into()),
+        ..CStyle::default()
     };
     let files = profiles.c_split("ramps.h", &style);
     assert!(
@@ -800,7 +1054,9 @@ fn progmem_tables_are_read_from_program_memory() {
     );
     assert!(
         files.header.contains(
-            "#ifndef STEPPER_RUNS_READ\n#define STEPPER_RUNS_READ(p) pgm_read_word(p)\n#endif\n"
+            "#ifndef RAMPS_RUNS_READ\n#ifdef STEPPER_RUNS_READ\n\
+             #define RAMPS_RUNS_READ(p) STEPPER_RUNS_READ(p)\n#else\n\
+             #define RAMPS_RUNS_READ(p) pgm_read_word(p)\n#endif\n#endif\n"
         ),
         "{}",
         files.header
@@ -817,11 +1073,12 @@ fn progmem_tables_are_read_from_program_memory() {
         let style = CStyle {
             storage: None,
             attribute: Some(attribute.into()),
+            ..CStyle::default()
         };
         let header = profiles.c_split("ramps.h", &style).header;
         assert!(!header.contains("pgmspace"), "{header}");
         assert!(
-            header.contains("#define STEPPER_RUNS_READ(p) (*(p))\n"),
+            header.contains("#else\n#define RAMPS_RUNS_READ(p) (*(p))\n#endif\n"),
             "{header}"
         );
     }

@@ -65,6 +65,7 @@ const REQUIRED: &[&str] = &[
     "number_too_large_int",
     "number_too_many_digits",
     "segments_count_overflow",
+    "segments_period_overflow",
     "bad_name_errno",
     "file_too_large",
 ];

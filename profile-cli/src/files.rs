@@ -1,7 +1,7 @@
 //! The files behind the plots: an SVG and a CSV per profile, the torque of
 //! each motor-bound profile, an overview; and the README's figures.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use plotters::style::{BLACK, RGBColor};
 use profile_core::build::Profiles;
@@ -9,6 +9,7 @@ use profile_core::emit::Profile;
 use profile_core::{Discretization, Generated, Spec, Table};
 
 use crate::plots::{self, Line, Series};
+use crate::staging::Staging;
 
 /// The S-curve article's four example curves, in the article's colours.
 const ARTICLE: [(&str, RGBColor); 4] = [
@@ -167,13 +168,11 @@ fn series(label: &str, color: RGBColor, t: &Table) -> Series {
 /// time) and `NAME.csv` (step, period, edge time, frequency); for a compact
 /// layout (runs, segments) `NAME_edges.svg` (over the curve, with every
 /// edge's error); for a profile that names a motor `NAME_torque.svg`; and
-/// `overview.svg`, into `out`, creating it. Returns the files written.
+/// `overview.svg`, into `out`.
 pub fn write_plots(
     profiles: &Profiles,
-    out: &Path,
-) -> Result<Vec<PathBuf>, Box<dyn std::error::Error>> {
-    std::fs::create_dir_all(out)?;
-    let mut written = Vec::new();
+    out: &mut Staging,
+) -> Result<(), Box<dyn std::error::Error>> {
     let mut overview = Vec::new();
     let colors = colors(profiles);
     for (p, &color) in profiles.profiles().iter().zip(&colors) {
@@ -181,44 +180,36 @@ pub fn write_plots(
         let spec = p.table.spec();
         let tps = spec.timer.timer_hz as f64 / spec.timer.ticks_per_step as f64;
         let s = Series::new(&p.name, color, &periods, tps, spec);
-        let svg = out.join(format!("{}.svg", p.name));
-        plots::profile(&svg, &p.name, &s)?;
-        written.push(svg);
+        plots::profile(&out.path(format!("{}.svg", p.name)), &p.name, &s)?;
         let mut csv = String::from("step,period_ticks,start_s,frequency_hz\n");
         for (k, (&period, &(t, f))) in periods.iter().zip(&s.steps).enumerate() {
             csv.push_str(&format!("{k},{period},{t:.9},{f:.6}\n"));
         }
-        let csv_path = out.join(format!("{}.csv", p.name));
-        std::fs::write(&csv_path, csv)?;
-        written.push(csv_path);
+        std::fs::write(out.path(format!("{}.csv", p.name)), csv)?;
         if p.table.compact().is_some() {
-            let edges = out.join(format!("{}_edges.svg", p.name));
-            write_compact_plot(p, color, &edges)?;
-            written.push(edges);
+            write_compact_plot(p, color, &out.path(format!("{}_edges.svg", p.name)))?;
         }
         if p.motor.is_some() {
-            let torque = out.join(format!("{}_torque.svg", p.name));
-            write_torque_plot(p, &torque)?;
-            written.push(torque);
+            write_torque_plot(p, &out.path(format!("{}_torque.svg", p.name)))?;
         }
         overview.push(s);
     }
-    let path = out.join("overview.svg");
     plots::overlay(
-        &path,
+        &out.path("overview.svg"),
         "All profiles: frequency against time",
         &overview,
         false,
     )?;
-    written.push(path);
-    Ok(written)
+    Ok(())
 }
 
 /// The README's figures: the S-curve article's four example calls, three
 /// discretizations of one curve, the motor check of the worked example and
 /// the compressed microstep ramp over its curve.
-pub fn write_docs(profiles: &Profiles, docs: &Path) -> Result<(), Box<dyn std::error::Error>> {
-    std::fs::create_dir_all(docs)?;
+pub fn write_docs(
+    profiles: &Profiles,
+    docs: &mut Staging,
+) -> Result<(), Box<dyn std::error::Error>> {
     let calls = [
         ("sigmoid_yellow", "yellow: (1000, 56000, 16000, 4)"),
         ("sigmoid_orange", "orange: (1000, 64000, 500, 8)"),
@@ -238,7 +229,7 @@ pub fn write_docs(profiles: &Profiles, docs: &Path) -> Result<(), Box<dyn std::e
         article.push(series(label, color, t));
     }
     plots::overlay(
-        &docs.join("s_curve_article.svg"),
+        &docs.path("s_curve_article.svg"),
         "CalculateSModelLine's four example calls: frequency against step",
         &article,
         true,
@@ -265,7 +256,7 @@ pub fn write_docs(profiles: &Profiles, docs: &Path) -> Result<(), Box<dyn std::e
         sides.push(series(d.name(), PALETTE[i], &t));
     }
     plots::side_by_side(
-        &docs.join("discretizations.svg"),
+        &docs.path("discretizations.svg"),
         "One sigmoid (500 -> 64000 Hz, 1000 steps, flexible 8), three discretizations",
         &sides,
     )?;
@@ -277,7 +268,7 @@ pub fn write_docs(profiles: &Profiles, docs: &Path) -> Result<(), Box<dyn std::e
     else {
         return Err("profile `jerk_limited` with a motor is missing from the file".into());
     };
-    write_torque_plot(worked, &docs.join("motor_torque.svg"))?;
+    write_torque_plot(worked, &docs.path("motor_torque.svg"))?;
     // The compressed microstep ramp over its curve.
     let colors = colors(profiles);
     let Some((compressed, &color)) = profiles
@@ -288,6 +279,6 @@ pub fn write_docs(profiles: &Profiles, docs: &Path) -> Result<(), Box<dyn std::e
     else {
         return Err("profile `microstep_runs` is missing from the file".into());
     };
-    write_compact_plot(compressed, color, &docs.join("compressed_edges.svg"))?;
+    write_compact_plot(compressed, color, &docs.path("compressed_edges.svg"))?;
     Ok(())
 }

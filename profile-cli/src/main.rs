@@ -12,6 +12,7 @@
 mod files;
 mod plots;
 mod report;
+mod staging;
 
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
@@ -21,6 +22,7 @@ use std::time::Duration;
 
 use clap::{Parser, Subcommand};
 use profile_core::build::{CStyle, Profiles};
+use staging::Staging;
 
 /// Stepper-motor acceleration tables from a profiles file: report their
 /// figures, check the file, write the C or the Rust, plot them.
@@ -70,14 +72,22 @@ enum Command {
         /// Declarations in OUT.h, the tables defined once in OUT.c
         #[arg(long, requires = "out")]
         split: bool,
-        /// Written before each array's element type, e.g. `__code` (SDCC) or
-        /// `__flash` (AVR GCC)
-        #[arg(long, value_name = "WORD")]
+        /// Words written before each array's element type that qualify it,
+        /// e.g. `__code` (SDCC) or `__flash` (AVR GCC); not `const` or
+        /// `static`, which the header writes itself
+        #[arg(long, value_name = "WORDS")]
         storage: Option<String>,
-        /// Written after each array's name, e.g. `PROGMEM` or
+        /// Written after each array's name: words, each with balanced
+        /// parentheses if any, e.g. `PROGMEM` or
         /// `'__attribute__((section(".ramps")))'`
         #[arg(long, value_name = "TEXT")]
         attribute: Option<String>,
+        /// The header's name in C, a C identifier: its include guard
+        /// `STEPPER_PROFILES_NAME_H` and its run player `NAME_runs_*` (by
+        /// default the output's name, `x_axis` for `x_axis.h`, or the
+        /// profiles file's without `-o`)
+        #[arg(long, value_name = "NAME")]
+        prefix: Option<String>,
     },
     /// Write the Rust: one module per profile, as `include_profiles!`
     /// expands to and a build script writes
@@ -133,9 +143,12 @@ fn run(command: Command) -> Result<(), Failure> {
             let profiles = load(&file)?;
             stdout(&report::text(&file.display().to_string(), &profiles)?)?;
             if let Some(out) = out {
-                let mut written = files::write_plots(&profiles, &out)
+                let mut files = Staging::new(&out)?;
+                files::write_plots(&profiles, &mut files)
                     .map_err(|e| format!("cannot write into `{}`: {e}", out.display()))?;
-                written.push(profiles.write_c_header(out.join("profiles.h"))?);
+                let header = profiles.c_header_named("profiles.h", &CStyle::default());
+                files.write("profiles.h", &header)?;
+                let written = files.commit()?;
                 stdout(&format!(
                     "\nwrote {} files to {}\n",
                     written.len(),
@@ -143,8 +156,10 @@ fn run(command: Command) -> Result<(), Failure> {
                 ))?;
             }
             if let Some(docs) = docs {
-                files::write_docs(&profiles, &docs)
+                let mut files = Staging::new(&docs)?;
+                files::write_docs(&profiles, &mut files)
                     .map_err(|e| format!("cannot write the README's figures: {e}"))?;
+                files.commit()?;
                 stdout(&format!(
                     "wrote the README's figures to {}\n",
                     docs.display()
@@ -176,9 +191,16 @@ fn run(command: Command) -> Result<(), Failure> {
             split,
             storage,
             attribute,
+            prefix,
         } => {
-            let style = CStyle { storage, attribute };
-            style.check()?;
+            let style = CStyle {
+                storage,
+                attribute,
+                prefix,
+            };
+            style
+                .check()
+                .map_err(|e| format!("`--{}` {}", e.field, e.problem))?;
             let profiles = load(&file)?;
             match (out, split) {
                 (Some(out), true) => {
@@ -189,18 +211,34 @@ fn run(command: Command) -> Result<(), Failure> {
                             out.display()
                         )));
                     }
-                    let (h, c) = profiles.write_c_split(&out, &style)?;
-                    note(&format!("wrote {} and {}", h.display(), c.display()));
+                    let (dir, name) = folder_and_name(&out)?;
+                    let files = profiles.c_split(&name.to_string_lossy(), &style);
+                    let mut staging = Staging::new(dir)?;
+                    staging.write(name, &files.header)?;
+                    staging.write(Path::new(name).with_extension("c"), &files.source)?;
+                    let written = staging.commit()?;
+                    note(&format!(
+                        "wrote {} and {}",
+                        written[0].display(),
+                        written[1].display()
+                    ));
                     Ok(())
                 }
-                (out, _) => emit(out.as_deref(), &profiles.c_header_with(&style)),
+                (Some(out), false) => {
+                    let (_, name) = folder_and_name(&out)?;
+                    let header = profiles.c_header_named(&name.to_string_lossy(), &style);
+                    emit(Some(&out), &header)
+                }
+                (None, _) => stdout(&profiles.c_header_with(&style)),
             }
         }
         Command::Rust { file, out } => emit(out.as_deref(), &load(&file)?.rust_source()),
         Command::Plot { file, out } => {
             let profiles = load(&file)?;
-            let written = files::write_plots(&profiles, &out)
+            let mut files = Staging::new(&out)?;
+            files::write_plots(&profiles, &mut files)
                 .map_err(|e| format!("cannot write into `{}`: {e}", out.display()))?;
+            let written = files.commit()?;
             stdout(&format!(
                 "wrote {} files to {}\n",
                 written.len(),
@@ -229,16 +267,25 @@ fn load(path: &Path) -> Result<Profiles, Failure> {
 fn emit(out: Option<&Path>, text: &str) -> Result<(), Failure> {
     match out {
         Some(path) => {
-            if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
-                std::fs::create_dir_all(dir)
-                    .map_err(|e| format!("cannot create the folder `{}`: {e}", dir.display()))?;
-            }
-            std::fs::write(path, text)
-                .map_err(|e| format!("cannot write `{}`: {e}", path.display()))?;
+            let (dir, name) = folder_and_name(path)?;
+            let mut staging = Staging::new(dir)?;
+            staging.write(name, text)?;
+            staging.commit()?;
             note(&format!("wrote {}", path.display()));
             Ok(())
         }
         None => stdout(text),
+    }
+}
+
+/// The folder a file goes into and its name.
+fn folder_and_name(path: &Path) -> Result<(&Path, &std::ffi::OsStr), Failure> {
+    match (path.parent(), path.file_name()) {
+        (Some(dir), Some(name)) => Ok((dir, name)),
+        _ => Err(Failure(format!(
+            "cannot write `{}`: give the name of a file",
+            path.display()
+        ))),
     }
 }
 

@@ -94,6 +94,108 @@ fn check_passes_a_good_file_and_fails_a_bad_one_with_the_caret() {
     assert_eq!(run(&dir, &["check"]).status.code(), Some(2));
 }
 
+/// Four segments of a ramp whose step 0 needs 70 634 ticks, more than
+/// `u16` holds: the segments average it away, the per-step table the plot
+/// draws them against cannot.
+const SEGMENTS_OVERFLOW: &str = "[profiles.pp]\ncurve = \"jerk_limited\"\nfmin = 100\n\
+     fmax = 5000\naccel = 50000\njerk = 5e6\ntimer_hz = \"10 MHz\"\nsegments = 4\n";
+
+/// One verdict: a table that cannot be drawn is refused by `check` as by
+/// every command that writes, at its profile, and nothing is left behind.
+#[test]
+fn check_refuses_what_plot_and_report_cannot_draw() {
+    let dir = work_dir("one_verdict");
+    fs::write(dir.join("pp.toml"), SEGMENTS_OVERFLOW).unwrap();
+    let message = "pp.toml:3:8: entry 0 is 70634 ticks, more than `word = u16` holds (65535); \
+                   at `timer_hz = 10000000` the lowest step frequency that fits is 152.59 Hz\n  \
+                   |\n3 | fmin = 100\n  |        ^^^\n";
+    for args in [
+        &["check", "pp.toml"][..],
+        &["plot", "pp.toml", "-o", "plots"],
+        &["report", "pp.toml", "-o", "report"],
+        &["header", "pp.toml", "-o", "pp.h"],
+        &["rust", "pp.toml", "-o", "pp.rs"],
+    ] {
+        let out = run(&dir, args);
+        assert_eq!(out.status.code(), Some(1), "{args:?}");
+        assert_eq!(text(&out.stderr), message, "{args:?}");
+        assert_eq!(text(&out.stdout), "", "{args:?}");
+    }
+    assert_eq!(listing(&dir), ["pp.toml"]);
+}
+
+/// The names in a folder, sorted.
+fn listing(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> = fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    names
+}
+
+/// A command that fails while writing leaves no file behind and keeps the
+/// files it would have replaced: each file is written aside and moved into
+/// place only once all of them are written.
+#[test]
+fn a_command_that_fails_leaves_no_file_behind() {
+    let dir = work_dir("no_partial_files");
+    fs::write(
+        dir.join("p.toml"),
+        "[profiles.p]\ncurve = \"linear\"\nfmin = 500\nfmax = 5000\nlen = 50\n\
+         timer_hz = 1_000_000\n",
+    )
+    .unwrap();
+    // A folder where a file is to go: the command fails after writing others.
+    fs::create_dir_all(dir.join("plots/p.csv")).unwrap();
+    fs::write(dir.join("plots/overview.svg"), "old").unwrap();
+    fs::create_dir_all(dir.join("report/profiles.h")).unwrap();
+    fs::create_dir_all(dir.join("c/ramps.c")).unwrap();
+    fs::create_dir_all(dir.join("rust/p.rs")).unwrap();
+    for (args, message, folder, left) in [
+        (
+            &["plot", "p.toml", "-o", "plots"][..],
+            "cannot write `plots/p.csv`: it is a folder\n",
+            "plots",
+            &["overview.svg", "p.csv"][..],
+        ),
+        (
+            &["report", "p.toml", "-o", "report"],
+            "cannot write `report/profiles.h`: it is a folder\n",
+            "report",
+            &["profiles.h"],
+        ),
+        (
+            &["header", "p.toml", "-o", "c/ramps.h", "--split"],
+            "cannot write `c/ramps.c`: it is a folder\n",
+            "c",
+            &["ramps.c"],
+        ),
+        (
+            &["header", "p.toml", "-o", "c/ramps.c"],
+            "cannot write `c/ramps.c`: it is a folder\n",
+            "c",
+            &["ramps.c"],
+        ),
+        (
+            &["rust", "p.toml", "-o", "rust/p.rs"],
+            "cannot write `rust/p.rs`: it is a folder\n",
+            "rust",
+            &["p.rs"],
+        ),
+    ] {
+        let out = run(&dir, args);
+        assert_eq!(out.status.code(), Some(1), "{args:?}");
+        assert_eq!(text(&out.stderr), message, "{args:?}");
+        assert_eq!(listing(&dir.join(folder)), left, "{args:?}");
+    }
+    assert_eq!(
+        fs::read_to_string(dir.join("plots/overview.svg")).unwrap(),
+        "old"
+    );
+    assert_eq!(listing(&dir), ["c", "p.toml", "plots", "report", "rust"]);
+}
+
 #[test]
 fn header_writes_the_c_of_the_library_one_file_or_split() {
     let dir = work_dir("header");
@@ -107,9 +209,10 @@ fn header_writes_the_c_of_the_library_one_file_or_split() {
 
     let out = run(&dir, &["header", file, "-o", "include/ramps.h"]);
     assert!(out.status.success(), "{}", text(&out.stderr));
+    // Named after the file it is written to.
     assert_eq!(
         fs::read_to_string(dir.join("include/ramps.h")).unwrap(),
-        profiles.c_header()
+        profiles.c_header_named("ramps.h", &CStyle::default())
     );
 
     let out = run(
@@ -131,6 +234,7 @@ fn header_writes_the_c_of_the_library_one_file_or_split() {
     let style = CStyle {
         storage: Some("__code".into()),
         attribute: Some("PROGMEM".into()),
+        ..CStyle::default()
     };
     let want = profiles.c_split("ramps.h", &style);
     assert_eq!(
@@ -157,7 +261,8 @@ fn header_writes_the_c_of_the_library_one_file_or_split() {
     assert_eq!(out.status.code(), Some(1));
     assert_eq!(
         text(&out.stderr),
-        "the C attribute `PROGMEM;` must be one line without `;`\n"
+        "`--attribute` cannot hold `;`: give words such as `PROGMEM`, or \
+         `__attribute__((...))` with balanced parentheses (got `PROGMEM;`)\n"
     );
     assert_eq!(
         run(&dir, &["header", file, "--split"]).status.code(),
@@ -228,6 +333,8 @@ fn plot_writes_an_svg_and_a_csv_per_profile() {
         assert!(svg.contains(label), "{label}");
     }
     assert!(dir.join("figures/overview.svg").exists());
+    // Nothing but the files: the folder they were written in aside is gone.
+    assert_eq!(listing(&dir.join("figures")).len(), 31);
 }
 
 #[test]

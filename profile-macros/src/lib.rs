@@ -42,7 +42,7 @@ mod include;
 /// | `discretization` | `exact` (pulse edges where the curve puts them), `left_endpoint` (`1/f` at the step's start), `index` (the curve's x axis is the step index) | `exact` |
 /// | `rounding` | `truncate` (C's cast), `nearest`, `diffuse` (every edge within 0.5 tick) | `diffuse` |
 /// | `arithmetic` | `f64`; `f32` for the S-curve article's C code (`sigmoid`, `index`); `integer` for the S3C4510 article's (`linear`, `index`, `truncate`) | `f64` |
-/// | `segments` | N equal-time `(period, count)` pairs instead of one entry per step (a `[(u16, u16); N]`) | off |
+/// | `segments` | N equal-time `(period, count)` pairs instead of one entry per step (a `[(u16, u16); N]`); each step's own period must fit the word | off |
 /// | `compress` | runs instead of one entry per step (an `[[u16; 5]; N]`, played by `runs::Expand` or the player), every step edge within this many timer ticks of the curve, from 0.5 (1 with `ticks_per_step = 2`) to 65535: about a tenth of the flash of a long ramp at 1 tick | off |
 /// | `motor` | in a profiles file, the `[motors.NAME]` table of the motor the profile drives; the macro takes the motor's keys inline (below) | none |
 ///

@@ -43,7 +43,7 @@ use std::vec::Vec;
 
 use proc_macro2::TokenStream;
 
-pub use crate::emit::c::{CStyle, Split};
+pub use crate::emit::c::{CStyle, CStyleError, Split};
 use crate::emit::{self, Profile};
 use crate::pipeline::{self, Budget, Options};
 
@@ -134,46 +134,52 @@ impl Profiles {
     }
 
     /// One C header with every profile's table (`static const`) and
-    /// figures (`#define`s); compiles as C89 and C99.
+    /// figures (`#define`s); compiles as C89 and C99. Its guard and run
+    /// player are named after the profiles file (`STEPPER_PROFILES_RAMPS_H`
+    /// and `ramps_runs_*` for `ramps.toml`); [`c_header_named`](Self::c_header_named)
+    /// names them after the header's own file.
     pub fn c_header(&self) -> String {
         self.c_header_with(&CStyle::default())
     }
 
     /// [`c_header`](Self::c_header) with the arrays placed by `style`
-    /// (`__code`, `PROGMEM`, a linker section).
+    /// (`__code`, `PROGMEM`, a linker section) and named by its `prefix`,
+    /// if any. `style` is pasted as it is: [`CStyle::check`] it first (the
+    /// `write_` functions do).
     pub fn c_header_with(&self, style: &CStyle) -> String {
-        emit::c::header(&self.c_guard(), &self.source_name(), &self.profiles, style)
-    }
-
-    /// A C header of `extern` declarations and figures, and the source file
-    /// that defines the tables once; the source includes the header as
-    /// `header_name`.
-    pub fn c_split(&self, header_name: &str, style: &CStyle) -> Split {
-        emit::c::split(
-            &self.c_guard(),
+        emit::c::header(
+            &stem(&self.file),
             &self.source_name(),
-            header_name,
             &self.profiles,
             style,
         )
     }
 
-    /// The include guard: `STEPPER_PROFILES_<FILE STEM>_H`.
-    fn c_guard(&self) -> String {
-        let stem = Path::new(&self.file)
-            .file_stem()
-            .map_or("profiles".into(), |s| s.to_string_lossy().into_owned());
-        let guard: String = stem
-            .chars()
-            .map(|c| {
-                if c.is_ascii_alphanumeric() {
-                    c.to_ascii_uppercase()
-                } else {
-                    '_'
-                }
-            })
-            .collect();
-        format!("STEPPER_PROFILES_{guard}_H")
+    /// The C header to be written as `header_name` (`x_axis.h`): its guard
+    /// and run player named after it (`STEPPER_PROFILES_X_AXIS_H`,
+    /// `x_axis_runs_*`), unless `style.prefix` names them, so that the
+    /// headers of two files, however those are named, go in one program.
+    pub fn c_header_named(&self, header_name: &str, style: &CStyle) -> String {
+        emit::c::header(
+            &stem(header_name),
+            &self.source_name(),
+            &self.profiles,
+            style,
+        )
+    }
+
+    /// A C header of `extern` declarations and figures, and the source file
+    /// that defines the tables once; the source includes the header as
+    /// `header_name`, after which the header's guard and run player are
+    /// named unless `style.prefix` names them.
+    pub fn c_split(&self, header_name: &str, style: &CStyle) -> Split {
+        emit::c::split(
+            &stem(header_name),
+            &self.source_name(),
+            header_name,
+            &self.profiles,
+            style,
+        )
     }
 
     /// The file's name without its folder, for generated comments.
@@ -196,12 +202,24 @@ impl Profiles {
     }
 
     /// Writes the C header to `path` and returns where it went, creating
-    /// the folder. In a build script (`OUT_DIR` set) a relative path is
-    /// under `OUT_DIR`, never in the source tree; give an absolute path to
-    /// write elsewhere.
+    /// the folder; its guard and run player are named after the file
+    /// ([`c_header_named`](Self::c_header_named)). In a build script
+    /// (`OUT_DIR` set) a relative path is under `OUT_DIR`, never in the
+    /// source tree; give an absolute path to write elsewhere.
     pub fn write_c_header(&self, path: impl AsRef<Path>) -> Result<PathBuf, LoadError> {
+        self.write_c_header_with(path, &CStyle::default())
+    }
+
+    /// [`write_c_header`](Self::write_c_header), placed and named by
+    /// `style`, which is checked first.
+    pub fn write_c_header_with(
+        &self,
+        path: impl AsRef<Path>,
+        style: &CStyle,
+    ) -> Result<PathBuf, LoadError> {
+        check(style)?;
         let path = out_path(path.as_ref());
-        write(&path, &self.c_header())?;
+        write(&path, &self.c_header_named(&file_name(&path), style))?;
         Ok(path)
     }
 
@@ -215,15 +233,11 @@ impl Profiles {
         header: impl AsRef<Path>,
         style: &CStyle,
     ) -> Result<(PathBuf, PathBuf), LoadError> {
-        style.check().map_err(|text| LoadError { text })?;
+        check(style)?;
         let header = out_path(header.as_ref());
         let source = header.with_extension("c");
-        let name = header
-            .file_name()
-            .map_or("profiles.h".into(), |n| n.to_string_lossy().into_owned());
-        let files = self.c_split(&name, style);
-        write(&header, &files.header)?;
-        write(&source, &files.source)?;
+        let files = self.c_split(&file_name(&header), style);
+        write_all(&[(&header, &files.header), (&source, &files.source)])?;
         Ok((header, source))
     }
 }
@@ -257,6 +271,26 @@ pub fn build_script(path: impl AsRef<Path>) -> Option<Profiles> {
     }
 }
 
+/// A style the C can hold, or why not.
+fn check(style: &CStyle) -> Result<(), LoadError> {
+    style.check().map_err(|e| LoadError {
+        text: format!("the C {e}"),
+    })
+}
+
+/// The stem of a file's name: `x_axis` for `out/x_axis.h`.
+fn stem(file: &str) -> String {
+    Path::new(file)
+        .file_stem()
+        .map_or(String::new(), |s| s.to_string_lossy().into_owned())
+}
+
+/// A path's file name, `profiles.h` if it has none.
+fn file_name(path: &Path) -> String {
+    path.file_name()
+        .map_or("profiles.h".into(), |n| n.to_string_lossy().into_owned())
+}
+
 /// `path` under `OUT_DIR` when it is relative and a build script runs.
 fn out_path(path: &Path) -> PathBuf {
     match std::env::var_os("OUT_DIR") {
@@ -266,12 +300,49 @@ fn out_path(path: &Path) -> PathBuf {
 }
 
 fn write(path: &Path, contents: &str) -> Result<(), LoadError> {
-    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
-        std::fs::create_dir_all(dir).map_err(|e| LoadError {
-            text: format!("cannot create the folder `{}`: {e}", dir.display()),
-        })?;
-    }
-    std::fs::write(path, contents).map_err(|e| LoadError {
+    write_all(&[(path, contents)])
+}
+
+/// Writes every file or none, creating their folders: each is written
+/// beside its place under a hidden name, and moved there once all are.
+fn write_all(files: &[(&Path, &str)]) -> Result<(), LoadError> {
+    let cannot = |path: &Path, e: &dyn core::fmt::Display| LoadError {
         text: format!("cannot write `{}`: {e}", path.display()),
-    })
+    };
+    let mut aside = Vec::new();
+    let mut written = Ok(());
+    for &(path, contents) in files {
+        if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+            if let Err(e) = std::fs::create_dir_all(dir) {
+                written = Err(LoadError {
+                    text: format!("cannot create the folder `{}`: {e}", dir.display()),
+                });
+                break;
+            }
+        }
+        if path.is_dir() {
+            written = Err(cannot(path, &"it is a folder"));
+            break;
+        }
+        let name = path.file_name().unwrap_or_default().to_string_lossy();
+        let temp = path.with_file_name(format!(".{name}.{}.partial", std::process::id()));
+        aside.push(temp.clone());
+        if let Err(e) = std::fs::write(&temp, contents) {
+            written = Err(cannot(path, &e));
+            break;
+        }
+    }
+    if written.is_ok() {
+        for (&(path, _), temp) in files.iter().zip(&aside) {
+            if let Err(e) = std::fs::rename(temp, path) {
+                written = Err(cannot(path, &e));
+                break;
+            }
+        }
+    }
+    // What was not moved into place.
+    for temp in aside.iter().filter(|t| t.exists()) {
+        let _ = std::fs::remove_file(temp);
+    }
+    written
 }

@@ -89,6 +89,11 @@ impl CheckedSpec {
     /// rounds so that the segment's last step ends as near its exact edge as
     /// whole ticks allow, making up for what the segments before it left
     /// over. A segment that holds no step is an error: use fewer.
+    ///
+    /// The segments stand for the per-step table of the same curve (their
+    /// figures are measured against it): a step whose period that table
+    /// cannot hold in the word is refused here as there, with the same
+    /// error, though a segment's average might fit.
     pub fn for_each_segment<F: FnMut(u32, u32, u32)>(
         &self,
         segments: u32,
@@ -105,6 +110,10 @@ impl CheckedSpec {
         let duration = edge_time(c, len)?;
         let dt = duration / segments as f64;
         let mut quantizer = Quantizer::new(spec);
+        // The per-step table, step by step, as `for_each_period` rounds it.
+        let mut per_step = Quantizer::new(spec);
+        per_step.reachable(c.freq(0.0), c.end_freq())?;
+        let mut step_start = 0.0;
 
         let (mut steps_before, mut step, mut played) = (0u32, 0u32, 0u64);
         let (mut max_error, mut last_error) = (0.0f64, 0.0);
@@ -134,7 +143,10 @@ impl CheckedSpec {
             for _ in 0..count {
                 played += period as u64;
                 step += 1;
-                let error = (played as f64 - edge_time(c, step)? * scale) * repeat;
+                let next = edge_time(c, step)?;
+                per_step.push(step - 1, (next - step_start) * scale, Some(next * scale))?;
+                step_start = next;
+                let error = (played as f64 - next * scale) * repeat;
                 max_error = max_error.max(libm::fabs(error));
                 last_error = error;
             }

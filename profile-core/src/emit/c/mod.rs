@@ -15,45 +15,9 @@ use crate::base::timer::Word;
 use crate::schema::describe;
 use crate::table::owned::Generated;
 
-/// Where the tables go: text placed around every array, so that it lands in
-/// the memory the target reads constants from.
-///
-/// Both are written as given, in the declarations and the definitions. The
-/// run player's pointers carry the storage word too; with `PROGMEM` in the
-/// attribute the header includes `<avr/pgmspace.h>` and the run player
-/// reads with `pgm_read_word`.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct CStyle {
-    /// Before the element type: `__code` (SDCC, 8051 code memory),
-    /// `__flash` (AVR GCC's named address space).
-    pub storage: Option<String>,
-    /// After the array's name: `PROGMEM` (avr-libc), or
-    /// `__attribute__((section(".ramps")))` for a linker section.
-    pub attribute: Option<String>,
-}
+mod style;
 
-impl CStyle {
-    /// Checks that the texts are one line each and not blank: they are
-    /// pasted into the C source as they are.
-    pub fn check(&self) -> Result<(), String> {
-        for (what, text) in [("storage", &self.storage), ("attribute", &self.attribute)] {
-            if let Some(t) = text {
-                if t.trim().is_empty() {
-                    return Err(format!(
-                        "the C {what} is blank: give a word such as `__code`"
-                    ));
-                }
-                if t.contains(['\n', '\r', ';']) {
-                    return Err(format!(
-                        "the C {what} `{}` must be one line without `;`",
-                        t.escape_debug()
-                    ));
-                }
-            }
-        }
-        Ok(())
-    }
-}
+pub use style::{CStyle, CStyleError};
 
 /// A header of `extern` declarations and `#define`d figures, and the one
 /// source file that defines the tables.
@@ -66,39 +30,72 @@ pub struct Split {
     pub source: String,
 }
 
-/// What a generated file is made of.
+/// The names a header takes from its own name: its include guard, its run
+/// player's prefix and the macros that go with them. Two headers in one
+/// program need two names.
 struct Names<'a> {
-    guard: &'a str,
+    /// In capitals, for the guard and the implementation macro.
+    stem: String,
+    /// The run player's prefix, a C identifier.
+    prefix: String,
+    /// The profiles file, for the banner.
     source: &'a str,
 }
 
-impl Names<'_> {
-    /// The run player's prefix: the guard's stem in lower case
-    /// (`STEPPER_PROFILES_RAMPS_H` gives `ramps`), made an identifier C
-    /// leaves to programs: runs of `_` made one, none leading or trailing,
-    /// `profiles_` before a leading digit (`3d_printer.toml` gives
-    /// `profiles_3d_printer`), `profiles` for a stem with no letter or
-    /// digit (`é.toml`).
-    fn prefix(&self) -> String {
-        let stem = self
-            .guard
-            .strip_prefix("STEPPER_PROFILES_")
-            .unwrap_or(self.guard);
-        let stem = stem.strip_suffix("_H").unwrap_or(stem).to_lowercase();
-        let words: Vec<&str> = stem.split('_').filter(|w| !w.is_empty()).collect();
-        match words.first() {
+impl<'a> Names<'a> {
+    /// The names of a header called `name` (a file's stem: `x_axis` for
+    /// `x_axis.h`), or `style.prefix` when it is set. From a file's stem,
+    /// every run of characters other than ASCII letters and digits is one
+    /// `_`, none leading or trailing (`y-axis` gives `Y_AXIS`); the prefix is
+    /// that in lower case, made an identifier C leaves to programs:
+    /// `profiles_` before a leading digit (`3d_printer` gives
+    /// `profiles_3d_printer`), `profiles` for a name with no letter or digit
+    /// (`é`).
+    fn new(name: &str, style: &CStyle, source: &'a str) -> Self {
+        if let Some(prefix) = &style.prefix {
+            return Names {
+                stem: prefix.to_uppercase(),
+                prefix: prefix.clone(),
+                source,
+            };
+        }
+        let words: Vec<&str> = name
+            .split(|c: char| !c.is_ascii_alphanumeric())
+            .filter(|w| !w.is_empty())
+            .collect();
+        let joined = words.join("_").to_lowercase();
+        let prefix = match words.first() {
             None => "profiles".to_string(),
             Some(w) if w.starts_with(|c: char| c.is_ascii_digit()) => {
-                format!("profiles_{}", words.join("_"))
+                format!("profiles_{joined}")
             }
-            Some(_) => words.join("_"),
+            Some(_) => joined,
+        };
+        let stem = if words.is_empty() {
+            "PROFILES".to_string()
+        } else {
+            words.join("_").to_uppercase()
+        };
+        Names {
+            stem,
+            prefix,
+            source,
         }
+    }
+
+    /// The include guard: `STEPPER_PROFILES_X_AXIS_H`.
+    fn guard(&self) -> String {
+        format!("STEPPER_PROFILES_{}_H", self.stem)
     }
 
     /// The macro that asks a single header for the player's definitions.
     fn implementation(&self) -> String {
-        let stem = self.guard.strip_suffix("_H").unwrap_or(self.guard);
-        format!("{stem}_IMPLEMENTATION")
+        format!("STEPPER_PROFILES_{}_IMPLEMENTATION", self.stem)
+    }
+
+    /// The macro the run player reads a word of its tables with.
+    fn read(&self) -> String {
+        format!("{}_RUNS_READ", self.prefix.to_uppercase())
     }
 }
 
@@ -122,18 +119,24 @@ fn storage_word(style: &CStyle) -> String {
 
 /// The run player's type and functions, declared: its pointers carry the
 /// tables' storage word, so that they point where the tables are.
-fn runs_api(prefix: &str, style: &CStyle) -> String {
+fn runs_api(names: &Names, style: &CStyle) -> String {
+    let (prefix, read) = (&names.prefix, names.read());
     let storage = storage_word(style);
-    let read = if progmem(style) {
+    let load = if progmem(style) {
         "pgm_read_word(p)"
     } else {
         "(*(p))"
     };
     format!(
-        "/* Reads one word of a run table. Define it before including this file\n \
-         * for tables another way must read. */\n\
-         #ifndef STEPPER_RUNS_READ\n\
-         #define STEPPER_RUNS_READ(p) {read}\n\
+        "/* Reads one word of this file's run tables. Define {read}(p) before\n \
+         * including it for tables another way must read (or STEPPER_RUNS_READ(p)\n \
+         * for every such file that does not define its own). */\n\
+         #ifndef {read}\n\
+         #ifdef STEPPER_RUNS_READ\n\
+         #define {read}(p) STEPPER_RUNS_READ(p)\n\
+         #else\n\
+         #define {read}(p) {load}\n\
+         #endif\n\
          #endif\n\n\
          /* Plays a compressed ramp (a NAME_RUNS table), one period per call, with\n \
          * integer additions and shifts only: no division, no floating point. */\n\
@@ -153,7 +156,8 @@ fn runs_api(prefix: &str, style: &CStyle) -> String {
 }
 
 /// The run player's definitions: `runs::Expand`, in C89.
-fn runs_player(prefix: &str, style: &CStyle) -> String {
+fn runs_player(names: &Names, style: &CStyle) -> String {
+    let (prefix, read) = (&names.prefix, names.read());
     let storage = storage_word(style);
     format!(
         "void {prefix}_runs_start({prefix}_runs_t *p, const {storage}uint16_t (*runs)[5], uint16_t count)\n\
@@ -173,11 +177,11 @@ fn runs_player(prefix: &str, style: &CStyle) -> String {
          return 0;\n        \
          }}\n        \
          p->runs_left--;\n        \
-         p->left = STEPPER_RUNS_READ(p->next);\n        \
-         p->interval = ((uint32_t)STEPPER_RUNS_READ(p->next + 1) << 16)\n            \
-         | STEPPER_RUNS_READ(p->next + 2);\n        \
-         p->add = ((uint32_t)STEPPER_RUNS_READ(p->next + 3) << 16)\n            \
-         | STEPPER_RUNS_READ(p->next + 4);\n        \
+         p->left = {read}(p->next);\n        \
+         p->interval = ((uint32_t){read}(p->next + 1) << 16)\n            \
+         | {read}(p->next + 2);\n        \
+         p->add = ((uint32_t){read}(p->next + 3) << 16)\n            \
+         | {read}(p->next + 4);\n        \
          p->next += 5;\n    \
          }}\n    \
          p->left--;\n    \
@@ -191,28 +195,27 @@ fn runs_player(prefix: &str, style: &CStyle) -> String {
 
 /// One header holding everything: each table as
 /// `static const uintN_t NAME_PERIODS[N]` (or `NAME_SEGMENTS[N][2]`) and its
-/// figures as `#define NAME_FIGURE`s.
-pub fn header(guard: &str, source: &str, profiles: &[Profile], style: &CStyle) -> String {
-    header_of(
-        &Names { guard, source },
-        profiles,
-        style,
-        "static const",
-        true,
-    )
+/// figures as `#define NAME_FIGURE`s. `name` names the header in C (its
+/// guard `STEPPER_PROFILES_NAME_H`, its run player `name_runs_*`) unless
+/// `style.prefix` does: the stem of the file it is written to (`x_axis`
+/// for `x_axis.h`). `source` is the profiles file, for the banner.
+pub fn header(name: &str, source: &str, profiles: &[Profile], style: &CStyle) -> String {
+    let names = Names::new(name, style, source);
+    header_of(&names, profiles, style, "static const", true)
 }
 
 /// A header declaring each table `extern` (with the figures) and a source
 /// file defining them, so that the tables are in flash once however many
-/// files include the header. `header_name` is how the source includes it.
+/// files include the header. `header_name` is how the source includes it;
+/// `name` names the header in C, as for [`header`].
 pub fn split(
-    guard: &str,
+    name: &str,
     source: &str,
     header_name: &str,
     profiles: &[Profile],
     style: &CStyle,
 ) -> Split {
-    let names = Names { guard, source };
+    let names = Names::new(name, style, source);
     let header = header_of(&names, profiles, style, "extern const", false);
     let mut c = String::new();
     banner(&mut c, &names);
@@ -221,7 +224,7 @@ pub fn split(
         .iter()
         .any(|p| matches!(p.table, Generated::Runs(_)))
     {
-        c.push_str(&runs_player(&names.prefix(), style));
+        c.push_str(&runs_player(&names, style));
     }
     for p in profiles {
         let _ = writeln!(c, "/* Profile {}: see {header_name}. */", p.name);
@@ -242,7 +245,7 @@ fn header_of(
 ) -> String {
     let mut out = String::new();
     banner(&mut out, names);
-    let guard = names.guard;
+    let guard = names.guard();
     let _ = writeln!(
         out,
         "#ifndef {guard}\n#define {guard}\n\n#include <stdint.h>\n"
@@ -254,13 +257,13 @@ fn header_of(
         .iter()
         .any(|p| matches!(p.table, Generated::Runs(_)));
     if compressed {
-        out.push_str(&runs_api(&names.prefix(), style));
+        out.push_str(&runs_api(names, style));
         if body {
             // One file defines the player: `#define ..._IMPLEMENTATION`
             // before including the header there.
             let implementation = names.implementation();
             let _ = writeln!(out, "#ifdef {implementation}");
-            out.push_str(&runs_player(&names.prefix(), style));
+            out.push_str(&runs_player(names, style));
             let _ = writeln!(out, "#endif /* {implementation} */\n");
         }
     }
