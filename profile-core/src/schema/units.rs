@@ -10,7 +10,7 @@
 use std::format;
 use std::string::{String, ToString};
 
-use super::suggest::{Hint, did_you_mean};
+use super::suggest::{Hint, did_you_mean, phrase};
 use super::{Value, quoted};
 use crate::base::error::Num;
 use crate::base::key::Key;
@@ -59,6 +59,29 @@ const ALIASES: [(&str, &str); 14] = [
     ("°", "deg"),
 ];
 
+/// SI prefixes, for a unit no key takes: their names and powers of ten.
+/// `K` and `u` are read as the kilo and micro they are written for.
+const PREFIXES: [(&str, &str, i32); 18] = [
+    ("E", "exa", 18),
+    ("P", "peta", 15),
+    ("T", "tera", 12),
+    ("G", "giga", 9),
+    ("M", "mega", 6),
+    ("k", "kilo", 3),
+    ("K", "kilo", 3),
+    ("h", "hecto", 2),
+    ("da", "deca", 1),
+    ("d", "deci", -1),
+    ("c", "centi", -2),
+    ("m", "milli", -3),
+    ("u", "micro", -6),
+    ("µ", "micro", -6),
+    ("μ", "micro", -6),
+    ("n", "nano", -9),
+    ("p", "pico", -12),
+    ("f", "femto", -15),
+];
+
 impl Quantity {
     /// The units accepted, each with its power of ten, the base unit first.
     pub fn units(self) -> &'static [(&'static str, i32)] {
@@ -102,6 +125,43 @@ impl Quantity {
             .iter()
             .find(|(u, _)| *u == unit)
             .map(|(_, e)| *e)
+    }
+
+    /// What `unit`, refused, reads as: the base unit in any case (`hz`,
+    /// `S`) or an SI prefix on it (`mHz`, `ns`, `MNm`, `kΩ`), with the
+    /// prefix and its power of ten; `None` when it is neither.
+    fn scale(self, unit: &str) -> Option<(Option<(&'static str, &'static str)>, i32)> {
+        let base = self.units()[0].0;
+        let is_base = |u: &str| {
+            u.eq_ignore_ascii_case(base)
+                || ALIASES
+                    .iter()
+                    .any(|(alias, name)| *name == base && alias.eq_ignore_ascii_case(u))
+        };
+        if is_base(unit) {
+            return Some((None, 0));
+        }
+        PREFIXES
+            .iter()
+            .find(|(p, _, _)| unit.strip_prefix(p).is_some_and(is_base))
+            .map(|&(p, name, e)| (Some((p, name)), e))
+    }
+
+    /// What to add to the refusal of `unit`: the accepted unit of the same
+    /// scale (`KHz` is `kHz`, `cNm` is `Ncm`), or that its prefix is not
+    /// accepted (`mHz` is not `MHz`, `ns` not `ms`); for a unit of no
+    /// known scale, the nearest in spelling.
+    fn hint(self, unit: &str) -> String {
+        let Some((prefix, exponent)) = self.scale(unit) else {
+            return did_you_mean(unit, self.units().iter().map(|(u, _)| *u), Hint::After);
+        };
+        match (self.units().iter().find(|(_, e)| *e == exponent), prefix) {
+            (Some((same, _)), _) => phrase(same, Hint::After),
+            (None, Some((p, name))) => {
+                format!("; the prefix `{p}` ({name}, 1e{exponent}) is not accepted")
+            }
+            (None, None) => String::new(),
+        }
     }
 
     /// The accepted units, for messages, each with the symbol a datasheet
@@ -168,8 +228,7 @@ pub fn with_unit(key: Key, number: &str, unit: &str, written: &str) -> Result<Va
         ));
     };
     let Some(exponent) = q.exponent(unit) else {
-        let names = q.units().iter().map(|(u, _)| *u);
-        let hint = did_you_mean(unit, names, Hint::After);
+        let hint = q.hint(unit);
         let units = if q.units().len() == 1 {
             "unit"
         } else {
@@ -360,7 +419,7 @@ pub fn curve_point(q: Quantity, number: &str, unit: &str, written: &str) -> Resu
         _ => "torques",
     };
     let Some(exponent) = q.exponent(unit) else {
-        let hint = did_you_mean(unit, q.units().iter().map(|(u, _)| *u), Hint::After);
+        let hint = q.hint(unit);
         return Err(format!(
             "`torque_curve` {what} accept the units {} (got `{written}`){hint}",
             q.listed()

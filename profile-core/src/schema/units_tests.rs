@@ -112,6 +112,77 @@ fn a_motors_keys_take_the_units_of_its_datasheet() {
 }
 
 #[test]
+fn a_suggestion_keeps_the_scale() {
+    let hint = |key, unit: &str| {
+        let message = with_unit(key, "1", unit, "").unwrap_err();
+        message.split(" (got ``)").nth(1).unwrap_or("").to_string()
+    };
+    // A case fix where the prefix means the same.
+    assert_eq!(hint(Key::FMAX, "KHz"), "; did you mean `kHz`?");
+    assert_eq!(hint(Key::FMAX, "khz"), "; did you mean `kHz`?");
+    assert_eq!(hint(Key::FMAX, "hz"), "; did you mean `Hz`?");
+    assert_eq!(hint(Key::INDUCTANCE, "mh"), "; did you mean `mH`?");
+    assert_eq!(hint(Key::INDUCTANCE, "UH"), "; did you mean `uH`?");
+    assert_eq!(hint(Key::FRICTION, "mnm"), "; did you mean `mNm`?");
+    // The same scale spelt otherwise: cN·m is N·cm.
+    assert_eq!(hint(Key::FRICTION, "cNm"), "; did you mean `Ncm`?");
+    // Never a unit a thousand or a billion times off.
+    assert_eq!(
+        hint(Key::FMIN, "mHz"),
+        "; the prefix `m` (milli, 1e-3) is not accepted"
+    );
+    assert_eq!(
+        hint(Key::FMIN, "mhz"),
+        "; the prefix `m` (milli, 1e-3) is not accepted"
+    );
+    assert_eq!(
+        hint(Key::FRICTION, "MNm"),
+        "; the prefix `M` (mega, 1e6) is not accepted"
+    );
+    assert_eq!(
+        hint(Key::TAU, "ns"),
+        "; the prefix `n` (nano, 1e-9) is not accepted"
+    );
+    assert_eq!(
+        hint(Key::TAU, "Ms"),
+        "; the prefix `M` (mega, 1e6) is not accepted"
+    );
+    assert_eq!(
+        hint(Key::TAU, "MS"),
+        "; the prefix `M` (mega, 1e6) is not accepted"
+    );
+    assert_eq!(
+        hint(Key::RESISTANCE, "kΩ"),
+        "; the prefix `k` (kilo, 1e3) is not accepted"
+    );
+    assert_eq!(
+        hint(Key::SUPPLY_VOLTAGE, "kV"),
+        "; the prefix `k` (kilo, 1e3) is not accepted"
+    );
+    // A typo of no known scale: the nearest unit, as before.
+    assert_eq!(hint(Key::FMAX, "kHz2"), "; did you mean `kHz`?");
+    assert_eq!(hint(Key::FRICTION, "N.cm"), "; did you mean `Ncm`?");
+    assert_eq!(hint(Key::TAU, "min"), "");
+    // The torque curve's points say the same.
+    assert_eq!(
+        curve_point(Quantity::Torque, "20", "MNm", "20 MNm"),
+        Err(
+            "`torque_curve` torques accept the units `Nm` (`N·m`), `Ncm` (`N·cm`), `mNm` \
+             (`mN·m`) (got `20 MNm`); the prefix `M` (mega, 1e6) is not accepted"
+                .into()
+        )
+    );
+    assert_eq!(
+        curve_point(Quantity::Frequency, "2", "mhz", "2 mhz"),
+        Err(
+            "`torque_curve` frequencies accept the units `Hz`, `kHz`, `MHz` (got `2 mhz`); \
+             the prefix `m` (milli, 1e-3) is not accepted"
+                .into()
+        )
+    );
+}
+
+#[test]
 fn strings_split_into_number_and_unit() {
     assert_eq!(split("64 kHz"), Some(("64", "kHz")));
     assert_eq!(split(" 5ms "), Some(("5", "ms")));
