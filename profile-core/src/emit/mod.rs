@@ -6,6 +6,7 @@ use std::string::{String, ToString};
 use std::vec;
 use std::vec::Vec;
 
+use crate::base::error::Fixed;
 use crate::base::modes::Discretization;
 use crate::motor::{Motor, TorqueFigures};
 use crate::pipeline::Compiled;
@@ -220,8 +221,8 @@ pub fn doc_lines(table: &Generated) -> std::vec::Vec<String> {
             lines.push(format!(
                 "{} entries, {} to {} ticks ({:.2} Hz to {:.2} Hz), {} ticks in all ({:.6} s); \
                  pulse edges within {:.3} tick of the unrounded curve, drift {:.3} tick; \
-                 acceleration up to {:.0} Hz/s between windows of {} entries (the curve's \
-                 own peak: {:.0} Hz/s).",
+                 acceleration up to {} Hz/s between windows of {} entries (the curve's \
+                 own peak: {} Hz/s).",
                 f.len,
                 f.first_ticks,
                 f.last_ticks,
@@ -231,9 +232,9 @@ pub fn doc_lines(table: &Generated) -> std::vec::Vec<String> {
                 f.duration_s,
                 f.max_edge_error_ticks,
                 f.total_error_ticks,
-                f.max_accel_hz_s,
+                Fixed(f.max_accel_hz_s, 0),
                 f.accel_window,
-                f.curve_max_accel_hz_s
+                Fixed(f.curve_max_accel_hz_s, 0)
             ));
             if let Some(note) = start_note(table) {
                 lines.push(String::new());

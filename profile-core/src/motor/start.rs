@@ -4,6 +4,7 @@
 
 use core::fmt;
 
+use crate::base::error::{Fixed, Num};
 use crate::motor::simulate::{Rotor, natural_period, stable_step, step_for, substeps};
 use crate::motor::{Motor, MotorError};
 
@@ -280,10 +281,11 @@ pub(super) fn describe(error: &MotorError, f: &mut fmt::Formatter<'_>) -> fmt::R
     match *error {
         MotorError::PullIn { pulse, hz } => write!(
             f,
-            "the motor cannot start on this ramp with its load: from rest at {hz:.1} Hz the \
+            "the motor cannot start on this ramp with its load: from rest at {hz} Hz the \
              model's rotor slips before pulse {pulse}, before it reaches the field's speed (the \
              start and the acceleration right after it are too much together; start slower or \
-             accelerate less at first)"
+             accelerate less at first)",
+            hz = Fixed(hz, 1)
         ),
         MotorError::ShortMove { hz, pulse, steps } => {
             write!(
@@ -297,17 +299,19 @@ pub(super) fn describe(error: &MotorError, f: &mut fmt::Formatter<'_>) -> fmt::R
             } else {
                 write!(
                     f,
-                    "when the field stops at {hz:.1} Hz the model's rotor runs past it by half \
-                     an electrical turn"
+                    "when the field stops at {hz} Hz the model's rotor runs past it by half \
+                     an electrical turn",
+                    hz = Fixed(hz, 1)
                 )?;
             }
             f.write_str(" (start slower, or accelerate less near the start)")
         }
         MotorError::Start { hz, limit } => {
+            let hz = Fixed(hz, 1);
             write!(
                 f,
-                "the motor cannot start at {hz:.1} Hz with its load: it starts at {:.1} Hz at most, ",
-                limit.hz()
+                "the motor cannot start at {hz} Hz with its load: it starts at {} Hz at most, ",
+                Fixed(limit.hz(), 1)
             )?;
             match limit {
                 StartLimit::Corrected {
@@ -316,12 +320,14 @@ pub(super) fn describe(error: &MotorError, f: &mut fmt::Formatter<'_>) -> fmt::R
                     ..
                 } => write!(
                     f,
-                    "`max_start_hz = {max_start_hz}` (without load) over \
-                     sqrt(1 + load_inertia / rotor_inertia) = {factor:.3}"
+                    "`max_start_hz = {}` (without load) over \
+                     sqrt(1 + load_inertia / rotor_inertia) = {}",
+                    Num(max_start_hz),
+                    Fixed(factor, 3)
                 ),
                 StartLimit::Model { .. } => write!(
                     f,
-                    "the fastest rate found (by bisection below {hz:.1} Hz) that the model's \
+                    "the fastest rate found (by bisection below {hz} Hz) that the model's \
                      rotor pulls in to from rest: it reaches the field's speed before lagging \
                      180° electrical (torque over the safety factor; give `max_start_hz` \
                      from the datasheet to use it instead)"
