@@ -463,6 +463,19 @@ fn motor_parameters_are_checked() {
         message(curve(&[(-1.0, 0.4)])),
         "`torque_curve` point 1 (-1, 0.4) must have a frequency of 0 or more and a torque above 0"
     );
+    // A point that is not a finite number is not "not rising".
+    assert_eq!(
+        message(curve(&[(0.0, 0.4), (f64::INFINITY, 0.3)])),
+        "`torque_curve` point 2's frequency must be a finite number (got inf)"
+    );
+    assert_eq!(
+        message(curve(&[(0.0, 0.4), (1000.0, f64::NAN)])),
+        "`torque_curve` point 2's torque must be a finite number (got NaN)"
+    );
+    assert_eq!(
+        message(curve(&[(f64::NAN, f64::INFINITY)])),
+        "`torque_curve` point 1's frequency must be a finite number (got NaN)"
+    );
     // Numbers far out of range in exponent form.
     assert_eq!(
         message(curve(&[(0.0, 0.4), (1e300, 0.3), (1e299, 0.2)])),

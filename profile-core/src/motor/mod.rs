@@ -166,7 +166,8 @@ pub enum MotorError {
         /// What is expected, in words.
         expected: &'static str,
     },
-    /// The torque curve's frequencies must rise and its torques be positive.
+    /// The torque curve's points must be finite numbers, its frequencies
+    /// rise and its torques be positive.
     Curve {
         /// The offending point's index, from 0.
         index: usize,
@@ -260,6 +261,19 @@ impl fmt::Display for MotorError {
                 expected,
             } => {
                 write!(f, "`{key}` must be {expected} (got {})", Num(value))
+            }
+            MotorError::Curve { index, hz, nm } if !(hz.is_finite() && nm.is_finite()) => {
+                let (what, value) = if hz.is_finite() {
+                    ("torque", nm)
+                } else {
+                    ("frequency", hz)
+                };
+                write!(
+                    f,
+                    "`torque_curve` point {}'s {what} must be a finite number (got {})",
+                    index + 1,
+                    Num(value)
+                )
             }
             MotorError::Curve { index, hz, nm } => {
                 write!(
