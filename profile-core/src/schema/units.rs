@@ -428,8 +428,18 @@ pub fn curve_point(q: Quantity, number: &str, unit: &str, written: &str) -> Resu
     match scaled(number, exponent) {
         Some(Value::Int(v)) => Ok(v as f64),
         Some(Value::Float(v)) => Ok(v),
-        _ => Err(format!("`torque_curve` expects numbers, got `{written}`")),
+        _ => Err(not_a_point(q, &format!("`{written}`"))),
     }
+}
+
+/// The message for a torque curve's frequency (`q` a frequency) or torque
+/// that is not a number; `got` is what it is: `` `"fast"` ``, `an array`.
+pub fn not_a_point(q: Quantity, got: &str) -> String {
+    let (what, examples) = match q {
+        Quantity::Frequency => ("frequencies", "`1000`, `\"1 kHz\"`"),
+        _ => ("torques", "`0.4`, `\"40 N·cm\"`"),
+    };
+    format!("`torque_curve` {what} are numbers, with or without a unit ({examples}), got {got}")
 }
 
 #[cfg(test)]
