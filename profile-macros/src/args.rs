@@ -221,7 +221,6 @@ fn number(input: ParseStream, q: Quantity) -> syn::Result<f64> {
         Some((lit, rest)) => Ok((lit, rest)),
         None => Err(cursor.error("expected a number")),
     })?;
-    let span = lit.span();
     let mut loc = minus.to_token_stream();
     lit.to_tokens(&mut loc);
     let (text, suffix) = match Lit::new(lit.clone()) {
@@ -233,8 +232,10 @@ fn number(input: ParseStream, q: Quantity) -> syn::Result<f64> {
             return Err(syn::Error::new_spanned(loc, units::not_a_point(q, &got)));
         }
     };
-    if text.len() > MAX_DIGITS {
-        return Err(syn::Error::new(span, "expected a number"));
+    let count = text.chars().filter(char::is_ascii_digit).count();
+    if count > MAX_DIGITS {
+        let message = schema::too_many_digits(profile_core::Key::TORQUE_CURVE.name(), count);
+        return Err(syn::Error::new_spanned(loc, message));
     }
     let number = format!("{sign}{text}");
     let (unit, written) = if !suffix.is_empty() {
@@ -391,6 +392,11 @@ mod tests {
                 "torque_curve = [(0, 0.4), (1000, inf)]",
                 "`torque_curve` torques are numbers, with or without a unit (`0.4`, \
                  `\"40 N·cm\"`), got `inf`",
+            ),
+            (
+                "torque_curve = [(0, 0.4), (12345678901234567890123456789012345678901234, 0.3)]",
+                "`torque_curve` has a number of 44 digits, more than the 40 any key takes: write \
+                 it with an exponent, as in `1.5e9`",
             ),
             (
                 "fmax = 1e999",

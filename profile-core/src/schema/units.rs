@@ -239,46 +239,89 @@ pub fn with_unit(key: Key, number: &str, unit: &str, written: &str) -> Result<Va
             q.listed()
         ));
     };
-    scaled(number, exponent).ok_or_else(|| format!("`{key}` expects a number, got {got}"))
+    scaled(number, exponent).map_err(|why| match why {
+        Unscaled::NotANumber => format!("`{key}` expects a number, got {got}"),
+        Unscaled::Digits(digits) => super::too_many_digits(key.name(), digits),
+        Unscaled::TooLarge => format!(
+            "`{key}` is too large for a 64-bit float (at most about 1.8e308 {}), got {got}",
+            q.units()[0].0
+        ),
+    })
+}
+
+/// Why a number with a unit was not read.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Unscaled {
+    /// It is not a decimal number.
+    NotANumber,
+    /// It is written with this many digits, more than
+    /// [`MAX_DIGITS`](super::MAX_DIGITS).
+    Digits(usize),
+    /// It is beyond the largest `f64` once scaled.
+    TooLarge,
 }
 
 /// `number` times `10^exponent`, shifted in decimal: an integer when the
-/// result is one, else the nearest `f64`. `None` when `number` is not a
-/// decimal number or the result is not finite.
-pub fn scaled(number: &str, exponent: i32) -> Option<Value> {
+/// result is one, else the nearest `f64` (0 for an exponent far below
+/// any float's); or why it cannot be read.
+pub fn scaled(number: &str, exponent: i32) -> Result<Value, Unscaled> {
     let (negative, rest) = match number.strip_prefix('-') {
         Some(r) => (true, r),
         None => (false, number.strip_prefix('+').unwrap_or(number)),
     };
     let (mantissa, exp10) = match rest.find(['e', 'E']) {
-        Some(i) => (&rest[..i], rest[i + 1..].parse::<i32>().ok()?),
+        Some(i) => (
+            &rest[..i],
+            power(&rest[i + 1..]).ok_or(Unscaled::NotANumber)?,
+        ),
         None => (rest, 0),
     };
-    let (int, frac) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    let (int, written_frac) = mantissa.split_once('.').unwrap_or((mantissa, ""));
     // `10.0MHz` is the whole number it reads as.
-    let frac = frac.trim_end_matches('0');
+    let frac = written_frac.trim_end_matches('0');
     let digits_ok = |s: &str| s.bytes().all(|b| b.is_ascii_digit());
     if int.is_empty() && mantissa.len() < 2 || !digits_ok(int) || !digits_ok(frac) {
-        return None;
+        return Err(Unscaled::NotANumber);
     }
     if int.len() + frac.len() > super::MAX_DIGITS {
-        return None;
+        return Err(Unscaled::Digits(int.len() + written_frac.len()));
     }
     let digits = match format!("{int}{frac}") {
         d if d.is_empty() => "0".to_string(),
         d => d,
     };
-    let shift = exp10
-        .checked_add(exponent)?
-        .checked_sub(i32::try_from(frac.len()).ok()?)?;
+    // Within `power`'s bounds, far past any float's either way.
+    let shift = exp10 + exponent - frac.len() as i32;
     let sign = if negative { "-" } else { "" };
     let trimmed = digits.trim_start_matches('0');
     if (0..=38).contains(&shift) && trimmed.len() + shift as usize <= 38 {
         let whole = format!("{sign}{}{}", digits, "0".repeat(shift as usize));
-        return whole.parse::<i128>().ok().map(Value::Int);
+        return whole
+            .parse::<i128>()
+            .map(Value::Int)
+            .map_err(|_| Unscaled::NotANumber);
     }
-    let v: f64 = format!("{sign}{digits}e{shift}").parse().ok()?;
-    v.is_finite().then_some(Value::Float(v))
+    let v: f64 = format!("{sign}{digits}e{shift}")
+        .parse()
+        .map_err(|_| Unscaled::NotANumber)?;
+    if v.is_finite() {
+        Ok(Value::Float(v))
+    } else {
+        Err(Unscaled::TooLarge)
+    }
+}
+
+/// An exponent's digits (`5`, `-3`, `+40000000000`), held within a
+/// million either way: far past any float's, so that adding to it cannot
+/// overflow. `None` when it is not a whole number.
+fn power(text: &str) -> Option<i32> {
+    const FAR: i32 = 1_000_000;
+    let digits = text.strip_prefix(['+', '-']).unwrap_or(text);
+    if digits.is_empty() || !digits.bytes().all(|b| b.is_ascii_digit()) {
+        return None;
+    }
+    let far = if text.starts_with('-') { -FAR } else { FAR };
+    Some(text.parse::<i32>().map_or(far, |e| e.clamp(-FAR, FAR)))
 }
 
 /// `"64 kHz"`, `"5ms"`, `"64_000 Hz"`: a string read as a number and a
@@ -414,9 +457,9 @@ fn shift_decimal(s: &str, k: i32) -> Option<String> {
 /// `number` `unit` (`written` as the source has it, for messages), or what
 /// is wrong.
 pub fn curve_point(q: Quantity, number: &str, unit: &str, written: &str) -> Result<f64, String> {
-    let what = match q {
-        Quantity::Frequency => "frequencies",
-        _ => "torques",
+    let (what, one) = match q {
+        Quantity::Frequency => ("frequencies", "frequency"),
+        _ => ("torques", "torque"),
     };
     let Some(exponent) = q.exponent(unit) else {
         let hint = q.hint(unit);
@@ -426,8 +469,14 @@ pub fn curve_point(q: Quantity, number: &str, unit: &str, written: &str) -> Resu
         ));
     };
     match scaled(number, exponent) {
-        Some(Value::Int(v)) => Ok(v as f64),
-        Some(Value::Float(v)) => Ok(v),
+        Ok(Value::Int(v)) => Ok(v as f64),
+        Ok(Value::Float(v)) => Ok(v),
+        Err(Unscaled::Digits(digits)) => Err(super::too_many_digits("torque_curve", digits)),
+        Err(Unscaled::TooLarge) => Err(format!(
+            "`torque_curve` has a {one} too large for a 64-bit float (at most about 1.8e308 \
+             {}), got `{written}`",
+            q.units()[0].0
+        )),
         _ => Err(not_a_point(q, &format!("`{written}`"))),
     }
 }

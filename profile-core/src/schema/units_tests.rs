@@ -5,17 +5,62 @@ use super::*;
 
 #[test]
 fn units_scale_in_decimal() {
-    assert_eq!(scaled("64", 3), Some(Value::Int(64_000)));
-    assert_eq!(scaled("0.1", 6), Some(Value::Int(100_000)));
-    assert_eq!(scaled("2.5e3", 0), Some(Value::Int(2_500)));
-    assert_eq!(scaled("-1.5", 3), Some(Value::Int(-1_500)));
-    assert_eq!(scaled("2.5", -3), Some(Value::Float(0.0025)));
-    assert_eq!(scaled("5", -6), Some(Value::Float(5e-6)));
-    assert_eq!(scaled("1e400", 0), None);
-    assert_eq!(scaled("1e40000000000", 0), None);
-    assert_eq!(scaled("x", 0), None);
-    assert_eq!(scaled(".", 0), None);
-    assert_eq!(scaled("9e38", 0), Some(Value::Float(9e38)));
+    assert_eq!(scaled("64", 3), Ok(Value::Int(64_000)));
+    assert_eq!(scaled("0.1", 6), Ok(Value::Int(100_000)));
+    assert_eq!(scaled("2.5e3", 0), Ok(Value::Int(2_500)));
+    assert_eq!(scaled("-1.5", 3), Ok(Value::Int(-1_500)));
+    assert_eq!(scaled("2.5", -3), Ok(Value::Float(0.0025)));
+    assert_eq!(scaled("5", -6), Ok(Value::Float(5e-6)));
+    assert_eq!(scaled("1e400", 0), Err(Unscaled::TooLarge));
+    assert_eq!(scaled("1e306", 3), Err(Unscaled::TooLarge));
+    assert_eq!(scaled("1e40000000000", 0), Err(Unscaled::TooLarge));
+    assert_eq!(scaled("1e-40000000000", 0), Ok(Value::Float(0.0)));
+    assert_eq!(scaled("0e40000000000", 0), Ok(Value::Float(0.0)));
+    assert_eq!(scaled("x", 0), Err(Unscaled::NotANumber));
+    assert_eq!(scaled(".", 0), Err(Unscaled::NotANumber));
+    assert_eq!(scaled("1e", 0), Err(Unscaled::NotANumber));
+    assert_eq!(scaled(&"1".repeat(44), 0), Err(Unscaled::Digits(44)));
+    assert_eq!(scaled("9e38", 0), Ok(Value::Float(9e38)));
+}
+
+#[test]
+fn a_number_too_long_or_too_large_says_so() {
+    let long = "12345678901234567890123456789012345678901234";
+    assert_eq!(
+        with_unit(Key::FMAX, long, "Hz", &format!("{long} Hz")),
+        Err(
+            "`fmax` has a number of 44 digits, more than the 40 any key takes: write it with an \
+             exponent, as in `1.5e9`"
+                .into()
+        )
+    );
+    assert_eq!(
+        with_unit(Key::FMAX, "1e306", "MHz", "1e306 MHz"),
+        Err(
+            "`fmax` is too large for a 64-bit float (at most about 1.8e308 Hz), got `1e306 MHz`"
+                .into()
+        )
+    );
+    assert_eq!(
+        with_unit(Key::TAU, "5", "ms", "5 ms"),
+        Ok(Value::Float(0.005))
+    );
+    assert_eq!(
+        curve_point(Quantity::Frequency, long, "kHz", "x"),
+        Err(
+            "`torque_curve` has a number of 44 digits, more than the 40 any key takes: write it \
+             with an exponent, as in `1.5e9`"
+                .into()
+        )
+    );
+    assert_eq!(
+        curve_point(Quantity::Torque, "1e400", "Nm", "1e400 Nm"),
+        Err(
+            "`torque_curve` has a torque too large for a 64-bit float (at most about 1.8e308 \
+             Nm), got `1e400 Nm`"
+                .into()
+        )
+    );
 }
 
 #[test]
