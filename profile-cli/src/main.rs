@@ -64,7 +64,8 @@ enum Command {
     Header {
         /// The profiles file
         file: PathBuf,
-        /// Where to write the header, its folder created if missing (standard output without it)
+        /// Where to write the header, its folder created if missing (standard output without it;
+        /// a reader that closes it before the end is an error)
         #[arg(short, long, value_name = "OUT.h")]
         out: Option<PathBuf>,
         /// Declarations in OUT.h, the tables defined once in OUT.c
@@ -84,7 +85,8 @@ enum Command {
     Rust {
         /// The profiles file
         file: PathBuf,
-        /// Where to write it, its folder created if missing (standard output without it)
+        /// Where to write it, its folder created if missing (standard output without it; a
+        /// reader that closes it before the end is an error)
         #[arg(short, long, value_name = "OUT.rs")]
         out: Option<PathBuf>,
     },
@@ -193,10 +195,18 @@ fn run(command: Command) -> Result<(), Failure> {
                     note(&format!("wrote {} and {}", h.display(), c.display()));
                     Ok(())
                 }
-                (out, _) => emit(out.as_deref(), &profiles.c_header_with(&style)),
+                (out, _) => emit(
+                    out.as_deref(),
+                    &profiles.c_header_with(&style),
+                    "the C header",
+                ),
             }
         }
-        Command::Rust { file, out } => emit(out.as_deref(), &load(&file)?.rust_source()),
+        Command::Rust { file, out } => emit(
+            out.as_deref(),
+            &load(&file)?.rust_source(),
+            "the Rust modules",
+        ),
         Command::Plot { file, out } => {
             let profiles = load(&file)?;
             let written = files::write_plots(&profiles, &out)
@@ -225,8 +235,9 @@ fn load(path: &Path) -> Result<Profiles, Failure> {
     Ok(loaded?)
 }
 
-/// Writes `text` to `out`, creating its folder, or to standard output.
-fn emit(out: Option<&Path>, text: &str) -> Result<(), Failure> {
+/// Writes `text`, the file `what` names, to `out`, creating its folder, or
+/// to standard output, whole or with an error.
+fn emit(out: Option<&Path>, text: &str, what: &str) -> Result<(), Failure> {
     match out {
         Some(path) => {
             if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
@@ -238,12 +249,32 @@ fn emit(out: Option<&Path>, text: &str) -> Result<(), Failure> {
             note(&format!("wrote {}", path.display()));
             Ok(())
         }
-        None => stdout(text),
+        None => whole(text, what),
     }
 }
 
-/// Writes `text` to standard output. A reader that closed the pipe
-/// (`stepper-profiles report | head`) has all it wanted: not an error.
+/// Writes a generated file to standard output, all of it or an error. A
+/// reader that closes the pipe early (`| head`) cuts the file short, which
+/// is an error here and not for a report (see [`stdout`]). A descriptor
+/// closed before the command starts (`>&-`) is standard output no more:
+/// Rust opens `/dev/null` in its place, which takes everything, as with
+/// `> /dev/null`.
+fn whole(text: &str, what: &str) -> Result<(), Failure> {
+    let mut out = std::io::stdout().lock();
+    out.write_all(text.as_bytes())
+        .and_then(|()| out.flush())
+        .map_err(|e| {
+            let why = match e.kind() {
+                std::io::ErrorKind::BrokenPipe => "its reader closed it before the end".to_string(),
+                _ => e.to_string(),
+            };
+            Failure(format!("cannot write {what} to standard output: {why}"))
+        })
+}
+
+/// Writes `text`, a report or a note, to standard output. A reader that
+/// closed the pipe (`stepper-profiles report | head`) has all it wanted:
+/// not an error. A generated file is written by [`whole`].
 fn stdout(text: &str) -> Result<(), Failure> {
     let mut out = std::io::stdout().lock();
     match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {

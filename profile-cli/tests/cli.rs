@@ -447,6 +447,37 @@ fn a_reader_that_stops_early_is_not_an_error() {
     assert!(!text(&out.stderr).contains("panicked"));
 }
 
+/// A profiles file of one small table, quick to compute.
+const SMALL: &str = "[profiles.a]\ncurve = \"linear\"\nfmin = 100\nfmax = 1000\nlen = 10\n\
+                     timer_hz = 1_000_000\n";
+
+/// A generated file cut short is an error, unlike a report read by `head`:
+/// `header` and `rust` into a pipe its reader closed fail with a message.
+#[test]
+fn a_generated_file_that_cannot_be_written_whole_is_an_error() {
+    let dir = work_dir("closed_stdout");
+    fs::write(dir.join("small.toml"), SMALL).unwrap();
+    for (command, what) in [("header", "the C header"), ("rust", "the Rust modules")] {
+        let mut child = Command::new(BIN)
+            .args([command, "small.toml"])
+            .current_dir(&dir)
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        // Close the pipe before reading anything, as `| head -c 0` would.
+        drop(child.stdout.take());
+        let out = child.wait_with_output().unwrap();
+        assert_eq!(out.status.code(), Some(1), "{command}");
+        assert_eq!(
+            text(&out.stderr),
+            format!(
+                "cannot write {what} to standard output: its reader closed it before the end\n"
+            )
+        );
+    }
+}
+
 #[test]
 fn a_closed_standard_error_loses_the_message_but_not_the_exit_status() {
     let dir = work_dir("closed_stderr");
