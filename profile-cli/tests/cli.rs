@@ -346,6 +346,27 @@ fn after<'a>(report: &'a str, heading: &str) -> &'a str {
         .unwrap_or_else(|| panic!("no {heading:?} in {report}"))
 }
 
+/// A start far above a tiny `fmin`: the note gives the ratio in exponent
+/// form, not in 300 digits.
+#[test]
+fn report_writes_a_huge_ratio_in_exponent_form() {
+    let report = report_of(
+        "tiny_fmin",
+        "[profiles.tiny]\ncurve = \"linear\"\nfmin = 1e-300\nfmax = 1000\n\
+         accel = 1_000_000\ntimer_hz = 1_000_000\n",
+    );
+    let note = report
+        .lines()
+        .find(|l| l.starts_with("note: tiny:"))
+        .unwrap_or_else(|| panic!("{report}"));
+    assert!(
+        note.starts_with(
+            "note: tiny: the first entry runs at 666.7 Hz, 6.66667e302 times `fmin` = 1e-300 Hz:"
+        ),
+        "{note}"
+    );
+}
+
 #[test]
 fn report_labels_the_windings_curve_as_the_checked_one_when_it_is_the_only_one() {
     let report = report_of("report_windings_only", WINDINGS_ONLY);

@@ -291,20 +291,20 @@ pub fn start_note(table: &Generated) -> Option<String> {
         return None;
     }
     let fmin_text = crate::schema::units::show(crate::base::key::Key::FMIN, fmin);
+    let (start, ratio) = (Fixed(start, 1), Fixed(start / fmin, 1));
     let why = match t.spec.discretization {
         Discretization::Exact => format!(
-            "the curve starts at `fmin` but covers the first step at {start:.1} Hz on \
+            "the curve starts at `fmin` but covers the first step at {start} Hz on \
              average (`discretization = exact`); `discretization = left_endpoint` starts \
              at `fmin` itself"
         ),
         d => format!(
-            "the curve is already at {start:.1} Hz where the first step begins \
+            "the curve is already at {start} Hz where the first step begins \
              (`discretization = {}`)",
             d.name()
         ),
     };
     Some(format!(
-        "the first entry runs at {start:.1} Hz, {:.1} times `fmin` = {fmin_text}: {why}.",
-        start / fmin
+        "the first entry runs at {start} Hz, {ratio} times `fmin` = {fmin_text}: {why}."
     ))
 }
