@@ -519,6 +519,15 @@ fn the_simulation_refuses_bad_input() {
             "dt {dt}, settle {settle}"
         );
     }
+    assert_eq!(
+        SimError::Options {
+            dt_s: -1e300,
+            settle_s: 0.5
+        }
+        .to_string(),
+        "the integration step must be a finite number of seconds above 0 and the settle time \
+         one of 0 or more (got dt_s = -1e300, settle_s = 0.5)"
+    );
     // Too many steps: refused before running, with how many it needed.
     let e = run(&motor, &spec, &table, 1e-12, 0.0).unwrap_err();
     assert!(
