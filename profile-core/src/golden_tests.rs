@@ -71,6 +71,7 @@ fn spacing_alone_is_no_change() {
         + "\r\n";
     fs::write(&path, respaced).unwrap();
     assert_eq!(compare_as(&path, &table, false), Ok(()));
+    let _ = fs::remove_dir_all(path.parent().unwrap());
 }
 
 #[test]
@@ -144,6 +145,7 @@ fn a_line_that_changed_beside_the_same_entries_is_named() {
             path.display()
         )
     );
+    let _ = fs::remove_dir_all(path.parent().unwrap());
 }
 
 #[test]
@@ -163,4 +165,5 @@ fn a_failed_bless_leaves_nothing_behind() {
         .map(|e| e.unwrap().file_name())
         .collect();
     assert_eq!(left, ["ramp.txt"]);
+    let _ = fs::remove_dir_all(&dir);
 }
