@@ -206,6 +206,35 @@ fn an_aggressive_ramp_fails_the_check() {
         "the motor cannot follow step 7 at 1757.5 Hz: it needs 0.1791 N·m but gives \
          0.1746 N·m after the safety factor, short by 0.0045 N·m"
     );
+    // Figures far beyond any motor's (a `damping = 1e300`) read in
+    // exponent form, not in 300 digits.
+    let huge = MotorError::Torque {
+        step: 0,
+        hz: 303.27,
+        needed_nm: 9.528640138276596e300,
+        available_nm: 0.25863,
+        beyond_curve: false,
+        from_windings: None,
+    };
+    assert_eq!(
+        huge.to_string(),
+        "the motor cannot start at 303.3 Hz: it needs 9.52864e300 N·m but gives 0.2586 N·m \
+         after the safety factor, short by 9.52864e300 N·m"
+    );
+    let start = MotorError::Start {
+        hz: 1e20,
+        limit: StartLimit::Corrected {
+            hz: 1e19,
+            max_start_hz: 1e300,
+            factor: 1e281,
+        },
+    };
+    assert_eq!(
+        start.to_string(),
+        "the motor cannot start at 1e20 Hz with its load: it starts at 1e19 Hz at most, \
+         `max_start_hz = 1e300` (without load) over sqrt(1 + load_inertia / rotor_inertia) = \
+         1e281"
+    );
     // Beyond the curve's last point the motor gives nothing, and says so.
     let mut short = motor;
     short.torque_curve = TorqueCurve::new(&CURVE[..3]);
@@ -434,6 +463,24 @@ fn motor_parameters_are_checked() {
         message(curve(&[(-1.0, 0.4)])),
         "`torque_curve` point 1 (-1, 0.4) must have a frequency of 0 or more and a torque above 0"
     );
+    // A point that is not a finite number is not "not rising".
+    assert_eq!(
+        message(curve(&[(0.0, 0.4), (f64::INFINITY, 0.3)])),
+        "`torque_curve` point 2's frequency must be a finite number (got inf)"
+    );
+    assert_eq!(
+        message(curve(&[(0.0, 0.4), (1000.0, f64::NAN)])),
+        "`torque_curve` point 2's torque must be a finite number (got NaN)"
+    );
+    assert_eq!(
+        message(curve(&[(f64::NAN, f64::INFINITY)])),
+        "`torque_curve` point 1's frequency must be a finite number (got NaN)"
+    );
+    // Numbers far out of range in exponent form.
+    assert_eq!(
+        message(curve(&[(0.0, 0.4), (1e300, 0.3), (1e299, 0.2)])),
+        "`torque_curve` point 3 (1e299, 0.2) must have a higher frequency than the point before it and a torque above 0"
+    );
     let e = curve(&[(0.0, 0.4), (500.0, 0.3)])
         .validate()
         .map_err(|e| e.key());
@@ -472,6 +519,15 @@ fn the_simulation_refuses_bad_input() {
             "dt {dt}, settle {settle}"
         );
     }
+    assert_eq!(
+        SimError::Options {
+            dt_s: -1e300,
+            settle_s: 0.5
+        }
+        .to_string(),
+        "the integration step must be a finite number of seconds above 0 and the settle time \
+         one of 0 or more (got dt_s = -1e300, settle_s = 0.5)"
+    );
     // Too many steps: refused before running, with how many it needed.
     let e = run(&motor, &spec, &table, 1e-12, 0.0).unwrap_err();
     assert!(

@@ -68,6 +68,15 @@ const REQUIRED: &[&str] = &[
     "segments_period_overflow",
     "bad_name_errno",
     "file_too_large",
+    // Messages that said too little or too much: a unit of another scale
+    // suggested, a point's mistake on the whole curve, a point at infinity
+    // "not rising", a number with a unit "not a number", 300 digits.
+    "unit_prefix_not_accepted",
+    "unit_prefix_torque",
+    "motor_curve_point_not_number",
+    "motor_curve_not_finite",
+    "number_too_many_digits_unit",
+    "motor_damping_huge",
 ];
 
 /// The file named in messages, as `include_profiles!("profiles.toml")` names it.

@@ -66,7 +66,8 @@ enum Command {
     Header {
         /// The profiles file
         file: PathBuf,
-        /// Where to write the header, its folder created if missing (standard output without it)
+        /// Where to write the header, its folder created if missing (standard output without it;
+        /// a reader that closes it before the end is an error)
         #[arg(short, long, value_name = "OUT.h")]
         out: Option<PathBuf>,
         /// Declarations in OUT.h, the tables defined once in OUT.c
@@ -94,7 +95,8 @@ enum Command {
     Rust {
         /// The profiles file
         file: PathBuf,
-        /// Where to write it, its folder created if missing (standard output without it)
+        /// Where to write it, its folder created if missing (standard output without it; a
+        /// reader that closes it before the end is an error)
         #[arg(short, long, value_name = "OUT.rs")]
         out: Option<PathBuf>,
     },
@@ -227,12 +229,16 @@ fn run(command: Command) -> Result<(), Failure> {
                 (Some(out), false) => {
                     let (_, name) = folder_and_name(&out)?;
                     let header = profiles.c_header_named(&name.to_string_lossy(), &style);
-                    emit(Some(&out), &header)
+                    emit(Some(&out), &header, "the C header")
                 }
-                (None, _) => stdout(&profiles.c_header_with(&style)),
+                (None, _) => whole(&profiles.c_header_with(&style), "the C header"),
             }
         }
-        Command::Rust { file, out } => emit(out.as_deref(), &load(&file)?.rust_source()),
+        Command::Rust { file, out } => emit(
+            out.as_deref(),
+            &load(&file)?.rust_source(),
+            "the Rust modules",
+        ),
         Command::Plot { file, out } => {
             let profiles = load(&file)?;
             let mut files = Staging::new(&out)?;
@@ -263,8 +269,9 @@ fn load(path: &Path) -> Result<Profiles, Failure> {
     Ok(loaded?)
 }
 
-/// Writes `text` to `out`, creating its folder, or to standard output.
-fn emit(out: Option<&Path>, text: &str) -> Result<(), Failure> {
+/// Writes `text`, the file `what` names, to `out`, creating its folder, or
+/// to standard output, whole or with an error.
+fn emit(out: Option<&Path>, text: &str, what: &str) -> Result<(), Failure> {
     match out {
         Some(path) => {
             let (dir, name) = folder_and_name(path)?;
@@ -274,7 +281,7 @@ fn emit(out: Option<&Path>, text: &str) -> Result<(), Failure> {
             note(&format!("wrote {}", path.display()));
             Ok(())
         }
-        None => stdout(text),
+        None => whole(text, what),
     }
 }
 
@@ -289,8 +296,28 @@ fn folder_and_name(path: &Path) -> Result<(&Path, &std::ffi::OsStr), Failure> {
     }
 }
 
-/// Writes `text` to standard output. A reader that closed the pipe
-/// (`stepper-profiles report | head`) has all it wanted: not an error.
+/// Writes a generated file to standard output, all of it or an error. A
+/// reader that closes the pipe early (`| head`) cuts the file short, which
+/// is an error here and not for a report (see [`stdout`]). A descriptor
+/// closed before the command starts (`>&-`) is standard output no more:
+/// Rust opens `/dev/null` in its place, which takes everything, as with
+/// `> /dev/null`.
+fn whole(text: &str, what: &str) -> Result<(), Failure> {
+    let mut out = std::io::stdout().lock();
+    out.write_all(text.as_bytes())
+        .and_then(|()| out.flush())
+        .map_err(|e| {
+            let why = match e.kind() {
+                std::io::ErrorKind::BrokenPipe => "its reader closed it before the end".to_string(),
+                _ => e.to_string(),
+            };
+            Failure(format!("cannot write {what} to standard output: {why}"))
+        })
+}
+
+/// Writes `text`, a report or a note, to standard output. A reader that
+/// closed the pipe (`stepper-profiles report | head`) has all it wanted:
+/// not an error. A generated file is written by [`whole`].
 fn stdout(text: &str) -> Result<(), Failure> {
     let mut out = std::io::stdout().lock();
     match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {

@@ -470,6 +470,27 @@ fn after<'a>(report: &'a str, heading: &str) -> &'a str {
         .unwrap_or_else(|| panic!("no {heading:?} in {report}"))
 }
 
+/// A start far above a tiny `fmin`: the note gives the ratio in exponent
+/// form, not in 300 digits.
+#[test]
+fn report_writes_a_huge_ratio_in_exponent_form() {
+    let report = report_of(
+        "tiny_fmin",
+        "[profiles.tiny]\ncurve = \"linear\"\nfmin = 1e-300\nfmax = 1000\n\
+         accel = 1_000_000\ntimer_hz = 1_000_000\n",
+    );
+    let note = report
+        .lines()
+        .find(|l| l.starts_with("note: tiny:"))
+        .unwrap_or_else(|| panic!("{report}"));
+    assert!(
+        note.starts_with(
+            "note: tiny: the first entry runs at 666.7 Hz, 6.66667e302 times `fmin` = 1e-300 Hz:"
+        ),
+        "{note}"
+    );
+}
+
 #[test]
 fn report_labels_the_windings_curve_as_the_checked_one_when_it_is_the_only_one() {
     let report = report_of("report_windings_only", WINDINGS_ONLY);
@@ -575,6 +596,37 @@ fn a_reader_that_stops_early_is_not_an_error() {
     let out = child.wait_with_output().unwrap();
     assert!(out.status.success(), "{}", text(&out.stderr));
     assert!(!text(&out.stderr).contains("panicked"));
+}
+
+/// A profiles file of one small table, quick to compute.
+const SMALL: &str = "[profiles.a]\ncurve = \"linear\"\nfmin = 100\nfmax = 1000\nlen = 10\n\
+                     timer_hz = 1_000_000\n";
+
+/// A generated file cut short is an error, unlike a report read by `head`:
+/// `header` and `rust` into a pipe its reader closed fail with a message.
+#[test]
+fn a_generated_file_that_cannot_be_written_whole_is_an_error() {
+    let dir = work_dir("closed_stdout");
+    fs::write(dir.join("small.toml"), SMALL).unwrap();
+    for (command, what) in [("header", "the C header"), ("rust", "the Rust modules")] {
+        let mut child = Command::new(BIN)
+            .args([command, "small.toml"])
+            .current_dir(&dir)
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        // Close the pipe before reading anything, as `| head -c 0` would.
+        drop(child.stdout.take());
+        let out = child.wait_with_output().unwrap();
+        assert_eq!(out.status.code(), Some(1), "{command}");
+        assert_eq!(
+            text(&out.stderr),
+            format!(
+                "cannot write {what} to standard output: its reader closed it before the end\n"
+            )
+        );
+    }
 }
 
 #[test]

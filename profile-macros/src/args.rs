@@ -204,25 +204,38 @@ fn parse_points(input: ParseStream, key: &Ident) -> syn::Result<(Value, Loc, Vec
 }
 
 /// A number literal, possibly negative, as `f64`, in the base unit of `q`
-/// (a frequency or a torque), which it may carry, with or without a space:
-/// `1kHz`, `40 Ncm`.
+/// (a frequency or a torque), which it may carry, with or without a space
+/// (`1kHz`, `40 Ncm`), or a string of both, as in a profiles file
+/// (`"40 N·cm"`). A word or a literal that is no number is an error at it.
 fn number(input: ParseStream, q: Quantity) -> syn::Result<f64> {
+    if input.peek(Ident) {
+        let word: Ident = input.parse()?;
+        return Err(syn::Error::new(
+            word.span(),
+            units::not_a_point(q, &format!("`{word}`")),
+        ));
+    }
     let minus: Option<Token![-]> = input.parse()?;
     let sign = if minus.is_some() { "-" } else { "" };
     let lit = input.step(|cursor| match cursor.literal() {
         Some((lit, rest)) => Ok((lit, rest)),
         None => Err(cursor.error("expected a number")),
     })?;
-    let span = lit.span();
     let mut loc = minus.to_token_stream();
     lit.to_tokens(&mut loc);
-    let (text, suffix) = match Lit::new(lit) {
+    let (text, suffix) = match Lit::new(lit.clone()) {
         Lit::Int(i) => (i.base10_digits().to_string(), i.suffix().to_string()),
         Lit::Float(f) => (f.base10_digits().to_string(), f.suffix().to_string()),
-        _ => return Err(syn::Error::new(span, "expected a number")),
+        Lit::Str(s) if minus.is_none() => return quoted_point(q, &s, loc),
+        _ => {
+            let got = format!("`{sign}{lit}`");
+            return Err(syn::Error::new_spanned(loc, units::not_a_point(q, &got)));
+        }
     };
-    if text.len() > MAX_DIGITS {
-        return Err(syn::Error::new(span, "expected a number"));
+    let count = text.chars().filter(char::is_ascii_digit).count();
+    if count > MAX_DIGITS {
+        let message = schema::too_many_digits(profile_core::Key::TORQUE_CURVE.name(), count);
+        return Err(syn::Error::new_spanned(loc, message));
     }
     let number = format!("{sign}{text}");
     let (unit, written) = if !suffix.is_empty() {
@@ -235,6 +248,17 @@ fn number(input: ParseStream, q: Quantity) -> syn::Result<f64> {
         (q.units()[0].0.to_string(), number.clone())
     };
     units::curve_point(q, &number, &unit, &written).map_err(|m| syn::Error::new_spanned(loc, m))
+}
+
+/// A torque curve's frequency or torque written as a string with its unit,
+/// `"1 kHz"`, `"40 N·cm"`, read as a profiles file reads it.
+fn quoted_point(q: Quantity, s: &syn::LitStr, loc: Loc) -> syn::Result<f64> {
+    let text = s.value();
+    let point = match units::split(&text) {
+        Some((number, unit)) => units::curve_point(q, &number.replace('_', ""), unit, text.trim()),
+        None => Err(units::not_a_point(q, &format!("`{}`", s.token()))),
+    };
+    point.map_err(|m| syn::Error::new_spanned(loc, m))
 }
 
 /// Parses the macro's input into arguments, or a syntax error.
@@ -312,6 +336,16 @@ mod tests {
         );
         assert_eq!(units[1].value_loc.to_string(), "5 ms");
         assert!(parse(quote::quote!(torque_curve = [0, 0.4])).is_err());
+        // A string with a unit, as in a profiles file.
+        let curve = parse(quote::quote!(
+            torque_curve = [(0, "40 N·cm"), ("1 kHz", 0.3)]
+        ))
+        .unwrap();
+        assert_eq!(
+            curve[0].value,
+            Value::Points(vec![(0.0, 0.4), (1000.0, 0.3)])
+        );
+        assert_eq!(curve[0].parts.len(), 2);
     }
 
     #[test]
@@ -348,6 +382,21 @@ mod tests {
             (
                 "torque_curve = [(1, 0.4, Nm)]",
                 "`torque_curve` expects a list of number pairs, such as `[(0, 0.4), (1000, 0.3)]`",
+            ),
+            (
+                "torque_curve = [(0, 0.4), (\"fast\", 0.3)]",
+                "`torque_curve` frequencies are numbers, with or without a unit (`1000`, \
+                 `\"1 kHz\"`), got `\"fast\"`",
+            ),
+            (
+                "torque_curve = [(0, 0.4), (1000, inf)]",
+                "`torque_curve` torques are numbers, with or without a unit (`0.4`, \
+                 `\"40 N·cm\"`), got `inf`",
+            ),
+            (
+                "torque_curve = [(0, 0.4), (12345678901234567890123456789012345678901234, 0.3)]",
+                "`torque_curve` has a number of 44 digits, more than the 40 any key takes: write \
+                 it with an exponent, as in `1.5e9`",
             ),
             (
                 "fmax = 1e999",

@@ -95,7 +95,8 @@ mod include;
 /// `ohm` or `mohm`, inductance `H`, `mH` or `uH`, current `A` or `mA`,
 /// voltage `V`, `step_angle` `deg`; a string takes the symbols too
 /// (`"68 g·cm²"`, `"0.5 Ω"`, `"40 N·cm"`, `"1.8°"`), and `torque_curve`'s
-/// points take frequency and torque units (`[(0, 40Ncm), (1kHz, 33Ncm)]`).
+/// points take frequency and torque units (`[(0, 40Ncm), (1kHz, 33Ncm)]`,
+/// or in strings, `("1 kHz", "33 N·cm")`).
 /// Any other suffix, a type suffix such as `500u32` included, is an error.
 /// Every mistake is a compile error at the offending key or value, saying
 /// what is expected.

@@ -262,22 +262,37 @@ impl fmt::Display for Num {
     }
 }
 
+/// A figure to a fixed number of decimals (`0.1799` N·m, `1757.5` Hz), as
+/// [`Significant`] where those decimals would read 0 or the number is
+/// 1e16 or more (`0.000003`, `2.00152e300`): no message spells out three
+/// hundred digits.
+pub(crate) struct Fixed(pub(crate) f64, pub(crate) usize);
+
+impl fmt::Display for Fixed {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let (v, decimals) = (self.0, self.1);
+        let smallest = libm::pow(10.0, -(decimals as f64));
+        if v == 0.0 || (smallest..1e16).contains(&libm::fabs(v)) {
+            write!(f, "{v:.decimals$}")
+        } else {
+            Significant(v).fmt(f)
+        }
+    }
+}
+
 /// A frequency to two decimals (`152.59`), or to six significant digits
 /// where two decimals would read 0 (`0.00232831`).
 struct Hundredths(f64);
 
 impl fmt::Display for Hundredths {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if libm::fabs(self.0) >= 0.01 || self.0 == 0.0 {
-            write!(f, "{:.2}", self.0)
-        } else {
-            Significant(self.0).fmt(f)
-        }
+        Fixed(self.0, 2).fmt(f)
     }
 }
 
-/// A number with at most six significant digits, trailing zeros dropped.
-struct Significant(f64);
+/// A number with at most six significant digits, trailing zeros dropped;
+/// in exponent form below 1e-6 and from 1e16 (`1.33333e300`), as [`Num`].
+pub(crate) struct Significant(pub(crate) f64);
 
 impl fmt::Display for Significant {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
@@ -285,20 +300,29 @@ impl fmt::Display for Significant {
         if v == 0.0 || !v.is_finite() {
             return write!(f, "{v}");
         }
-        let digits = 5 - libm::floor(libm::log10(libm::fabs(v))) as i32;
-        let decimals = digits.clamp(0, 17) as usize;
+        let exponent = !(1e-6..1e16).contains(&libm::fabs(v));
         let mut buf = [0u8; 64];
         let mut w = Buf {
             buf: &mut buf,
             len: 0,
         };
-        let _ = fmt::write(&mut w, format_args!("{v:.decimals$}"));
-        let len = w.len;
-        let mut text = core::str::from_utf8(&buf[..len]).unwrap_or("");
-        if text.contains('.') {
-            text = text.trim_end_matches('0').trim_end_matches('.');
+        if exponent {
+            let _ = fmt::write(&mut w, format_args!("{v:.5e}"));
+        } else {
+            let digits = 5 - libm::floor(libm::log10(libm::fabs(v))) as i32;
+            let decimals = digits.clamp(0, 17) as usize;
+            let _ = fmt::write(&mut w, format_args!("{v:.decimals$}"));
         }
-        f.write_str(text)
+        let len = w.len;
+        let text = core::str::from_utf8(&buf[..len]).unwrap_or("");
+        let (mantissa, power) = text.split_at(text.find('e').unwrap_or(text.len()));
+        let mantissa = if mantissa.contains('.') {
+            mantissa.trim_end_matches('0').trim_end_matches('.')
+        } else {
+            mantissa
+        };
+        f.write_str(mantissa)?;
+        f.write_str(power)
     }
 }
 
@@ -497,7 +521,8 @@ impl Error {
             ),
             Error::PeriodZero { index, highest_hz } => write!(
                 f,
-                "entry {index} rounds to 0 ticks; the timer resolves step frequencies up to {highest_hz:.0} Hz"
+                "entry {index} rounds to 0 ticks; the timer resolves step frequencies up to {} Hz",
+                Fixed(highest_hz, 0)
             ),
             Error::BufferLength { expected, got } => write!(
                 f,

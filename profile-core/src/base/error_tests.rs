@@ -309,3 +309,37 @@ fn errors_blame_the_key_to_point_at() {
         None
     );
 }
+
+/// Figures far out of any motor's range read in exponent form, not in
+/// hundreds of digits; in range, as before.
+#[test]
+fn numbers_in_messages_stay_short() {
+    let show = |v: f64| Significant(v).to_string();
+    assert_eq!(show(-40.0 / 3.0), "-13.3333");
+    assert_eq!(show(0.00232831), "0.00232831");
+    assert_eq!(show(-4e300 / 3.0), "-1.33333e300");
+    assert_eq!(show(1e300), "1e300");
+    assert_eq!(show(2.5e-9), "2.5e-9");
+    assert_eq!(show(1.0 / 3e20), "3.33333e-21");
+    let fixed = |v: f64, decimals: usize| Fixed(v, decimals).to_string();
+    assert_eq!(fixed(0.17994, 4), "0.1799");
+    assert_eq!(fixed(1757.46, 1), "1757.5");
+    assert_eq!(fixed(0.0, 4), "0.0000");
+    assert_eq!(fixed(2.00152437155313e300, 4), "2.00152e300");
+    assert_eq!(fixed(-1e20, 1), "-1e20");
+    assert_eq!(fixed(3e-6, 4), "0.000003");
+    assert_eq!(fixed(1e-300, 4), "1e-300");
+    assert_eq!(fixed(f64::INFINITY, 4), "inf");
+    let message = Error::TooSmall {
+        key: Key::SHAPE,
+        value: -2e300,
+        min: -4e300 / 3.0,
+        why: ", that is -accel / (f1 - fmin), for a concave start",
+    }
+    .to_string();
+    assert_eq!(
+        message,
+        "`shape` must be greater than -1.33333e300, that is -accel / (f1 - fmin), for a \
+         concave start (got -2e300)"
+    );
+}

@@ -102,16 +102,20 @@ type AtElement = (usize, String);
 
 /// `[[x, y], ...]` as number pairs, if that is what the array holds; a
 /// frequency `x` or a torque `y` may be a string with a unit, `"1.5 kHz"`,
-/// `"40 N·cm"`. A unit the pair does not take is an error at its element.
+/// `"40 N·cm"`. A pair holding what is not a number (`["fast", 0.3]`), or
+/// a unit it does not take, is an error at its element.
 fn points(items: &[toml::Value]) -> Result<Option<Vec<(f64, f64)>>, AtElement> {
     let number = |v: &toml::Value, q: Quantity| match v {
-        toml::Value::Integer(i) => Ok(Some(*i as f64)),
-        toml::Value::Float(f) => Ok(Some(*f)),
+        toml::Value::Integer(i) => Ok(*i as f64),
+        toml::Value::Float(f) => Ok(*f),
         toml::Value::String(s) => match units::split(s) {
-            Some((n, unit)) => units::curve_point(q, &n.replace('_', ""), unit, s.trim()).map(Some),
-            None => Ok(None),
+            Some((n, unit)) => units::curve_point(q, &n.replace('_', ""), unit, s.trim()),
+            None => Err(units::not_a_point(q, &format!("`{s:?}`"))),
         },
-        _ => Ok(None),
+        toml::Value::Boolean(b) => Err(units::not_a_point(q, &format!("`{b}`"))),
+        toml::Value::Datetime(d) => Err(units::not_a_point(q, &format!("`{d}`"))),
+        toml::Value::Array(_) => Err(units::not_a_point(q, "an array")),
+        toml::Value::Table(_) => Err(units::not_a_point(q, "a table")),
     };
     let mut points = Vec::new();
     for (part, item) in items.iter().enumerate() {
@@ -120,10 +124,7 @@ fn points(items: &[toml::Value]) -> Result<Option<Vec<(f64, f64)>>, AtElement> {
         };
         let x = number(x, Quantity::Frequency).map_err(|m| (part, m))?;
         let y = number(y, Quantity::Torque).map_err(|m| (part, m))?;
-        match (x, y) {
-            (Some(x), Some(y)) => points.push((x, y)),
-            _ => return Ok(None),
-        }
+        points.push((x, y));
     }
     Ok(Some(points))
 }

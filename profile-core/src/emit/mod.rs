@@ -6,6 +6,7 @@ use std::string::{String, ToString};
 use std::vec;
 use std::vec::Vec;
 
+use crate::base::error::Fixed;
 use crate::base::modes::Discretization;
 use crate::motor::{Motor, TorqueFigures};
 use crate::pipeline::Compiled;
@@ -220,8 +221,8 @@ pub fn doc_lines(table: &Generated) -> std::vec::Vec<String> {
             lines.push(format!(
                 "{} entries, {} to {} ticks ({:.2} Hz to {:.2} Hz), {} ticks in all ({:.6} s); \
                  step edges within {:.3} tick of the unrounded curve, drift {:.3} tick; \
-                 acceleration up to {:.0} Hz/s between windows long enough that rounding reads \
-                 under 5% of the curve's acceleration (the curve's own peak: {:.0} Hz/s).",
+                 acceleration up to {} Hz/s between windows long enough that rounding reads \
+                 under 5% of the curve's acceleration (the curve's own peak: {} Hz/s).",
                 f.len,
                 f.first_ticks,
                 f.last_ticks,
@@ -231,8 +232,8 @@ pub fn doc_lines(table: &Generated) -> std::vec::Vec<String> {
                 f.duration_s,
                 f.max_edge_error_ticks,
                 f.total_error_ticks,
-                f.max_accel_hz_s,
-                f.curve_max_accel_hz_s
+                Fixed(f.max_accel_hz_s, 0),
+                Fixed(f.curve_max_accel_hz_s, 0)
             ));
             if let Some(note) = start_note(table) {
                 lines.push(String::new());
@@ -289,20 +290,20 @@ pub fn start_note(table: &Generated) -> Option<String> {
         return None;
     }
     let fmin_text = crate::schema::units::show(crate::base::key::Key::FMIN, fmin);
+    let (start, ratio) = (Fixed(start, 1), Fixed(start / fmin, 1));
     let why = match t.spec.discretization {
         Discretization::Exact => format!(
-            "the curve starts at `fmin` but covers the first step at {start:.1} Hz on \
+            "the curve starts at `fmin` but covers the first step at {start} Hz on \
              average (`discretization = exact`); `discretization = left_endpoint` starts \
              at `fmin` itself"
         ),
         d => format!(
-            "the curve is already at {start:.1} Hz where the first step begins \
+            "the curve is already at {start} Hz where the first step begins \
              (`discretization = {}`)",
             d.name()
         ),
     };
     Some(format!(
-        "the first entry runs at {start:.1} Hz, {:.1} times `fmin` = {fmin_text}: {why}.",
-        start / fmin
+        "the first entry runs at {start} Hz, {ratio} times `fmin` = {fmin_text}: {why}."
     ))
 }

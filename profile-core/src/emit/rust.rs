@@ -11,6 +11,7 @@ use std::string::String;
 use std::vec::Vec;
 
 use super::{Constant, Number, Profile, constants, doc_lines};
+use crate::base::error::Fixed;
 use crate::base::timer::Word;
 use crate::table::owned::Generated;
 
@@ -95,9 +96,13 @@ pub fn module(profile: &Profile) -> TokenStream {
     if let Some(t) = &profile.torque {
         docs.push(String::new());
         docs.push(doc(&format!(
-            "Motor: the smallest torque margin is {:.4} N·m at step {} ({:.1} Hz): {:.4} N·m \
-             needed of {:.4} N·m available.",
-            t.min_margin_nm, t.step, t.hz, t.needed_nm, t.available_nm
+            "Motor: the smallest torque margin is {} N·m at step {} ({} Hz): {} N·m \
+             needed of {} N·m available.",
+            Fixed(t.min_margin_nm, 4),
+            t.step,
+            Fixed(t.hz, 1),
+            Fixed(t.needed_nm, 4),
+            Fixed(t.available_nm, 4)
         )));
     }
     let name = Ident::new(&profile.name, Span::call_site());

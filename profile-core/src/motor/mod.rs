@@ -44,7 +44,7 @@ pub use windings::{Drive, Windings};
 
 use core::fmt;
 
-use crate::base::error::Num;
+use crate::base::error::{Fixed, Num};
 use crate::base::key::Key;
 
 /// The largest [`Motor::damping_ratio`]: critical damping. A motor's own
@@ -177,7 +177,8 @@ pub enum MotorError {
         /// What is expected, in words.
         expected: &'static str,
     },
-    /// The torque curve's frequencies must rise and its torques be positive.
+    /// The torque curve's points must be finite numbers, its frequencies
+    /// rise and its torques be positive.
     Curve {
         /// The offending point's index, from 0.
         index: usize,
@@ -276,11 +277,26 @@ impl fmt::Display for MotorError {
             } => {
                 write!(f, "`{key}` must be {expected} (got {})", Num(value))
             }
+            MotorError::Curve { index, hz, nm } if !(hz.is_finite() && nm.is_finite()) => {
+                let (what, value) = if hz.is_finite() {
+                    ("torque", nm)
+                } else {
+                    ("frequency", hz)
+                };
+                write!(
+                    f,
+                    "`torque_curve` point {}'s {what} must be a finite number (got {})",
+                    index + 1,
+                    Num(value)
+                )
+            }
             MotorError::Curve { index, hz, nm } => {
                 write!(
                     f,
-                    "`torque_curve` point {} ({hz}, {nm}) must have ",
-                    index + 1
+                    "`torque_curve` point {} ({}, {}) must have ",
+                    index + 1,
+                    Num(hz),
+                    Num(nm)
                 )?;
                 f.write_str(if index == 0 {
                     "a frequency of 0 or more"
@@ -297,15 +313,18 @@ impl fmt::Display for MotorError {
                 beyond_curve,
                 from_windings,
             } => {
+                let hz = Fixed(hz, 1);
                 if step == 0 {
-                    write!(f, "the motor cannot start at {hz:.1} Hz")?;
+                    write!(f, "the motor cannot start at {hz} Hz")?;
                 } else {
-                    write!(f, "the motor cannot follow step {step} at {hz:.1} Hz")?;
+                    write!(f, "the motor cannot follow step {step} at {hz} Hz")?;
                 }
                 write!(
                     f,
-                    ": it needs {needed_nm:.4} N·m but gives {available_nm:.4} N·m after the safety factor, short by {:.4} N·m",
-                    needed_nm - available_nm
+                    ": it needs {} N·m but gives {} N·m after the safety factor, short by {} N·m",
+                    Fixed(needed_nm, 4),
+                    Fixed(available_nm, 4),
+                    Fixed(needed_nm - available_nm, 4)
                 )?;
                 if beyond_curve {
                     f.write_str(" (the frequency is beyond the last point of `torque_curve`)")?;

@@ -94,6 +94,7 @@
 use core::f64::consts::{PI, TAU};
 use core::fmt;
 
+use crate::base::error::Num;
 use crate::motor::{Motor, MotorError};
 use crate::table::spec::Spec;
 
@@ -220,7 +221,9 @@ impl fmt::Display for SimError {
             }
             SimError::Options { dt_s, settle_s } => write!(
                 f,
-                "the integration step must be a finite number of seconds above 0 and the settle time one of 0 or more (got dt_s = {dt_s}, settle_s = {settle_s})"
+                "the integration step must be a finite number of seconds above 0 and the settle time one of 0 or more (got dt_s = {}, settle_s = {})",
+                Num(dt_s),
+                Num(settle_s)
             ),
             SimError::TooManySteps {
                 needed,

@@ -4,6 +4,7 @@
 
 use core::fmt;
 
+use crate::base::error::{Fixed, Num};
 use crate::motor::simulate::{Rotor, natural_period, stable_step, step_for, substeps};
 use crate::motor::{Motor, MotorError};
 
@@ -366,8 +367,9 @@ pub(super) fn describe(error: &MotorError, f: &mut fmt::Formatter<'_>) -> fmt::R
         } => {
             write!(
                 f,
-                "the motor cannot start on this ramp with its load: from rest at {hz:.1} Hz the \
-                 model's rotor slips before pulse {pulse}, before it reaches the field's speed"
+                "the motor cannot start on this ramp with its load: from rest at {hz} Hz the \
+                 model's rotor slips before pulse {pulse}, before it reaches the field's speed",
+                hz = Fixed(hz, 1)
             )?;
             advise(remedies, f)
         }
@@ -388,17 +390,19 @@ pub(super) fn describe(error: &MotorError, f: &mut fmt::Formatter<'_>) -> fmt::R
             } else {
                 write!(
                     f,
-                    "when the field stops at {hz:.1} Hz the model's rotor runs past it by half \
-                     an electrical turn"
+                    "when the field stops at {hz} Hz the model's rotor runs past it by half \
+                     an electrical turn",
+                    hz = Fixed(hz, 1)
                 )?;
             }
             advise(remedies, f)
         }
         MotorError::Start { hz, limit } => {
+            let hz = Fixed(hz, 1);
             write!(
                 f,
-                "the motor cannot start at {hz:.1} Hz with its load: it starts at {:.1} Hz at most, ",
-                limit.hz()
+                "the motor cannot start at {hz} Hz with its load: it starts at {} Hz at most, ",
+                Fixed(limit.hz(), 1)
             )?;
             match limit {
                 StartLimit::Corrected {
@@ -407,12 +411,14 @@ pub(super) fn describe(error: &MotorError, f: &mut fmt::Formatter<'_>) -> fmt::R
                     ..
                 } => write!(
                     f,
-                    "`max_start_hz = {max_start_hz}` (without load) over \
-                     sqrt(1 + load_inertia / rotor_inertia) = {factor:.3}"
+                    "`max_start_hz = {}` (without load) over \
+                     sqrt(1 + load_inertia / rotor_inertia) = {}",
+                    Num(max_start_hz),
+                    Fixed(factor, 3)
                 ),
                 StartLimit::Model { .. } => write!(
                     f,
-                    "the fastest rate found (by bisection below {hz:.1} Hz) that the model's \
+                    "the fastest rate found (by bisection below {hz} Hz) that the model's \
                      rotor pulls in to from rest: it reaches the field's speed before lagging \
                      180° electrical (torque over the safety factor; give `max_start_hz` \
                      from the datasheet to use it instead)"

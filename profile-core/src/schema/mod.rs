@@ -12,6 +12,7 @@ use std::format;
 use std::string::{String, ToString};
 use std::vec::Vec;
 
+use crate::base::error::Num;
 use crate::base::key::Key;
 use crate::curves::{ROOMS, Room};
 
@@ -92,7 +93,7 @@ impl core::fmt::Display for Value {
                 f.write_str("[")?;
                 for (i, (x, y)) in points.iter().enumerate() {
                     let sep = if i == 0 { "" } else { ", " };
-                    write!(f, "{sep}({x}, {y})")?;
+                    write!(f, "{sep}({}, {})", Num(*x), Num(*y))?;
                 }
                 f.write_str("]")
             }

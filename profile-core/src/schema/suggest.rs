@@ -46,9 +46,11 @@ pub fn did_you_mean<'a>(
     candidates: impl IntoIterator<Item = &'a str>,
     hint: Hint,
 ) -> String {
-    let Some(near) = suggest(word, candidates) else {
-        return String::new();
-    };
+    suggest(word, candidates).map_or_else(String::new, |near| phrase(near, hint))
+}
+
+/// "did you mean `near`?", placed as `hint` says.
+pub fn phrase(near: &str, hint: Hint) -> String {
     match hint {
         Hint::Before => format!("did you mean `{near}`? "),
         Hint::After => format!("; did you mean `{near}`?"),

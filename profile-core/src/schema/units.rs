@@ -10,7 +10,7 @@
 use std::format;
 use std::string::{String, ToString};
 
-use super::suggest::{Hint, did_you_mean};
+use super::suggest::{Hint, did_you_mean, phrase};
 use super::{Value, quoted};
 use crate::base::error::Num;
 use crate::base::key::Key;
@@ -59,6 +59,29 @@ const ALIASES: [(&str, &str); 14] = [
     ("°", "deg"),
 ];
 
+/// SI prefixes, for a unit no key takes: their names and powers of ten.
+/// `K` and `u` are read as the kilo and micro they are written for.
+const PREFIXES: [(&str, &str, i32); 18] = [
+    ("E", "exa", 18),
+    ("P", "peta", 15),
+    ("T", "tera", 12),
+    ("G", "giga", 9),
+    ("M", "mega", 6),
+    ("k", "kilo", 3),
+    ("K", "kilo", 3),
+    ("h", "hecto", 2),
+    ("da", "deca", 1),
+    ("d", "deci", -1),
+    ("c", "centi", -2),
+    ("m", "milli", -3),
+    ("u", "micro", -6),
+    ("µ", "micro", -6),
+    ("μ", "micro", -6),
+    ("n", "nano", -9),
+    ("p", "pico", -12),
+    ("f", "femto", -15),
+];
+
 impl Quantity {
     /// The units accepted, each with its power of ten, the base unit first.
     pub fn units(self) -> &'static [(&'static str, i32)] {
@@ -102,6 +125,43 @@ impl Quantity {
             .iter()
             .find(|(u, _)| *u == unit)
             .map(|(_, e)| *e)
+    }
+
+    /// What `unit`, refused, reads as: the base unit in any case (`hz`,
+    /// `S`) or an SI prefix on it (`mHz`, `ns`, `MNm`, `kΩ`), with the
+    /// prefix and its power of ten; `None` when it is neither.
+    fn scale(self, unit: &str) -> Option<(Option<(&'static str, &'static str)>, i32)> {
+        let base = self.units()[0].0;
+        let is_base = |u: &str| {
+            u.eq_ignore_ascii_case(base)
+                || ALIASES
+                    .iter()
+                    .any(|(alias, name)| *name == base && alias.eq_ignore_ascii_case(u))
+        };
+        if is_base(unit) {
+            return Some((None, 0));
+        }
+        PREFIXES
+            .iter()
+            .find(|(p, _, _)| unit.strip_prefix(p).is_some_and(is_base))
+            .map(|&(p, name, e)| (Some((p, name)), e))
+    }
+
+    /// What to add to the refusal of `unit`: the accepted unit of the same
+    /// scale (`KHz` is `kHz`, `cNm` is `Ncm`), or that its prefix is not
+    /// accepted (`mHz` is not `MHz`, `ns` not `ms`); for a unit of no
+    /// known scale, the nearest in spelling.
+    fn hint(self, unit: &str) -> String {
+        let Some((prefix, exponent)) = self.scale(unit) else {
+            return did_you_mean(unit, self.units().iter().map(|(u, _)| *u), Hint::After);
+        };
+        match (self.units().iter().find(|(_, e)| *e == exponent), prefix) {
+            (Some((same, _)), _) => phrase(same, Hint::After),
+            (None, Some((p, name))) => {
+                format!("; the prefix `{p}` ({name}, 1e{exponent}) is not accepted")
+            }
+            (None, None) => String::new(),
+        }
     }
 
     /// The accepted units, for messages, each with the symbol a datasheet
@@ -168,8 +228,7 @@ pub fn with_unit(key: Key, number: &str, unit: &str, written: &str) -> Result<Va
         ));
     };
     let Some(exponent) = q.exponent(unit) else {
-        let names = q.units().iter().map(|(u, _)| *u);
-        let hint = did_you_mean(unit, names, Hint::After);
+        let hint = q.hint(unit);
         let units = if q.units().len() == 1 {
             "unit"
         } else {
@@ -180,46 +239,89 @@ pub fn with_unit(key: Key, number: &str, unit: &str, written: &str) -> Result<Va
             q.listed()
         ));
     };
-    scaled(number, exponent).ok_or_else(|| format!("`{key}` expects a number, got {got}"))
+    scaled(number, exponent).map_err(|why| match why {
+        Unscaled::NotANumber => format!("`{key}` expects a number, got {got}"),
+        Unscaled::Digits(digits) => super::too_many_digits(key.name(), digits),
+        Unscaled::TooLarge => format!(
+            "`{key}` is too large for a 64-bit float (at most about 1.8e308 {}), got {got}",
+            q.units()[0].0
+        ),
+    })
+}
+
+/// Why a number with a unit was not read.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Unscaled {
+    /// It is not a decimal number.
+    NotANumber,
+    /// It is written with this many digits, more than
+    /// [`MAX_DIGITS`](super::MAX_DIGITS).
+    Digits(usize),
+    /// It is beyond the largest `f64` once scaled.
+    TooLarge,
 }
 
 /// `number` times `10^exponent`, shifted in decimal: an integer when the
-/// result is one, else the nearest `f64`. `None` when `number` is not a
-/// decimal number or the result is not finite.
-pub fn scaled(number: &str, exponent: i32) -> Option<Value> {
+/// result is one, else the nearest `f64` (0 for an exponent far below
+/// any float's); or why it cannot be read.
+pub fn scaled(number: &str, exponent: i32) -> Result<Value, Unscaled> {
     let (negative, rest) = match number.strip_prefix('-') {
         Some(r) => (true, r),
         None => (false, number.strip_prefix('+').unwrap_or(number)),
     };
     let (mantissa, exp10) = match rest.find(['e', 'E']) {
-        Some(i) => (&rest[..i], rest[i + 1..].parse::<i32>().ok()?),
+        Some(i) => (
+            &rest[..i],
+            power(&rest[i + 1..]).ok_or(Unscaled::NotANumber)?,
+        ),
         None => (rest, 0),
     };
-    let (int, frac) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    let (int, written_frac) = mantissa.split_once('.').unwrap_or((mantissa, ""));
     // `10.0MHz` is the whole number it reads as.
-    let frac = frac.trim_end_matches('0');
+    let frac = written_frac.trim_end_matches('0');
     let digits_ok = |s: &str| s.bytes().all(|b| b.is_ascii_digit());
     if int.is_empty() && mantissa.len() < 2 || !digits_ok(int) || !digits_ok(frac) {
-        return None;
+        return Err(Unscaled::NotANumber);
     }
     if int.len() + frac.len() > super::MAX_DIGITS {
-        return None;
+        return Err(Unscaled::Digits(int.len() + written_frac.len()));
     }
     let digits = match format!("{int}{frac}") {
         d if d.is_empty() => "0".to_string(),
         d => d,
     };
-    let shift = exp10
-        .checked_add(exponent)?
-        .checked_sub(i32::try_from(frac.len()).ok()?)?;
+    // Within `power`'s bounds, far past any float's either way.
+    let shift = exp10 + exponent - frac.len() as i32;
     let sign = if negative { "-" } else { "" };
     let trimmed = digits.trim_start_matches('0');
     if (0..=38).contains(&shift) && trimmed.len() + shift as usize <= 38 {
         let whole = format!("{sign}{}{}", digits, "0".repeat(shift as usize));
-        return whole.parse::<i128>().ok().map(Value::Int);
+        return whole
+            .parse::<i128>()
+            .map(Value::Int)
+            .map_err(|_| Unscaled::NotANumber);
     }
-    let v: f64 = format!("{sign}{digits}e{shift}").parse().ok()?;
-    v.is_finite().then_some(Value::Float(v))
+    let v: f64 = format!("{sign}{digits}e{shift}")
+        .parse()
+        .map_err(|_| Unscaled::NotANumber)?;
+    if v.is_finite() {
+        Ok(Value::Float(v))
+    } else {
+        Err(Unscaled::TooLarge)
+    }
+}
+
+/// An exponent's digits (`5`, `-3`, `+40000000000`), held within a
+/// million either way: far past any float's, so that adding to it cannot
+/// overflow. `None` when it is not a whole number.
+fn power(text: &str) -> Option<i32> {
+    const FAR: i32 = 1_000_000;
+    let digits = text.strip_prefix(['+', '-']).unwrap_or(text);
+    if digits.is_empty() || !digits.bytes().all(|b| b.is_ascii_digit()) {
+        return None;
+    }
+    let far = if text.starts_with('-') { -FAR } else { FAR };
+    Some(text.parse::<i32>().map_or(far, |e| e.clamp(-FAR, FAR)))
 }
 
 /// `"64 kHz"`, `"5ms"`, `"64_000 Hz"`: a string read as a number and a
@@ -355,188 +457,40 @@ fn shift_decimal(s: &str, k: i32) -> Option<String> {
 /// `number` `unit` (`written` as the source has it, for messages), or what
 /// is wrong.
 pub fn curve_point(q: Quantity, number: &str, unit: &str, written: &str) -> Result<f64, String> {
-    let what = match q {
-        Quantity::Frequency => "frequencies",
-        _ => "torques",
+    let (what, one) = match q {
+        Quantity::Frequency => ("frequencies", "frequency"),
+        _ => ("torques", "torque"),
     };
     let Some(exponent) = q.exponent(unit) else {
-        let hint = did_you_mean(unit, q.units().iter().map(|(u, _)| *u), Hint::After);
+        let hint = q.hint(unit);
         return Err(format!(
             "`torque_curve` {what} accept the units {} (got `{written}`){hint}",
             q.listed()
         ));
     };
     match scaled(number, exponent) {
-        Some(Value::Int(v)) => Ok(v as f64),
-        Some(Value::Float(v)) => Ok(v),
-        _ => Err(format!("`torque_curve` expects numbers, got `{written}`")),
+        Ok(Value::Int(v)) => Ok(v as f64),
+        Ok(Value::Float(v)) => Ok(v),
+        Err(Unscaled::Digits(digits)) => Err(super::too_many_digits("torque_curve", digits)),
+        Err(Unscaled::TooLarge) => Err(format!(
+            "`torque_curve` has a {one} too large for a 64-bit float (at most about 1.8e308 \
+             {}), got `{written}`",
+            q.units()[0].0
+        )),
+        _ => Err(not_a_point(q, &format!("`{written}`"))),
     }
+}
+
+/// The message for a torque curve's frequency (`q` a frequency) or torque
+/// that is not a number; `got` is what it is: `` `"fast"` ``, `an array`.
+pub fn not_a_point(q: Quantity, got: &str) -> String {
+    let (what, examples) = match q {
+        Quantity::Frequency => ("frequencies", "`1000`, `\"1 kHz\"`"),
+        _ => ("torques", "`0.4`, `\"40 N·cm\"`"),
+    };
+    format!("`torque_curve` {what} are numbers, with or without a unit ({examples}), got {got}")
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn units_scale_in_decimal() {
-        assert_eq!(scaled("64", 3), Some(Value::Int(64_000)));
-        assert_eq!(scaled("0.1", 6), Some(Value::Int(100_000)));
-        assert_eq!(scaled("2.5e3", 0), Some(Value::Int(2_500)));
-        assert_eq!(scaled("-1.5", 3), Some(Value::Int(-1_500)));
-        assert_eq!(scaled("2.5", -3), Some(Value::Float(0.0025)));
-        assert_eq!(scaled("5", -6), Some(Value::Float(5e-6)));
-        assert_eq!(scaled("1e400", 0), None);
-        assert_eq!(scaled("1e40000000000", 0), None);
-        assert_eq!(scaled("x", 0), None);
-        assert_eq!(scaled(".", 0), None);
-        assert_eq!(scaled("9e38", 0), Some(Value::Float(9e38)));
-    }
-
-    #[test]
-    fn keys_accept_their_units_only() {
-        assert_eq!(
-            with_unit(Key::FMAX, "64", "kHz", "64kHz"),
-            Ok(Value::Int(64_000))
-        );
-        assert_eq!(
-            with_unit(Key::TIMER_HZ, "10", "MHz", "10MHz"),
-            Ok(Value::Int(10_000_000))
-        );
-        assert_eq!(
-            with_unit(Key::FMIN, "500", "Hz", "500Hz"),
-            Ok(Value::Int(500))
-        );
-        assert_eq!(
-            with_unit(Key::FMAX, "64", "kHz2", "64kHz2"),
-            Err(
-                "`fmax` accepts the units `Hz`, `kHz`, `MHz` (got `64kHz2`); did you mean `kHz`?"
-                    .into()
-            )
-        );
-        assert_eq!(
-            with_unit(Key::FMIN, "500", "u32", "500u32"),
-            Err(
-                "`fmin` takes a number without a type suffix (got `500u32`): write `500`, or \
-                 with a unit (`Hz`, `kHz`, `MHz`)"
-                    .into()
-            )
-        );
-        assert_eq!(
-            with_unit(Key::LEN, "1000", "usize", "1000usize"),
-            Err(
-                "`len` takes a number without a type suffix (got `1000usize`): write `1000`".into()
-            )
-        );
-        assert_eq!(
-            with_unit(Key::ACCEL, "5", "kHz", "5kHz"),
-            Err("`accel` takes a plain number (in Hz/s), without a unit (got `5kHz`)".into())
-        );
-    }
-
-    #[test]
-    fn a_motors_keys_take_the_units_of_its_datasheet() {
-        let read = |key, number, unit: &str| with_unit(key, number, unit, "");
-        assert_eq!(read(Key::INDUCTANCE, "3.4", "mH"), Ok(Value::Float(0.0034)));
-        assert_eq!(read(Key::INDUCTANCE, "850", "µH"), Ok(Value::Float(850e-6)));
-        assert_eq!(
-            read(Key::ROTOR_INERTIA, "68", "gcm2"),
-            Ok(Value::Float(6.8e-6))
-        );
-        assert_eq!(
-            read(Key::LOAD_INERTIA, "200", "g·cm²"),
-            Ok(Value::Float(2e-5))
-        );
-        assert_eq!(read(Key::LOAD_INERTIA, "2", "kg·m²"), Ok(Value::Int(2)));
-        assert_eq!(
-            read(Key::HOLDING_TORQUE, "40", "Ncm"),
-            Ok(Value::Float(0.4))
-        );
-        assert_eq!(
-            read(Key::DETENT_TORQUE, "15", "mN·m"),
-            Ok(Value::Float(0.015))
-        );
-        assert_eq!(read(Key::FRICTION, "0.02", "N·m"), Ok(Value::Float(0.02)));
-        assert_eq!(read(Key::RESISTANCE, "0.88", "Ω"), Ok(Value::Float(0.88)));
-        assert_eq!(
-            read(Key::RESISTANCE, "0.88", "\u{2126}"),
-            Ok(Value::Float(0.88))
-        );
-        assert_eq!(
-            read(Key::RATED_CURRENT, "4200", "mA"),
-            Ok(Value::Float(4.2))
-        );
-        assert_eq!(read(Key::SUPPLY_VOLTAGE, "36", "V"), Ok(Value::Int(36)));
-        assert_eq!(read(Key::STEP_ANGLE, "1.8", "°"), Ok(Value::Float(1.8)));
-        assert_eq!(
-            with_unit(Key::INDUCTANCE, "3.4", "mh", "3.4mh"),
-            Err(
-                "`inductance` accepts the units `H`, `mH`, `uH` (`µH`) (got `3.4mh`); did you mean `mH`?"
-                    .into()
-            )
-        );
-        assert_eq!(
-            with_unit(Key::ROTOR_INERTIA, "68", "gcm²", "68 gcm²"),
-            Err("`rotor_inertia` accepts the units `kgm2` (`kg·m²`), `gcm2` (`g·cm²`) (got `68 gcm²`); did you mean `gcm2`?".into())
-        );
-        // A torque is not a current, nor an inertia a torque.
-        assert!(read(Key::HOLDING_TORQUE, "2.8", "A").is_err());
-        assert!(read(Key::ROTOR_INERTIA, "0.4", "Nm").is_err());
-        assert_eq!(
-            with_unit(Key::DAMPING, "1", "mNms", "1mNms"),
-            Err(
-                "`damping` takes a plain number (in N·m·s/rad), without a unit (got `1mNms`)"
-                    .into()
-            )
-        );
-    }
-
-    #[test]
-    fn strings_split_into_number_and_unit() {
-        assert_eq!(split("64 kHz"), Some(("64", "kHz")));
-        assert_eq!(split(" 5ms "), Some(("5", "ms")));
-        assert_eq!(split("1.5e3 Hz"), Some(("1.5e3", "Hz")));
-        assert_eq!(split("5 min"), Some(("5", "min")));
-        assert_eq!(split("5e"), Some(("5", "e")));
-        assert_eq!(split("64000"), None);
-        assert_eq!(split("kHz"), None);
-        assert_eq!(split("8 000"), None);
-        assert_eq!(split("5 k Hz"), None);
-        assert_eq!(split("64_000 Hz"), Some(("64_000", "Hz")));
-        assert_eq!(split("1_000_000Hz"), Some(("1_000_000", "Hz")));
-        assert_eq!(split("64__000 Hz"), None);
-        assert_eq!(split("64000_ Hz"), None);
-    }
-
-    #[test]
-    fn values_show_in_the_largest_unit() {
-        assert_eq!(show(Key::FMAX, 64_000.0), "64 kHz");
-        assert_eq!(show(Key::FMIN, 500.0), "500 Hz");
-        assert_eq!(show(Key::TIMER_HZ, 10_000_000.0), "10 MHz");
-        assert_eq!(show(Key::TIMER_HZ, 2_500_000.0), "2.5 MHz");
-        assert_eq!(show(Key::FMIN, 0.5), "0.5 Hz");
-        assert_eq!(show(Key::FMIN, 0.0), "0 Hz");
-        assert_eq!(show(Key::ACCEL, 1500.0), "1500 Hz/s");
-        assert_eq!(show(Key::LEN, 1000.0), "1000");
-        assert_eq!(show(Key::TAU, 0.005), "5 ms");
-        assert_eq!(show(Key::ACCEL, 1e200), "1e200 Hz/s");
-        assert_eq!(show(Key::FMAX, 2.5e-9), "2.5e-9 Hz");
-        assert_eq!(show(Key::TAU, 1e20), "1e20 s");
-        assert_eq!(show(Key::TAU, 2.0), "2 s");
-        assert_eq!(show(Key::TAU, 0.0000125), "12.5 us");
-        // A motor's figures in a datasheet's units.
-        assert_eq!(show(Key::ROTOR_INERTIA, 6.8e-6), "68 g·cm²");
-        assert_eq!(show(Key::LOAD_INERTIA, 5.4e-7), "5.4 g·cm²");
-        assert_eq!(show(Key::LOAD_INERTIA, 0.0), "0 g·cm²");
-        assert_eq!(show(Key::LOAD_INERTIA, 2.5e-3), "25000 g·cm²");
-        assert_eq!(show(Key::HOLDING_TORQUE, 0.4), "0.4 N·m");
-        assert_eq!(show(Key::INDUCTANCE, 0.6e-3), "0.6 mH");
-        assert_eq!(show(Key::INDUCTANCE, 3.4e-3), "3.4 mH");
-        assert_eq!(show(Key::INDUCTANCE, 2.5e-5), "0.025 mH");
-        assert_eq!(show(Key::RESISTANCE, 0.88), "0.88 Ω");
-        assert_eq!(show(Key::RATED_CURRENT, 2.8), "2.8 A");
-        assert_eq!(show(Key::SUPPLY_VOLTAGE, 24.0), "24 V");
-        assert_eq!(show(Key::STEP_ANGLE, 1.8), "1.8°");
-        assert_eq!(show(Key::DAMPING, 1e-4), "0.0001 N·m·s/rad");
-        assert_eq!(show(Key::MAX_START_HZ, 1200.0), "1.2 kHz");
-    }
-}
+#[path = "units_tests.rs"]
+mod tests;
