@@ -48,6 +48,7 @@
 //! ```
 
 mod axis;
+mod buffered;
 mod layout;
 mod plan;
 mod ramp;
@@ -56,6 +57,7 @@ use core::marker::PhantomData;
 
 use crate::base::timer::TableWord;
 pub use axis::{Axis, Direction, Moving};
+pub use buffered::{Buffered, Steps};
 pub use layout::{AnyLayout, Compressed, Layout};
 use plan::{Plan, Run, Sides};
 pub use ramp::Ramp;

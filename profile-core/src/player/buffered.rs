@@ -1,0 +1,222 @@
+//! Playing a move on a timer whose reload register takes effect at the next
+//! wrap: SysTick, an STM32 timer's `ARR` with preload on, an AVR timer's
+//! compare register in a PWM mode, and many others.
+//!
+//! Such a timer has two periods in hand: the one it counts now and the one
+//! it loads when that ends. When its interrupt runs, the counter has
+//! already loaded the next interval, so the period written then is the one
+//! *after* the interval now starting. [`Player::step`] hands out the period
+//! of the interval that starts now, right for a register that takes effect
+//! at once (`ARR` without preload, a compare register scheduled at
+//! `last + period`); on a buffered register every period would play one
+//! interval late. [`Buffered`] keeps the player one period ahead: its
+//! [`start`](Buffered::start) gives the first two periods, to load before
+//! and right after the counter starts, and each interrupt hands out the one
+//! after the interval now starting.
+//!
+//! The steps: the first is taken at the start, at once; each interrupt
+//! (the end of an interval) takes the next, and the interrupt that ends the
+//! last interval ends the move. Step `k` (from 0) is at the sum of the first
+//! `k` periods the player hands out, as with [`Player::step`] on a register
+//! that takes effect at once.
+//!
+//! ```
+//! use profile_core::player::{Buffered, Player, Ramp};
+//!
+//! static RAMP: [u16; 3] = [3000, 2000, 1500];
+//! let mut stepper = Buffered::new(Player::new(Ramp::steps(&RAMP)));
+//! let (first, next) = stepper.start(4);
+//! // Load `first`, start the counter, then load `next`; step 0 is now.
+//! assert_eq!((first, next), (Some(3000), Some(2000)));
+//! let mut loaded = vec![];
+//! let mut steps = 1;
+//! // Each interrupt: a step now, and the period after the one starting.
+//! while stepper.step(|period| loaded.push(period)) {
+//!     steps += 1;
+//! }
+//! assert_eq!((steps, loaded), (4, vec![2000, 3000]));
+//! ```
+
+use crate::base::timer::TableWord;
+use crate::player::Player;
+use crate::player::axis::{Axis, Direction, Moving};
+use crate::player::layout::Layout;
+
+/// What [`Buffered`] plays: one period per call, as [`Player`] and [`Axis`]
+/// hand them out.
+pub trait Steps {
+    /// The table's word.
+    type Word;
+    /// Hands the next step's period to `write` and returns `true`, or
+    /// returns `false` when the move is done ([`Player::step`]).
+    fn step(&mut self, write: impl FnOnce(Self::Word)) -> bool;
+    /// The next step's period, or `None` when the move is done.
+    fn next_period(&mut self) -> Option<Self::Word>;
+    /// Steps left to hand out.
+    fn remaining(&self) -> u32;
+}
+
+impl<W: TableWord, L: Layout> Steps for Player<'_, W, L> {
+    type Word = W;
+    #[inline]
+    fn step(&mut self, write: impl FnOnce(W)) -> bool {
+        Player::step(self, write)
+    }
+    #[inline]
+    fn next_period(&mut self) -> Option<W> {
+        Player::next_period(self)
+    }
+    fn remaining(&self) -> u32 {
+        Player::remaining(self)
+    }
+}
+
+impl<W: TableWord, L: Layout> Steps for Axis<'_, W, L> {
+    type Word = W;
+    #[inline]
+    fn step(&mut self, write: impl FnOnce(W)) -> bool {
+        Axis::step(self, write)
+    }
+    #[inline]
+    fn next_period(&mut self) -> Option<W> {
+        Axis::next_period(self)
+    }
+    fn remaining(&self) -> u32 {
+        Axis::remaining(self)
+    }
+}
+
+/// A [`Player`] or an [`Axis`] for a reload register that takes effect at
+/// the next wrap (see the [module](self)).
+///
+/// [`stop`](Buffered::stop) and [`set_cruise`](Buffered::set_cruise) act on
+/// the periods not yet handed out, as the player's do: the pin plays
+/// exactly the periods the player hands out, in their order, stops and
+/// cruise changes included. One period is always in the timer's hands, so
+/// they take effect one interval after the same call on a register that
+/// takes effect at once.
+#[derive(Clone, Debug)]
+pub struct Buffered<S> {
+    inner: S,
+    /// A period is in the reload register whose step is not taken yet: the
+    /// next interrupt takes a step.
+    ahead: bool,
+}
+
+impl<S> Buffered<S> {
+    /// Wraps a player or an axis at rest.
+    pub fn new(inner: S) -> Self {
+        Buffered {
+            inner,
+            ahead: false,
+        }
+    }
+
+    /// The player or axis: what it has handed out is one period ahead of
+    /// the pin.
+    pub fn inner(&self) -> &S {
+        &self.inner
+    }
+
+    /// The player or axis, the move given up.
+    pub fn into_inner(self) -> S {
+        self.inner
+    }
+}
+
+impl<S: Steps> Buffered<S> {
+    /// Begins the move the inner player has started: the first period (load
+    /// it, then start the counter; the first step is taken now) and the
+    /// second (load it right after). `(None, None)` for a move without
+    /// steps; a one-step move has no second period.
+    pub fn begin(&mut self) -> (Option<S::Word>, Option<S::Word>) {
+        let first = self.inner.next_period();
+        let next = first.as_ref().and_then(|_| self.inner.next_period());
+        self.ahead = next.is_some();
+        (first, next)
+    }
+
+    /// From the timer's interrupt, at the end of an interval: `true` when a
+    /// step is taken now, having handed the period after the interval now
+    /// starting to `write` (not called near the move's end, where there is
+    /// none); `false` when the interval that ended was the move's last.
+    #[inline]
+    pub fn step(&mut self, write: impl FnOnce(S::Word)) -> bool {
+        if !self.ahead {
+            return false;
+        }
+        self.ahead = self.inner.step(write);
+        true
+    }
+
+    /// Steps not yet taken.
+    pub fn remaining(&self) -> u32 {
+        self.inner.remaining() + u32::from(self.ahead)
+    }
+
+    /// `true` when every step has been taken (the last interval may still
+    /// be counting).
+    pub fn is_done(&self) -> bool {
+        self.remaining() == 0
+    }
+}
+
+impl<'a, W: TableWord, L: Layout> Buffered<Player<'a, W, L>> {
+    /// Starts a move of `steps` steps ([`Player::start`]) and begins it
+    /// ([`Buffered::begin`]).
+    pub fn start(&mut self, steps: u32) -> (Option<W>, Option<W>) {
+        self.inner.start(steps);
+        self.begin()
+    }
+
+    /// Decelerates to rest ([`Player::stop`]), from the first period not
+    /// yet in the timer's hands.
+    pub fn stop(&mut self) {
+        self.inner.stop();
+    }
+
+    /// Cruises at step `pos` of the acceleration ramp
+    /// ([`Player::set_cruise`]), from the first period not yet in the
+    /// timer's hands.
+    pub fn set_cruise(&mut self, pos: u32) {
+        self.inner.set_cruise(pos);
+    }
+}
+
+impl<'a, W: TableWord, L: Layout> Buffered<Axis<'a, W, L>> {
+    /// Starts a move to `target` ([`Axis::move_to`]) and begins it: the
+    /// direction to set before the first step, and the first two periods.
+    pub fn move_to(&mut self, target: i64) -> Result<(Direction, Option<W>, Option<W>), Moving> {
+        let delta = target.saturating_sub(self.position());
+        self.move_by(delta)
+    }
+
+    /// Starts a move of `delta` steps ([`Axis::move_by`]) and begins it.
+    pub fn move_by(&mut self, delta: i64) -> Result<(Direction, Option<W>, Option<W>), Moving> {
+        if self.remaining() > 0 {
+            return Err(Moving {
+                remaining: self.remaining(),
+            });
+        }
+        let direction = self.inner.move_by(delta)?;
+        let (first, next) = self.begin();
+        Ok((direction, first, next))
+    }
+
+    /// The position at the pin, in steps: the axis's less the step whose
+    /// period is in the timer's hands and not yet taken.
+    pub fn position(&self) -> i64 {
+        self.inner.position() - self.inner.direction().sign() * i64::from(self.ahead)
+    }
+
+    /// Decelerates to rest ([`Axis::stop`]), from the first period not yet
+    /// in the timer's hands.
+    pub fn stop(&mut self) {
+        self.inner.stop();
+    }
+
+    /// Cruises slower or faster ([`Axis::set_cruise`]).
+    pub fn set_cruise(&mut self, pos: u32) {
+        self.inner.set_cruise(pos);
+    }
+}
