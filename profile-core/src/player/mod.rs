@@ -61,7 +61,7 @@ pub use buffered::{Buffered, Steps};
 pub use layout::{AnyLayout, Compressed, Layout};
 use plan::{Plan, Run, Sides};
 pub use ramp::Ramp;
-use ramp::RunState;
+use ramp::{Cursor, RunState};
 
 /// Plays moves from an acceleration ramp and a deceleration ramp.
 ///
@@ -245,13 +245,18 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// search, then a bounded look past the boundary for the ties of
     /// diffused tables.
     fn entry_point(&self, current: u32) -> u32 {
+        // Probes near each other: one cursor moves between them.
+        let mut cursor = None;
+        let mut period_dec = |pos| {
+            Cursor::period_near(&mut cursor, &self.decel, pos).map_or(0, |w: W| w.into_ticks())
+        };
         let (mut lo, mut hi) = (0u32, self.decel_last);
-        if self.period_dec(hi) >= current {
+        if period_dec(hi) >= current {
             lo = hi;
         } else {
             while hi - lo > 1 {
                 let mid = lo + (hi - lo) / 2;
-                if self.period_dec(mid) >= current {
+                if period_dec(mid) >= current {
                     lo = mid;
                 } else {
                     hi = mid;
@@ -259,7 +264,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             }
         }
         for _ in 0..16 {
-            if lo >= self.decel_last || self.period_dec(lo + 1) < current {
+            if lo >= self.decel_last || period_dec(lo + 1) < current {
                 break;
             }
             lo += 1;

@@ -314,7 +314,23 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
             },
         ) = (*self.accel, *self.decel)
         {
-            // Per-step tables: read them directly.
+            // Per-step tables: read them directly. Held at the cruise
+            // position, the acceleration side's period is one number: scan
+            // the deceleration table down for the first that is not faster.
+            if self.toward(p).1 == 0 {
+                if let Some(&held) = a.get(p as usize) {
+                    let held = held.into_ticks();
+                    let top = (r as usize).min(d.len());
+                    // From entry `r - 1` down; past the table's end there is
+                    // nothing to read, as in the walk below.
+                    if top == r as usize {
+                        return match d[..top].iter().rposition(|x| x.into_ticks() >= held) {
+                            Some(i) => r - 1 - i as u32,
+                            None => r,
+                        };
+                    }
+                }
+            }
             let (mut pa, mut di) = (p as usize, r as usize - 1);
             for j in 0..r {
                 let (Some(da), Some(aa)) = (d.get(di), a.get(pa)) else {

@@ -243,6 +243,67 @@ impl Cursor {
         }
     }
 
+    /// The period at `pos`, the cursor moved there from where it stands (or
+    /// placed, when `None`): on runs a whole run at a time, so that probes
+    /// near each other cost the runs between them, not the runs from the
+    /// start. The same cursor as [`Cursor::at`]; `None` past the ramp's end
+    /// (the cursor then stands nowhere useful: place it again).
+    pub(crate) fn period_near<W: TableWord>(
+        cursor: &mut Option<Cursor>,
+        ramp: &Ramp<'_, W>,
+        pos: u32,
+    ) -> Option<W> {
+        let c = match (*cursor, *ramp) {
+            (Some(mut c), Ramp::Runs(runs)) => {
+                c.seek_runs(runs, pos);
+                // Past the last run: no step there.
+                run_at(runs, c.entry).filter(|_| c.pos == pos)?;
+                c
+            }
+            _ => Cursor::at(ramp, pos)?,
+        };
+        *cursor = Some(c);
+        Some(c.period(ramp))
+    }
+
+    /// Moves the cursor to step `pos` of `runs` (which holds it), a run at a
+    /// time: within a run in closed form ([`ahead`], [`behind`]), across runs
+    /// by their ends, the remainder carried as [`Cursor::at`] carries it.
+    fn seek_runs(&mut self, runs: &[[u16; 5]], pos: u32) {
+        while self.pos < pos {
+            let Some(run) = run_at(runs, self.entry) else {
+                return;
+            };
+            let (count, add) = (u32::from(run.count), run.add as u32);
+            let left = count.saturating_sub(self.within);
+            if pos - self.pos < left {
+                let n = pos - self.pos;
+                (self.frac, self.interval) = ahead(self.frac, self.interval, add, n);
+                (self.pos, self.within) = (pos, self.within + n);
+                return;
+            }
+            self.frac = ahead(self.frac, self.interval, add, left).0;
+            self.pos += left;
+            self.enter_next_run(runs);
+        }
+        while self.pos > pos {
+            let back = self.pos - pos;
+            if back <= self.within {
+                let add = run_at(runs, self.entry).map_or(0, |r| r.add as u32);
+                (self.frac, self.interval) = behind(self.frac, self.interval, add, back);
+                (self.pos, self.within) = (pos, self.within - back);
+                return;
+            }
+            // To the run's first step, then to the last of the one before.
+            let add = run_at(runs, self.entry).map_or(0, |r| r.add as u32);
+            (self.frac, self.interval) = behind(self.frac, self.interval, add, self.within);
+            self.pos -= self.within;
+            self.within = 0;
+            self.pos -= 1;
+            self.run_backward(runs);
+        }
+    }
+
     /// The period under the cursor.
     pub(crate) fn period<W: TableWord>(&self, ramp: &Ramp<'_, W>) -> W {
         let found = match *ramp {
