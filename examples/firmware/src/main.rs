@@ -1,23 +1,29 @@
 //! Plays the period tables of the root `profiles.toml` on a Cortex-M3 (QEMU's
-//! `lm3s6965evb`) and checks every step.
+//! `mps2-an385`) and checks every step, at the pin.
 //!
 //! The moves play from a real step interrupt: SysTick's exception handler
-//! (`step.rs`) takes each period from a [`Player`](stepper_profiles::player::Player)
-//! held in a `critical_section::Mutex`, writes it to the reload register and
-//! toggles a GPIO step pin; the main program starts each move and waits.
-//! The moves cover a trapezoid, a triangle, an asymmetric ramp pair, stops,
-//! cruise changes, a held (divider) ramp, a segment table and a compressed
-//! (runs) table, played by `Player::compressed` and by the player of any
-//! layout, whose every accelerating pulse edge is also checked against the
-//! exact curve computed on the target; each is compared
-//! step by step with a plain reference reading of the tables and with the
-//! figures the macros emit (`TOTAL_TICKS`, `LAST_TICKS`, ...). Then the tables
-//! are generated again on the target with `Spec::generate` and compared bit
-//! for bit with the ones the macros put in flash.
+//! (`step.rs`) takes each period from a [`Buffered`](stepper_profiles::player::Buffered)
+//! player (SysTick's reload register takes effect at the next wrap) held in
+//! a `critical_section::Mutex`, loads it and toggles the step pin; the main
+//! program starts each move and waits. Every step is stamped by a clock the
+//! player does not drive (the MPS2's CMSDK timer 0, on SysTick's 25 MHz
+//! clock), and each step's time from the move's start must be the sum of
+//! the periods loaded before it, to the tick. The moves cover a trapezoid,
+//! a triangle, an asymmetric ramp pair, stops, cruise changes, a held
+//! (divider) ramp, a segment table and a compressed (runs) table, played by
+//! `Player::compressed` and by the player of any layout, whose every
+//! accelerating pulse edge is also checked against the exact curve computed
+//! on the target; each is compared step by step with a plain reference
+//! reading of the tables and with the figures the macros emit
+//! (`TOTAL_TICKS`, `LAST_TICKS`, ...). Then the tables are generated again on
+//! the target with `Spec::generate` and compared bit for bit with the ones
+//! the macros put in flash.
 //!
-//! `cargo run --release` prints a summary over semihosting and exits QEMU with
-//! status 0, or 1 on any mismatch or panic. Instructions per step are
-//! measured on three cores by `examples/measure`.
+//! `cargo run --release` (QEMU with `-icount shift=0,sleep=off`: one
+//! instruction a nanosecond, so that the stamps are exact) prints a summary
+//! over semihosting and exits QEMU with status 0, or 1 on any mismatch or
+//! panic. Instructions per step are measured on three cores by
+//! `examples/measure`.
 #![no_std]
 #![no_main]
 
@@ -105,7 +111,7 @@ fn main() -> ! {
         .SYST;
     let mut report = Report::default();
 
-    hprintln!("stepper-profiles firmware: Cortex-M3, tables from profiles.toml");
+    hprintln!("stepper-profiles firmware: Cortex-M3 (MPS2 AN385), tables from profiles.toml");
     moves::run(timer, &mut report);
     regen::run(&mut report);
     hprintln!(

@@ -4,7 +4,7 @@
 
 use cortex_m::peripheral::SYST;
 use cortex_m_semihosting::hprintln;
-use stepper_profiles::player::{Player, Ramp};
+use stepper_profiles::player::{Buffered, Player, Ramp};
 
 use crate::profiles::{exponential_segments, microstep_runs, sigmoid_exact, sigmoid_orange};
 use crate::step::{self, Players, Stepper};
@@ -246,23 +246,29 @@ pub fn play(
     log: &'static mut [u16; step::MAX_STEPS],
     report: &mut Report,
 ) -> (Played, SYST, &'static mut [u16; step::MAX_STEPS]) {
-    let mut player = match (m.compressed, m.accel, m.decel) {
+    let player = match (m.compressed, m.accel, m.decel) {
         (true, Table::Runs(a), Table::Runs(d)) => {
-            Players::Compressed(Player::compressed_with_decel(a, d))
+            Players::Compressed(Buffered::new(Player::compressed_with_decel(a, d)))
         }
-        _ => Players::Any(Player::with_decel(m.accel.ramp(), m.decel.ramp())),
+        _ => Players::Any(Buffered::new(Player::with_decel(
+            m.accel.ramp(),
+            m.decel.ramp(),
+        ))),
     };
-    player.start(m.steps);
-    let s = step::run(Stepper {
-        player,
-        timer,
-        events: m.events,
-        log,
-        steps: 0,
-        after_events: [0; 4],
-        toggles: 0,
-        finished: false,
-    });
+    let s = step::run(
+        Stepper {
+            player,
+            timer,
+            events: m.events,
+            log,
+            steps: 0,
+            taken: 0,
+            after_events: [0; 4],
+            toggles: 0,
+            finished: false,
+        },
+        m.steps,
+    );
     // The model, step by step, with the events where the handler applied them.
     let mut model = Model::new(m.accel, m.decel, m.steps);
     let mut out = Played {
@@ -312,6 +318,12 @@ pub fn play(
         u64::from(s.toggles),
         u64::from(out.steps),
     );
+    check_pin(
+        m.name,
+        &s.log[..s.steps.min(step::MAX_STEPS)],
+        s.taken,
+        report,
+    );
     hprintln!(
         "  {:<34} {:>6} steps {:>9} ticks  top {:>5}  end {:>5}",
         m.name,
@@ -321,6 +333,33 @@ pub fn play(
         out.last
     );
     (out, s.timer, s.log)
+}
+
+/// Every step, timed at the pin by the clock the player does not drive: step
+/// `k` at the sum of the first `k` periods loaded, from the move's start,
+/// exact to the tick; one step per period.
+fn check_pin(name: &str, loaded: &[u16], taken: usize, report: &mut Report) {
+    report.equal("steps timed at the pin", taken as u64, loaded.len() as u64);
+    let (mut expected, mut off, mut first) = (0u64, 0u32, None);
+    step::step_times(taken, |k, time| {
+        if u64::from(time) != expected * u64::from(step::CLOCK_PER_TICK) {
+            off += 1;
+            first.get_or_insert((k, u64::from(time), expected));
+        }
+        expected += u64::from(loaded.get(k).copied().unwrap_or(0));
+    });
+    if let Some((k, time, want)) = first {
+        let per = u64::from(step::CLOCK_PER_TICK);
+        hprintln!(
+            "FAIL {}: step {} at {}/{} ticks, expected {}",
+            name,
+            k,
+            time,
+            per,
+            want
+        );
+    }
+    report.equal("steps off their time at the pin", off.into(), 0);
 }
 
 fn sum(periods: &[u16]) -> u64 {
@@ -445,7 +484,7 @@ fn scenarios() -> [Scenario<'static>; 15] {
         )
     };
     let runs_stop = Expect {
-        steps: (3001, 2 * r_len),
+        steps: (STOP_RUNS_AT + 1, 2 * r_len),
         ticks: None,
         top: None,
         end: runs.at(0),
@@ -645,7 +684,7 @@ fn scenarios() -> [Scenario<'static>; 15] {
                     runs,
                     runs,
                     2 * r_len,
-                    &[(3000, Event::Stop)],
+                    &[(STOP_RUNS_AT, Event::Stop)],
                 )
             },
             expect: runs_stop,
@@ -656,12 +695,19 @@ fn scenarios() -> [Scenario<'static>; 15] {
                 runs,
                 runs,
                 2 * r_len,
-                &[(3000, Event::Stop)],
+                &[(STOP_RUNS_AT, Event::Stop)],
             ),
             expect: runs_stop,
         },
     ]
 }
+
+/// Where the compressed ramp's moves stop while accelerating. The stop is
+/// planned in the step interrupt, which must end within the step it runs
+/// in for the next to be on time at the pin: on this emulated core (one
+/// instruction a nanosecond, 40 per tick) planning a stop on runs for the
+/// player of any layout takes longer than step 3000's 322 ticks.
+const STOP_RUNS_AT: u32 = 2000;
 
 /// The move whose accelerating edges are also checked against the curve.
 const RUNS_MOVE: &str = "runs, Player::compressed";
@@ -712,7 +758,7 @@ pub fn run(mut timer: SYST, report: &mut Report) -> SYST {
         sum(&sigmoid_exact::PERIODS),
         sigmoid_exact::TOTAL_TICKS,
     );
-    step::init_step_pin();
+    step::init_clock();
     let mut log = cortex_m::singleton!(: [u16; step::MAX_STEPS] = [0; step::MAX_STEPS])
         .expect("the log is taken once");
     for Scenario { play: m, expect } in scenarios() {

@@ -1,10 +1,23 @@
-//! The step interrupt: SysTick's exception handler plays the move.
+//! The step interrupt: SysTick's exception handler plays the move, and a
+//! clock the player does not drive times every step.
 //!
-//! The player and the timer live in a `critical_section::Mutex`, shared by
-//! the main program (which starts moves and waits) and the handler (which
-//! writes each period to SysTick's reload register and toggles the step
-//! pin). For the checks the handler also records every period it plays and
-//! applies the move's events (a stop, a cruise change) before given steps.
+//! SysTick's reload register takes effect at the next wrap, so the player is
+//! wrapped in [`Buffered`]: the first two periods are loaded at the start,
+//! and each interrupt loads the period after the interval now starting. The
+//! player and the timer live in a `critical_section::Mutex`, shared by the
+//! main program (which starts moves and waits) and the handler (which loads
+//! each period and toggles the step pin). For the checks the handler also
+//! records every period it loads and applies the move's events (a stop, a
+//! cruise change) before given periods.
+//!
+//! Every step is stamped by the MPS2's CMSDK APB timer 0, free-running on
+//! the same 25 MHz clock as SysTick: the handler reads it first, at a fixed
+//! number of instructions after the wrap, and the start reads it at a tick
+//! and starts SysTick a few instructions later. Under QEMU's `-icount
+//! shift=0,sleep=off` (one instruction a nanosecond, 40 a tick, and an idle
+//! loop that spins, not `wfi`) both stay within the same tick of the
+//! events they time, so each step's stamp is its time from the start, in
+//! ticks, exactly.
 
 use core::cell::RefCell;
 use core::ptr;
@@ -13,26 +26,33 @@ use cortex_m::peripheral::SYST;
 use cortex_m::peripheral::syst::SystClkSource;
 use cortex_m_rt::exception;
 use critical_section::Mutex;
-use stepper_profiles::player::{Compressed, Player};
+use stepper_profiles::player::{Buffered, Compressed, Player};
 
 use crate::moves::Event;
 
 /// The most steps a move may record.
 pub const MAX_STEPS: usize = 15_000;
 
-/// The step pin: GPIO port F, pin 0, on the LM3S6965 (the evaluation
-/// board's user LED).
-const GPIO_F: usize = 0x4002_5000;
-const GPIO_DATA_PIN0: usize = GPIO_F + (1 << 2);
-const GPIO_DIR: usize = GPIO_F + 0x400;
-const GPIO_DEN: usize = GPIO_F + 0x51C;
-const SYSCTL_RCGC2: usize = 0x400F_E108;
+/// The step pin: the MPS2 FPGA's LED 0 (the SCC's `CFG_REG1`).
+const STEP_PIN: usize = 0x4002_F004;
 
-/// The player the interrupt plays from: of any layout, or of compressed
-/// tables only.
+/// CMSDK APB timer 0: control and current value. It counts down from its
+/// reload value at 25 MHz, the MPS2's system clock.
+const CLOCK_CTRL: usize = 0x4000_0000;
+const CLOCK_VALUE: usize = 0x4000_0004;
+const CLOCK_RELOAD: usize = 0x4000_0008;
+
+/// SysTick counts the core clock, the stamping clock's: one tick each.
+pub const CLOCK_PER_TICK: u32 = 1;
+
+/// The stamps of the steps of the move playing: the clock's value at each.
+pub static STAMPS: Mutex<RefCell<[u32; MAX_STEPS]>> = Mutex::new(RefCell::new([0; MAX_STEPS]));
+
+/// The player the interrupt plays from, for SysTick's buffered reload: of
+/// any layout, or of compressed tables only.
 pub enum Players {
-    Any(Player<'static, u16>),
-    Compressed(Player<'static, u16, Compressed>),
+    Any(Buffered<Player<'static, u16>>),
+    Compressed(Buffered<Player<'static, u16, Compressed>>),
 }
 
 /// `$body` on whichever player `$players` holds, bound to `$p`.
@@ -46,20 +66,18 @@ macro_rules! with_player {
 }
 
 impl Players {
-    pub fn start(&mut self, steps: u32) {
+    /// Starts a move: the first two periods.
+    pub fn start(&mut self, steps: u32) -> (Option<u16>, Option<u16>) {
         with_player!(self, p => p.start(steps))
     }
 
-    pub fn remaining(&self) -> u32 {
-        with_player!(self, p => p.remaining())
+    /// Periods of the move not yet loaded: what the model counts.
+    pub fn to_load(&self) -> u32 {
+        with_player!(self, p => p.inner().remaining())
     }
 
     pub fn is_done(&self) -> bool {
         with_player!(self, p => p.is_done())
-    }
-
-    fn next_period(&mut self) -> Option<u16> {
-        with_player!(self, p => p.next_period())
     }
 }
 
@@ -69,9 +87,11 @@ pub struct Stepper {
     pub timer: SYST,
     /// Events before given steps, in order.
     pub events: &'static [(u32, Event)],
-    /// The periods played.
+    /// The periods loaded, in order: the pin plays them so.
     pub log: &'static mut [u16; MAX_STEPS],
     pub steps: usize,
+    /// Steps taken (and stamped in [`STAMPS`]).
+    pub taken: usize,
     /// Steps left in the move after each event.
     pub after_events: [u32; 4],
     /// Times the step pin was toggled.
@@ -83,21 +103,29 @@ pub struct Stepper {
 /// Shared by the main program and the step interrupt.
 pub static STEPPER: Mutex<RefCell<Option<Stepper>>> = Mutex::new(RefCell::new(None));
 
-/// Turns the step pin's port on and makes pin 0 an output.
-pub fn init_step_pin() {
-    // SAFETY: the LM3S6965's system control and GPIO port F registers, at
-    // their documented addresses; written once, before any interrupt.
+/// Starts the free-running clock that stamps the steps.
+pub fn init_clock() {
+    // SAFETY: CMSDK APB timer 0's registers, at the MPS2 AN385's documented
+    // addresses; written once, before any interrupt.
     unsafe {
-        ptr::write_volatile(SYSCTL_RCGC2 as *mut u32, 1 << 5);
-        ptr::write_volatile(GPIO_DIR as *mut u32, 1);
-        ptr::write_volatile(GPIO_DEN as *mut u32, 1);
+        ptr::write_volatile(CLOCK_RELOAD as *mut u32, u32::MAX);
+        ptr::write_volatile(CLOCK_VALUE as *mut u32, u32::MAX);
+        ptr::write_volatile(CLOCK_CTRL as *mut u32, 1);
     }
 }
 
+/// The free-running clock, in ticks (it counts down).
+#[inline(always)]
+fn clock() -> u32 {
+    // SAFETY: CMSDK APB timer 0's current value, read only.
+    unsafe { ptr::read_volatile(CLOCK_VALUE as *const u32) }
+}
+
 fn toggle_step_pin() {
-    // SAFETY: GPIO port F's data register, masked to pin 0.
+    // SAFETY: the SCC's LED register, read and written back with bit 0
+    // flipped.
     unsafe {
-        let pin = GPIO_DATA_PIN0 as *mut u32;
+        let pin = STEP_PIN as *mut u32;
         ptr::write_volatile(pin, ptr::read_volatile(pin) ^ 1);
     }
 }
@@ -105,6 +133,8 @@ fn toggle_step_pin() {
 /// The step interrupt.
 #[exception]
 fn SysTick() {
+    // First, at a fixed distance from the wrap: the time of this step.
+    let now = clock();
     critical_section::with(|cs| {
         let mut stepper = STEPPER.borrow_ref_mut(cs);
         let Some(s) = stepper.as_mut() else {
@@ -118,23 +148,26 @@ fn SysTick() {
                     Event::Stop => with_player!(&mut s.player, p => p.stop()),
                 }
                 if let Some(slot) = s.after_events.get_mut(i) {
-                    *slot = s.player.remaining();
+                    *slot = s.player.to_load();
                 }
             }
         }
         let (timer, log, steps) = (&mut s.timer, &mut *s.log, &mut s.steps);
         // SysTick counts from its reload value down to 0: a period of n
-        // ticks is a reload of n - 1.
-        let write = |period: u16| {
+        // ticks is a reload of n - 1, loaded at the next wrap.
+        let load = |period: u16| {
             timer.set_reload(u32::from(period) - 1);
             if let Some(slot) = log.get_mut(*steps) {
                 *slot = period;
             }
             *steps += 1;
         };
-        let stepped = with_player!(&mut s.player, p => p.step(write));
-        if stepped {
+        if with_player!(&mut s.player, p => p.step(load)) {
             toggle_step_pin();
+            if let Some(stamp) = STAMPS.borrow_ref_mut(cs).get_mut(s.taken) {
+                *stamp = now;
+            }
+            s.taken += 1;
             s.toggles += 1;
         } else {
             timer.disable_interrupt();
@@ -144,38 +177,56 @@ fn SysTick() {
     });
 }
 
-/// Plays a move from the interrupt: starts the timer on the first period
-/// and waits for the handler to end the move. Returns the stepper, with
-/// what it recorded.
-pub fn run(mut stepper: Stepper) -> Stepper {
-    let first = stepper.player.next_period();
+/// Plays a move the stepper's player has not started: starts it, loads the
+/// first period, starts SysTick at a tick of the clock (the first step,
+/// stamped with that tick), loads the second, and waits, spinning, for the
+/// handler to end the move. Returns the stepper, with what it recorded.
+pub fn run(mut stepper: Stepper, steps: u32) -> Stepper {
+    let (first, next) = stepper.player.start(steps);
     let Some(first) = first else {
         stepper.finished = true;
         return stepper;
     };
-    // The first step is taken at once: its period times the first interval.
     stepper.log[0] = first;
     stepper.steps = 1;
-    toggle_step_pin();
-    stepper.toggles = 1;
     stepper.timer.set_clock_source(SystClkSource::Core);
     stepper.timer.set_reload(u32::from(first) - 1);
     stepper.timer.clear_current();
+    stepper.timer.enable_interrupt();
+    // Wait for a tick of the clock, and start at once after it.
+    let before = clock();
+    let mut start = clock();
+    while start == before {
+        start = clock();
+    }
+    stepper.timer.enable_counter();
+    toggle_step_pin();
+    // SysTick loads its reload register at its first tick, at most one of
+    // its own after the enable: the second period goes in after that.
+    while start.wrapping_sub(clock()) <= CLOCK_PER_TICK {}
+    if let Some(next) = next {
+        stepper.timer.set_reload(u32::from(next) - 1);
+        stepper.log[1] = next;
+        stepper.steps = 2;
+    }
+    critical_section::with(|cs| STAMPS.borrow_ref_mut(cs)[0] = start);
+    stepper.taken = 1;
+    stepper.toggles = 1;
     critical_section::with(|cs| STEPPER.borrow(cs).replace(Some(stepper)));
-    critical_section::with(|cs| {
-        if let Some(s) = STEPPER.borrow_ref_mut(cs).as_mut() {
-            s.timer.enable_interrupt();
-            s.timer.enable_counter();
-        }
-    });
-    loop {
-        let done =
-            critical_section::with(|cs| STEPPER.borrow_ref(cs).as_ref().is_none_or(|s| s.finished));
-        if done {
-            break;
-        }
-        cortex_m::asm::wfi();
+    // Spin: under `-icount`, `wfi` would let the clock run past interrupts.
+    while !critical_section::with(|cs| STEPPER.borrow_ref(cs).as_ref().is_none_or(|s| s.finished)) {
     }
     // The handler has stopped the timer; take the stepper back.
     critical_section::with(|cs| STEPPER.borrow(cs).replace(None)).expect("the stepper was set")
+}
+
+/// Each step's time from the move's start, in ticks of the stamping clock:
+/// `each(k, time)` for step `k`.
+pub fn step_times(taken: usize, mut each: impl FnMut(usize, u32)) {
+    critical_section::with(|cs| {
+        let stamps = STAMPS.borrow_ref(cs);
+        for (k, &stamp) in stamps[..taken.min(MAX_STEPS)].iter().enumerate() {
+            each(k, stamps[0].wrapping_sub(stamp));
+        }
+    });
 }
