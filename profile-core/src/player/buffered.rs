@@ -98,8 +98,7 @@ impl<W: TableWord, L: Layout> Steps for Axis<'_, W, L> {
 #[derive(Clone, Debug)]
 pub struct Buffered<S> {
     inner: S,
-    /// A period is in the reload register whose step is not taken yet: the
-    /// next interrupt takes a step.
+    /// A period is in the reload register whose step is not taken yet.
     ahead: bool,
 }
 
@@ -142,11 +141,14 @@ impl<S: Steps> Buffered<S> {
     /// none); `false` when the interval that ended was the move's last.
     #[inline]
     pub fn step(&mut self, write: impl FnOnce(S::Word)) -> bool {
-        if !self.ahead {
-            return false;
+        // While the player has periods, one is always in the register: the
+        // player's own step path, and nothing else.
+        if self.inner.step(write) {
+            return true;
         }
-        self.ahead = self.inner.step(write);
-        true
+        // The player is done: the period in the register, if any, is the
+        // last interval, starting now.
+        core::mem::replace(&mut self.ahead, false)
     }
 
     /// Steps not yet taken.
