@@ -1,41 +1,5 @@
-//! Playing a move on a timer whose reload register takes effect at the next
-//! wrap: SysTick, an STM32 timer's `ARR` with preload on, an AVR timer's
-//! compare register in a PWM mode, and many others.
-//!
-//! Such a timer has two periods in hand: the one it counts now and the one
-//! it loads when that ends. When its interrupt runs, the counter has
-//! already loaded the next interval, so the period written then is the one
-//! *after* the interval now starting. [`Player::step`] hands out the period
-//! of the interval that starts now, right for a register that takes effect
-//! at once (`ARR` without preload, a compare register scheduled at
-//! `last + period`); on a buffered register every period would play one
-//! interval late. [`Buffered`] keeps the player one period ahead: its
-//! [`start`](Buffered::start) gives the first two periods, to load before
-//! and right after the counter starts, and each interrupt hands out the one
-//! after the interval now starting.
-//!
-//! The steps: the first is taken at the start, at once; each interrupt
-//! (the end of an interval) takes the next, and the interrupt that ends the
-//! last interval ends the move. Step `k` (from 0) is at the sum of the first
-//! `k` periods the player hands out, as with [`Player::step`] on a register
-//! that takes effect at once.
-//!
-//! ```
-//! use profile_core::player::{Buffered, Player, Ramp};
-//!
-//! static RAMP: [u16; 3] = [3000, 2000, 1500];
-//! let mut stepper = Buffered::new(Player::new(Ramp::steps(&RAMP)));
-//! let (first, next) = stepper.start(4);
-//! // Load `first`, start the counter, then load `next`; step 0 is now.
-//! assert_eq!((first, next), (Some(3000), Some(2000)));
-//! let mut loaded = vec![];
-//! let mut steps = 1;
-//! // Each interrupt: a step now, and the period after the one starting.
-//! while stepper.step(|period| loaded.push(period)) {
-//!     steps += 1;
-//! }
-//! assert_eq!((steps, loaded), (4, vec![2000, 3000]));
-//! ```
+//! [`Buffered`]: a player for reload registers that take effect at the next
+//! wrap.
 
 use crate::base::timer::TableWord;
 use crate::player::Player;
@@ -87,7 +51,46 @@ impl<W: TableWord, L: Layout> Steps for Axis<'_, W, L> {
 }
 
 /// A [`Player`] or an [`Axis`] for a reload register that takes effect at
-/// the next wrap (see the [module](self)).
+/// the next wrap.
+///
+/// Playing a move on a timer whose reload register takes effect at the next
+/// wrap: SysTick, an STM32 timer's `ARR` with preload on, an AVR timer's
+/// compare register in a PWM mode, and many others.
+///
+/// Such a timer has two periods in hand: the one it counts now and the one
+/// it loads when that ends. When its interrupt runs, the counter has
+/// already loaded the next interval, so the period written then is the one
+/// *after* the interval now starting. [`Player::step`] hands out the period
+/// of the interval that starts now, right for a register that takes effect
+/// at once (`ARR` without preload, a compare register scheduled at
+/// `last + period`); on a buffered register every period would play one
+/// interval late. [`Buffered`] keeps the player one period ahead: its
+/// [`start`](Buffered::start) gives the first two periods, to load before
+/// and right after the counter starts, and each interrupt hands out the one
+/// after the interval now starting.
+///
+/// The steps: the first is taken at the start, at once; each interrupt
+/// (the end of an interval) takes the next, and the interrupt that ends the
+/// last interval ends the move. Step `k` (from 0) is at the sum of the first
+/// `k` periods the player hands out, as with [`Player::step`] on a register
+/// that takes effect at once.
+///
+/// ```
+/// use profile_core::player::{Buffered, Player, Ramp};
+///
+/// static RAMP: [u16; 3] = [3000, 2000, 1500];
+/// let mut stepper = Buffered::new(Player::new(Ramp::steps(&RAMP)));
+/// let (first, next) = stepper.start(4);
+/// // Load `first`, start the counter, then load `next`; step 0 is now.
+/// assert_eq!((first, next), (Some(3000), Some(2000)));
+/// let mut loaded = vec![];
+/// let mut steps = 1;
+/// // Each interrupt: a step now, and the period after the one starting.
+/// while stepper.step(|period| loaded.push(period)) {
+///     steps += 1;
+/// }
+/// assert_eq!((steps, loaded), (4, vec![2000, 3000]));
+/// ```
 ///
 /// [`stop`](Buffered::stop) and [`set_cruise`](Buffered::set_cruise) act on
 /// the periods not yet handed out, as the player's do: the pin plays
