@@ -68,6 +68,11 @@ const REQUIRED: &[&str] = &[
     "segments_period_overflow",
     "bad_name_errno",
     "file_too_large",
+    // `reload_offset`: its kind, its range, a stored value out of the word.
+    "reload_offset_not_integer",
+    "reload_offset_range",
+    "reload_offset_entry_zero",
+    "reload_offset_compress",
 ];
 
 /// The file named in messages, as `include_profiles!("profiles.toml")` names it.

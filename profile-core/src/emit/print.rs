@@ -90,7 +90,9 @@ fn inline(out: &mut String, trees: &[TokenTree]) {
         match tree {
             TokenTree::Punct(p) => {
                 let c = p.as_char();
-                if c == '=' {
+                // A negative number's sign after `=` or `,` (a literal's
+                // `-` reaches the printer as its own token).
+                if c == '=' || (c == '-' && space) {
                     out.push(' ');
                 }
                 out.push(c);
@@ -134,6 +136,7 @@ mod tests {
 
     #[test]
     fn items_print_as_rustfmt_would() {
+        let minus_one = proc_macro2::Literal::i32_unsuffixed(-1);
         let tokens = quote! {
             #[doc = " A module."]
             #[doc = ""]
@@ -142,6 +145,7 @@ mod tests {
                 pub static P: [u16; 3] = [3u16, 2, 1];
                 pub static S: [(u16, u16); 1] = [(9u16, 3u16)];
                 pub const X: f64 = 0.5;
+                pub const O: i32 = #minus_one;
             }
         };
         assert_eq!(
@@ -149,7 +153,8 @@ mod tests {
             "/// A module.\n///\n#[allow(dead_code)]\npub mod m {\n    \
              pub static P: [u16; 3] = [3u16, 2, 1];\n    \
              pub static S: [(u16, u16); 1] = [(9u16, 3u16)];\n    \
-             pub const X: f64 = 0.5;\n}\n"
+             pub const X: f64 = 0.5;\n    \
+             pub const O: i32 = -1;\n}\n"
         );
     }
 }
