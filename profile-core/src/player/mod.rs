@@ -48,6 +48,7 @@
 //! ```
 
 mod axis;
+mod fill;
 mod layout;
 mod plan;
 mod ramp;
@@ -67,6 +68,17 @@ use ramp::RunState;
 /// [`AnyLayout`] (the default, from [`Player::new`]) plays every layout,
 /// [`Compressed`] (from [`Player::compressed`]) only compressed tables,
 /// at the least cost per step.
+///
+/// It hands out what the tables hold. A table made with `reload_offset`
+/// holds register values (each period plus the offset, `-1` for STM32's
+/// `ARR` or SysTick's reload), and the player hands those out: written to
+/// the register, or copied there by DMA from [`Player::fill`], with no
+/// instruction per step. Every decision the player takes compares entries
+/// of its tables with each other (where the ramps cross, where a stop
+/// joins the deceleration ramp), which one offset shifts alike: a move,
+/// its stops and its cruise changes play the same steps as the periods
+/// would, each value the period plus the offset. Give both ramps the same
+/// offset.
 // The fields of the run being played come first, at the smallest offsets,
 // for the step paths.
 #[derive(Clone, Debug)]
