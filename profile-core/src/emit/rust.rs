@@ -128,6 +128,22 @@ pub fn module(profile: &Profile) -> TokenStream {
             }
         }
     };
+    // The table with its rate as a type and its offset, for `player::Timed`.
+    let hz = Literal::u32_unsuffixed(spec.timer.timer_hz);
+    let (array_name, ramp) = match &profile.table {
+        Generated::Steps(_) => (quote!(PERIODS), quote!(steps)),
+        Generated::Segments(_) => (quote!(SEGMENTS), quote!(segments)),
+        Generated::Runs(_) => (quote!(RUNS), quote!(runs)),
+    };
+    let rated = quote! {
+        #[doc = " The table as a ramp of a timer of `TIMER_HZ` ticks per second, as a type, storing each"]
+        #[doc = " period plus `RELOAD_OFFSET`: `player::Timed::new(RAMP)` hands out durations of that timer."]
+        pub const RAMP: ::stepper_profiles::player::Rated<'static, #ty, #hz> =
+            ::stepper_profiles::player::Rated::new(
+                ::stepper_profiles::player::Ramp::#ramp(&#array_name),
+                RELOAD_OFFSET
+            );
+    };
     let constants = constants(profile).into_iter().map(|c: Constant| {
         let name = Ident::new(c.name, Span::call_site());
         let (ty, literal) = value(c.value);
@@ -144,6 +160,7 @@ pub fn module(profile: &Profile) -> TokenStream {
         pub mod #name {
             #table
             #(#constants)*
+            #rated
         }
     }
 }

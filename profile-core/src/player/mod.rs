@@ -52,6 +52,7 @@ mod fill;
 mod layout;
 mod plan;
 mod ramp;
+mod rated;
 
 use core::marker::PhantomData;
 
@@ -61,6 +62,9 @@ pub use layout::{AnyLayout, Compressed, Layout};
 use plan::{Plan, Run, Sides};
 pub use ramp::Ramp;
 use ramp::RunState;
+pub use rated::Rated;
+#[cfg(feature = "fugit")]
+pub use rated::{OffsetMismatch, Timed};
 
 /// Plays moves from an acceleration ramp and a deceleration ramp.
 ///
@@ -78,7 +82,8 @@ use ramp::RunState;
 /// joins the deceleration ramp), which one offset shifts alike: a move,
 /// its stops and its cruise changes play the same steps as the periods
 /// would, each value the period plus the offset. Give both ramps the same
-/// offset.
+/// offset. (The periods themselves, typed by the timer's rate, come from
+/// `Timed` behind the `fugit` feature, from a [`Rated`] ramp.)
 // The fields of the run being played come first, at the smallest offsets,
 // for the step paths.
 #[derive(Clone, Debug)]
