@@ -109,8 +109,11 @@ pub fn period_table(input: proc_macro::TokenStream) -> proc_macro::TokenStream {
 ///
 /// The path is relative to the crate's `Cargo.toml` (`CARGO_MANIFEST_DIR`).
 /// Each `[profiles.NAME]` becomes `pub mod NAME` with `PERIODS` (or
-/// `SEGMENTS`), `LEN`, `TIMER_HZ`, `TICKS_PER_STEP`, `TOTAL_TICKS` and the
-/// other figures as constants, documented with the profile's parameters.
+/// `SEGMENTS`, or `RUNS`), `LEN`, `TIMER_HZ`, `TICKS_PER_STEP`,
+/// `RELOAD_OFFSET`, `TOTAL_TICKS` and the other figures as constants,
+/// documented with the profile's parameters, and `RAMP`, the table as a
+/// `stepper_profiles::player::Rated` ramp of its timer's rate (for
+/// `player::Timed`, feature `fugit`).
 /// Cargo rebuilds the crate when the file changes.
 ///
 /// ```ignore
