@@ -8,9 +8,8 @@
 # per-step table is more than the bare load + 4, or the compressed player's
 # (`Player::compressed`) in any phase of the compressed ramp more than the
 # bare load + 8; or when `Player::fill` takes more than 6 instructions per
-# period filled in any phase of the per-step table (8 on the M0, which has
-# no post-indexed loads), or more than 12 in any phase of the compressed
-# ramp.
+# period filled in any phase of the per-step table, or more than 12 in any
+# phase of the compressed ramp.
 # Needs: the three rustup targets, rustup component llvm-tools,
 # qemu-system-arm. Usage: bash measure.sh   (KEEP_LOG=1 keeps the traces;
 # CORES="M3" measures one core)
@@ -112,7 +111,7 @@ for core in "${cores[@]}"; do
                     printf "FAIL %s: %s %.2f instructions per step, more than the bare load %.2f + %d\n", core, l, mean[l], bare, limit
                     bad = 1
                 }
-                most = l ~ /^Player::fill, per-step table/ ? (core == "M0" ? 8 : 6) : l ~ /^Player::fill, compressed/ ? 12 : -1
+                most = l ~ /^Player::fill, per-step table/ ? 6 : l ~ /^Player::fill, compressed/ ? 12 : -1
                 if (most >= 0 && mean[l] > most) {
                     printf "FAIL %s: %s %.2f instructions per period filled, more than %d\n", core, l, mean[l], most
                     bad = 1
@@ -121,5 +120,5 @@ for core in "${cores[@]}"; do
             exit bad
         }' "$out/$core.rows" || status=1
 done
-[ "$status" = 0 ] && echo "ok: on every core the player's per-step mean is within the bare load + 4, the compressed player's within the bare load + 8; Player::fill takes at most 6 instructions per period of the per-step table (8 on the M0), 12 of compressed runs"
+[ "$status" = 0 ] && echo "ok: on every core the player's per-step mean is within the bare load + 4, the compressed player's within the bare load + 8; Player::fill takes at most 6 instructions per period of the per-step table, 12 of compressed runs"
 exit "$status"
