@@ -43,6 +43,19 @@ fn work_dir(name: &str) -> PathBuf {
 enum Figure {
     Int(u64),
     Float(u64),
+    /// `RELOAD_OFFSET`, which may be negative.
+    Signed(i64),
+}
+
+impl Figure {
+    /// An integer figure's value.
+    fn int(self) -> i128 {
+        match self {
+            Figure::Int(v) => i128::from(v),
+            Figure::Signed(v) => i128::from(v),
+            Figure::Float(_) => panic!("not an integer figure"),
+        }
+    }
 }
 
 fn float(v: f64) -> Figure {
@@ -62,13 +75,15 @@ fn expected(profiles: &Profiles) -> BTreeMap<String, BTreeMap<String, Figure>> {
                     profile_core::Word::U16 => 2,
                     profile_core::Word::U32 => 4,
                 };
-                m.insert("entries".into(), int(t.periods.len() as u64));
+                // The table holds each period plus `reload_offset`.
+                let stored = t.stored_periods();
+                m.insert("entries".into(), int(stored.len() as u64));
                 m.insert("word_bytes".into(), int(word));
-                m.insert("first".into(), int(u64::from(t.periods[0])));
-                m.insert("last".into(), int(u64::from(*t.periods.last().unwrap())));
+                m.insert("first".into(), int(u64::from(stored[0])));
+                m.insert("last".into(), int(u64::from(*stored.last().unwrap())));
                 m.insert(
                     "sum".into(),
-                    int(t.periods.iter().map(|&p| u64::from(p)).sum()),
+                    int(stored.iter().map(|&p| u64::from(p)).sum()),
                 );
                 m.insert("TIMER_HZ".into(), int(u64::from(t.spec.timer.timer_hz)));
                 m.insert(
@@ -86,9 +101,10 @@ fn expected(profiles: &Profiles) -> BTreeMap<String, BTreeMap<String, Figure>> {
             Generated::Runs(_) => {}
             Generated::Segments(t) => {
                 let f = &t.figures;
-                let (p0, c0) = t.pairs[0];
-                let (pn, cn) = *t.pairs.last().unwrap();
-                m.insert("entries".into(), int(t.pairs.len() as u64));
+                let pairs = t.stored_pairs();
+                let (p0, c0) = pairs[0];
+                let (pn, cn) = *pairs.last().unwrap();
+                m.insert("entries".into(), int(pairs.len() as u64));
                 m.insert("first".into(), int(u64::from(p0)));
                 m.insert("first_count".into(), int(u64::from(c0)));
                 m.insert("last".into(), int(u64::from(pn)));
@@ -99,8 +115,7 @@ fn expected(profiles: &Profiles) -> BTreeMap<String, BTreeMap<String, Figure>> {
                 );
                 m.insert(
                     "sum".into(),
-                    int(t
-                        .pairs
+                    int(pairs
                         .iter()
                         .map(|&(p, c)| u64::from(p) * u64::from(c))
                         .sum()),
@@ -118,7 +133,10 @@ fn expected(profiles: &Profiles) -> BTreeMap<String, BTreeMap<String, Figure>> {
         }
         if let Generated::Runs(t) = &p.table {
             let f = &t.figures;
-            let periods = p.table.step_periods();
+            // What the C player plays: the stored runs, each period plus
+            // `reload_offset`.
+            let stored = t.stored_runs();
+            let periods: Vec<u32> = profile_core::runs::Expand::new(&stored).collect();
             m.insert("entries".into(), int(t.runs.len() as u64));
             m.insert("steps".into(), int(periods.len() as u64));
             m.insert("first".into(), int(u64::from(periods[0])));
@@ -139,6 +157,10 @@ fn expected(profiles: &Profiles) -> BTreeMap<String, BTreeMap<String, Figure>> {
             m.insert("DURATION_S".into(), float(f.duration_s));
             m.insert("MAX_EDGE_ERROR_TICKS".into(), float(f.max_edge_error_ticks));
         }
+        m.insert(
+            "RELOAD_OFFSET".into(),
+            Figure::Signed(i64::from(p.table.spec().reload_offset)),
+        );
         // A profile that names a motor: where its torque margin is smallest.
         if let Some(t) = &p.torque {
             m.insert("TORQUE_MARGIN_NM".into(), float(t.min_margin_nm));
@@ -318,6 +340,8 @@ fn program(profiles: &Profiles, defines: &BTreeMap<String, Vec<(String, bool)>>)
             let m = format!("{up}_{figure}");
             if *is_float {
                 let _ = writeln!(c, "    printf(\"{name} {figure} %.17g\\n\", (double){m});");
+            } else if figure == "RELOAD_OFFSET" {
+                let _ = writeln!(c, "    printf(\"{name} {figure} %ld\\n\", (long){m});");
             } else {
                 let _ = writeln!(
                     c,
@@ -493,6 +517,8 @@ fn check_header(
                     .parse::<f64>()
                     .unwrap_or_else(|e| panic!("`{line}`: {e}")),
             )
+        } else if figure == "RELOAD_OFFSET" {
+            Figure::Signed(value.parse().unwrap_or_else(|e| panic!("`{line}`: {e}")))
         } else {
             Figure::Int(value.parse().unwrap_or_else(|e| panic!("`{line}`: {e}")))
         };
@@ -521,11 +547,26 @@ fn check_header(
         }
         let extra: Vec<_> = got.keys().filter(|k| !want.contains_key(*k)).collect();
         assert!(extra.is_empty(), "`{name}`: figures not checked: {extra:?}");
-        // The figures describe the table.
-        assert_eq!(got["sum"], got["TOTAL_TICKS"], "`{name}`: sum");
+        // The figures describe the table: its periods, each stored plus
+        // `reload_offset`.
+        let offset = got["RELOAD_OFFSET"].int();
+        let steps = got.get("steps").unwrap_or(&got["entries"]).int();
+        assert_eq!(
+            got["sum"].int(),
+            got["TOTAL_TICKS"].int() + offset * steps,
+            "`{name}`: sum"
+        );
         if got.contains_key("FIRST_TICKS") {
-            assert_eq!(got["first"], got["FIRST_TICKS"], "`{name}`");
-            assert_eq!(got["last"], got["LAST_TICKS"], "`{name}`");
+            assert_eq!(
+                got["first"].int(),
+                got["FIRST_TICKS"].int() + offset,
+                "`{name}`"
+            );
+            assert_eq!(
+                got["last"].int(),
+                got["LAST_TICKS"].int() + offset,
+                "`{name}`"
+            );
             assert_eq!(got["entries"], got["LEN"], "`{name}`");
         } else if got.contains_key("RUN_COUNT") {
             assert_eq!(got["entries"], got["RUN_COUNT"], "`{name}`");
@@ -1082,4 +1123,92 @@ fn progmem_tables_are_read_from_program_memory() {
             "{header}"
         );
     }
+}
+
+/// `reload_offset`: every table holds its periods plus the offset (the C
+/// run player plays each period plus it), every figure is the periods',
+/// and the header says the offset; one header and split.
+#[test]
+fn reload_offset_tables_hold_the_register_values() {
+    let source = r#"
+[defaults]
+timer_hz = "1 MHz"
+reload_offset = -1
+
+[profiles.arr]
+curve = "linear"
+fmin = 500
+fmax = 5000
+len = 100
+
+[profiles.wide]
+curve = "linear"
+fmin = 10
+fmax = 1000
+len = 50
+word = "u32"
+reload_offset = 2
+
+[profiles.pieces]
+curve = "exponential"
+fmin = 200
+fmax = 2000
+f_inf = 2500
+len = 300
+segments = 6
+
+[profiles.runs]
+curve = "linear"
+fmin = 500
+fmax = 20000
+accel = 200000
+compress = 1
+"#;
+    let profiles = Profiles::parse("arr.toml", source).unwrap_or_else(|e| panic!("{e}"));
+    let plain = Profiles::parse(
+        "arr.toml",
+        &source.replace("reload_offset", "# reload_offset"),
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    for (dir, layout) in [
+        ("offset_single", Layout::Single(CStyle::default())),
+        ("offset_split", Layout::Split(CStyle::default())),
+    ] {
+        let printed = check_header(&profiles, dir, &layout);
+        // Against the tables without the offset, computed on their own.
+        for (p, q) in profiles.profiles().iter().zip(plain.profiles()) {
+            let got = &printed[&p.name];
+            let offset = i128::from(p.table.spec().reload_offset);
+            let periods = q.table.step_periods();
+            assert_eq!(
+                got["TOTAL_TICKS"].int(),
+                periods.iter().map(|&t| i128::from(t)).sum::<i128>(),
+                "{}",
+                p.name
+            );
+            let first = match &q.table {
+                Generated::Segments(t) => t.pairs[0].0,
+                _ => periods[0],
+            };
+            assert_eq!(got["first"].int(), i128::from(first) + offset, "{}", p.name);
+        }
+    }
+    assert_eq!(
+        printed_offsets(&profiles.c_header()),
+        [
+            "ARR_RELOAD_OFFSET (-1)",
+            "WIDE_RELOAD_OFFSET 2",
+            "PIECES_RELOAD_OFFSET (-1)",
+            "RUNS_RELOAD_OFFSET (-1)"
+        ]
+    );
+}
+
+/// The header's `#define NAME_RELOAD_OFFSET` lines, without `#define `.
+fn printed_offsets(header: &str) -> Vec<&str> {
+    header
+        .lines()
+        .filter_map(|l| l.strip_prefix("#define "))
+        .filter(|l| l.contains("_RELOAD_OFFSET "))
+        .collect()
 }

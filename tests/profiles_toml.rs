@@ -47,6 +47,11 @@ macro_rules! timer_constants {
         let name = stringify!($name);
         let timer_hz: u32 = $name::TIMER_HZ;
         let ticks_per_step: u8 = $name::TICKS_PER_STEP;
+        let reload_offset: i32 = $name::RELOAD_OFFSET;
+        assert_eq!(
+            reload_offset, $spec.reload_offset,
+            "`{name}`: RELOAD_OFFSET"
+        );
         let total_ticks: u64 = $name::TOTAL_TICKS;
         let duration_s: f64 = $name::DURATION_S;
         assert_eq!(timer_hz, $spec.timer.timer_hz, "`{name}`: TIMER_HZ");

@@ -77,6 +77,11 @@ const REQUIRED: &[&str] = &[
     "motor_curve_not_finite",
     "number_too_many_digits_unit",
     "motor_damping_huge",
+    // `reload_offset`: its kind, its range, a stored value out of the word.
+    "reload_offset_not_integer",
+    "reload_offset_range",
+    "reload_offset_entry_zero",
+    "reload_offset_compress",
 ];
 
 /// The file named in messages, as `include_profiles!("profiles.toml")` names it.

@@ -9,9 +9,12 @@
 # (`Player::compressed`) in any phase of the compressed ramp more than the
 # bare load + 8; or when either wrapped in `Buffered` costs more than the
 # player itself + 1.5 in the same phase (one test more per step, and its
-# phases two periods ahead of the player's).
+# phases two periods ahead of the player's); or when `Player::fill` takes
+# more than 6 instructions per period filled in any phase of the per-step
+# table, or more than 12 in any phase of the compressed ramp.
 # Needs: the three rustup targets, rustup component llvm-tools,
-# qemu-system-arm. Usage: bash measure.sh   (KEEP_LOG=1 keeps the traces)
+# qemu-system-arm. Usage: bash measure.sh   (KEEP_LOG=1 keeps the traces;
+# CORES="M3" measures one core)
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -32,7 +35,7 @@ else
     one_insn=(-singlestep)
 fi
 
-cores=(M0 M3 M4F)
+read -r -a cores <<<"${CORES:-M0 M3 M4F}"
 declare -A target=([M0]=thumbv6m-none-eabi [M3]=thumbv7m-none-eabi [M4F]=thumbv7em-none-eabihf)
 declare -A machine=([M0]="-cpu cortex-m0 -machine microbit" [M3]="-cpu cortex-m3 -machine lm3s6965evb"
     [M4F]="-cpu cortex-m4 -machine mps2-an386")
@@ -47,7 +50,8 @@ for core in "${cores[@]}"; do
     timeout 600 qemu-system-arm ${machine[$core]} -nographic -semihosting-config enable=on,target=native \
         "${one_insn[@]}" -d exec,nochain -D "$out/$core.log" -kernel "$elf" >"$out/$core.txt" 2>"$out/$core.err"
     grep -q '^ok' "$out/$core.txt" || { cat "$out/$core.txt"; exit 1; }
-    sed -n 's/^measure: \(.*\): [0-9]* \(steps\|call\)$/\1/p' "$out/$core.txt" >"$out/$core.labels"
+    # label|count|unit: a fill's figure is per period, not per call.
+    sed -n 's/^measure: \(.*\): \([0-9]*\) \(steps\|call\|periods\)$/\1|\2|\3/p' "$out/$core.txt" >"$out/$core.labels"
     # One `Trace` line per instruction: `Trace 0: HOST [../PC/../..] SYMBOL`.
     # Between the markers, a call runs from one entry of a measured function
     # to the next; lines of the calling loop's own function are not counted.
@@ -76,7 +80,8 @@ for core in "${cores[@]}"; do
         END { print s }' >"$out/$core.flash"
 done
 
-echo "instructions per step: mean (max) [steps above the bare load + 8], step function and callees"
+echo "instructions per step: mean (max) [steps above the bare load + 8], step function and callees;"
+echo "Player::fill: instructions per period filled (the largest call) [calls]"
 printf "%-58s" "step function"
 for core in "${cores[@]}"; do printf " %20s" "$core"; done
 echo
@@ -84,8 +89,9 @@ status=0
 while IFS='|' read -r label _; do
     printf "%-58s" "$label"
     for core in "${cores[@]}"; do
-        awk -F'|' -v l="$label" '$1 == l { split($2, c, " ");
-            printf " %20s", sprintf("%.2f (%d) [%d]", c[1] / c[2], c[4], c[5]) }' "$out/$core.rows"
+        awk -F'|' -v l="$label" '$1 == l { split($4, c, " ")
+            if ($3 == "periods") printf " %20s", sprintf("%.2f (%d) [%d]", c[1] / $2, c[4], c[2])
+            else printf " %20s", sprintf("%.2f (%d) [%d]", c[1] / c[2], c[4], c[5]) }' "$out/$core.rows"
     done
     echo
 done <"$out/M3.rows"
@@ -98,13 +104,18 @@ echo
 # the bare load + 4, the compressed player's on runs within the bare load + 8.
 for core in "${cores[@]}"; do
     awk -F'|' -v core="$core" '
-        { split($2, c, " "); mean[$1] = c[1] / c[2] }
+        { split($4, c, " "); mean[$1] = $3 == "periods" ? c[1] / $2 : c[1] / c[2] }
         END {
             bare = mean["bare load, PERIODS[i] (sigmoid_exact)"]
             for (l in mean) {
                 limit = l ~ /^player, per-step table/ ? 4 : l ~ /^Player::compressed/ ? 8 : -1
                 if (limit >= 0 && mean[l] > bare + limit) {
                     printf "FAIL %s: %s %.2f instructions per step, more than the bare load %.2f + %d\n", core, l, mean[l], bare, limit
+                    bad = 1
+                }
+                most = l ~ /^Player::fill, per-step table/ ? 6 : l ~ /^Player::fill, compressed/ ? 12 : -1
+                if (most >= 0 && mean[l] > most) {
+                    printf "FAIL %s: %s %.2f instructions per period filled, more than %d\n", core, l, mean[l], most
                     bad = 1
                 }
             }
@@ -121,5 +132,5 @@ for core in "${cores[@]}"; do
             exit bad
         }' "$out/$core.rows" || status=1
 done
-[ "$status" = 0 ] && echo "ok: on every core the player's per-step mean is within the bare load + 4, the compressed player's within the bare load + 8, and Buffered within either + 1.5"
+[ "$status" = 0 ] && echo "ok: on every core the player's per-step mean is within the bare load + 4, the compressed player's within the bare load + 8, and Buffered within either + 1.5; Player::fill takes at most 6 instructions per period of the per-step table, 12 of compressed runs"
 exit "$status"

@@ -380,3 +380,56 @@ fn a_prefix_must_be_a_c_identifier() {
     }
     assert_eq!(fs::read_dir(&dir).unwrap().count(), 1);
 }
+
+/// `reload_offset`: the header's tables hold each period plus the offset,
+/// its figures are the periods', and it says the offset; against the same
+/// file without the offset.
+#[test]
+fn a_header_of_register_values() {
+    let dir = work_dir("reload_offset");
+    let arr = RAMPS.replace("[defaults]\n", "[defaults]\nreload_offset = -1\n");
+    fs::write(dir.join("plain.toml"), RAMPS).unwrap();
+    fs::write(dir.join("arr.toml"), arr).unwrap();
+    for name in ["plain", "arr"] {
+        let out = run(
+            &dir,
+            &[
+                "header",
+                &format!("{name}.toml"),
+                "-o",
+                &format!("{name}.h"),
+            ],
+        );
+        assert!(out.status.success(), "{}", text(&out.stderr));
+    }
+    let (plain, arr) = (
+        fs::read_to_string(dir.join("plain.h")).unwrap(),
+        fs::read_to_string(dir.join("arr.h")).unwrap(),
+    );
+    let table = |h: &str| -> Vec<i64> {
+        let start = h.find("STEPS_PERIODS[50] = {").unwrap();
+        let body = &h[start..h[start..].find("};").unwrap() + start];
+        body.split(['{', ','])
+            .skip(1)
+            .filter_map(|v| v.trim().parse().ok())
+            .collect()
+    };
+    let (p, a) = (table(&plain), table(&arr));
+    assert_eq!(p.len(), 50);
+    assert_eq!(a, p.iter().map(|v| v - 1).collect::<Vec<_>>());
+    let define = |h: &str, name: &str| -> String {
+        let line = h
+            .lines()
+            .find(|l| l.starts_with(&format!("#define {name} ")))
+            .unwrap_or_else(|| panic!("no {name}"));
+        line[name.len() + 9..].to_string()
+    };
+    assert_eq!(define(&arr, "STEPS_RELOAD_OFFSET"), "(-1)");
+    assert_eq!(define(&plain, "STEPS_RELOAD_OFFSET"), "0");
+    for figure in ["STEPS_TOTAL_TICKS", "STEPS_FIRST_TICKS", "RUNS_TOTAL_TICKS"] {
+        assert_eq!(define(&arr, figure), define(&plain, figure), "{figure}");
+    }
+    let total: i64 = p.iter().sum();
+    assert_eq!(define(&arr, "STEPS_TOTAL_TICKS"), format!("{total}ul"));
+    assert!(arr.contains(" *   reload_offset = -1\n"), "{arr}");
+}

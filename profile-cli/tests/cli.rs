@@ -41,7 +41,7 @@ const BAD: &str = "[profiles.a]\ncurve = \"linear\"\nfmin = 100\nfmax = 1000\nle
                    timer_hz = 1_000_000\nfoo = 3\n";
 
 const BAD_MESSAGE: &str = "bad.toml:7:1: unknown key `foo`; expected one of `curve`, `len`, \
-     `fmin`, `fmax`, `accel`, `timer_hz`, `word`, `ticks_per_step`, `discretization`, \
+     `fmin`, `fmax`, `accel`, `timer_hz`, `word`, `ticks_per_step`, `reload_offset`, `discretization`, \
      `rounding`, `arithmetic`, `segments`, `compress`, or a motor's keys\n  |\n7 | foo = 3\n  | ^^^\n";
 
 #[test]

@@ -169,18 +169,50 @@ impl<T: Golden + ?Sized> Golden for &T {
 pub struct Timed<'a, T: ?Sized> {
     table: &'a T,
     timer_hz: u32,
+    reload_offset: i32,
 }
 
 /// `table` played by a timer of `timer_hz` ticks per second (a module of
 /// `include_profiles!` has it as `TIMER_HZ`).
 pub fn timed<T: Golden + ?Sized>(table: &T, timer_hz: u32) -> Timed<'_, T> {
-    Timed { table, timer_hz }
+    Timed {
+        table,
+        timer_hz,
+        reload_offset: 0,
+    }
+}
+
+impl<T: ?Sized> Timed<'_, T> {
+    /// The table stores each period plus `reload_offset` (a module's
+    /// `RELOAD_OFFSET`): the file pins the periods, the offset taken off,
+    /// and says the offset.
+    pub fn with_reload_offset(mut self, reload_offset: i32) -> Self {
+        self.reload_offset = reload_offset;
+        self
+    }
 }
 
 impl<T: Golden + ?Sized> Golden for Timed<'_, T> {
     fn entries(&self) -> Entries {
         let mut e = self.table.entries();
         e.timer_hz = Some(self.timer_hz);
+        let offset = self.reload_offset;
+        if offset != 0 {
+            let period = |stored: u32| stored.wrapping_add_signed(offset.wrapping_neg());
+            e.body = match e.body {
+                Body::Periods(p) => Body::Periods(p.into_iter().map(period).collect()),
+                Body::Segments(s) => {
+                    Body::Segments(s.into_iter().map(|(p, c)| (period(p), c)).collect())
+                }
+                Body::Runs(r) => Body::Runs(
+                    r.iter()
+                        .map(|w| crate::runs::with_offset(w, offset.wrapping_neg()))
+                        .collect(),
+                ),
+            };
+            e.header
+                .push((Key::RELOAD_OFFSET.name().to_string(), offset.to_string()));
+        }
         e
     }
 }

@@ -167,3 +167,31 @@ fn a_failed_bless_leaves_nothing_behind() {
     assert_eq!(left, ["ramp.txt"]);
     let _ = fs::remove_dir_all(&dir);
 }
+
+/// A table of register values pins the periods, as the table of the
+/// periods does, and says its offset.
+#[test]
+fn an_offset_table_pins_its_periods() {
+    let periods = timed(&[900u16, 700, 600], 1_000_000).entries();
+    let arr = timed(&[899u16, 699, 599], 1_000_000)
+        .with_reload_offset(-1)
+        .entries();
+    assert_eq!(arr.body, periods.body);
+    assert_eq!(
+        arr.header,
+        std::vec![("reload_offset".to_string(), "-1".to_string())]
+    );
+    let runs = [crate::runs::Run {
+        count: 3,
+        interval: 700 << 16,
+        add: -(50 << 16),
+    }
+    .encode()];
+    let stored = [crate::runs::with_offset(&runs[0], -1)];
+    let back = timed(&stored, 1_000_000).with_reload_offset(-1).entries();
+    assert_eq!(back.body, Body::Runs(runs.to_vec()));
+    let pairs = timed(&[(499u32, 3u32)], 1_000_000)
+        .with_reload_offset(-1)
+        .entries();
+    assert_eq!(pairs.body, Body::Segments(std::vec![(500, 3)]));
+}

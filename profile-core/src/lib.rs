@@ -46,6 +46,11 @@ pub mod player;
 pub mod schema;
 mod table;
 
+/// The `fugit` crate whose durations [`player::Timed`] hands out (feature
+/// `fugit`), so that a firmware names the same version.
+#[cfg(feature = "fugit")]
+pub use fugit;
+
 pub use base::MAX_LEN;
 pub use base::error::Error;
 pub use base::key::Key;

@@ -11,6 +11,7 @@ use std::format;
 use std::string::String;
 use std::vec::Vec;
 
+use crate::base::error::Error;
 use crate::base::key::Key;
 use crate::motor::{Motor, TorqueFigures};
 use crate::schema::{self, Arg, Diagnostic, Layout, locate, locate_motor};
@@ -62,16 +63,25 @@ pub fn compile<L: Clone>(
     options: Options<'_>,
 ) -> Result<Compiled, Vec<Diagnostic<L>>> {
     let request = schema::read(args, whole, options.assumed)?;
-    let at = |e| std::vec![locate(&e, args, whole)];
+    let prefix = options
+        .profile
+        .map_or(String::new(), |name| format!("profile `{name}`: "));
+    // A stored value out of the word depends on the table, not on the key
+    // alone (which a file's `[defaults]` may give): which profile, when a
+    // file's.
+    let at = |e: Error| {
+        let mut d = locate(&e, args, whole);
+        if matches!(e, Error::ReloadOffset { .. }) {
+            d.message = format!("{prefix}{}", d.message);
+        }
+        std::vec![d]
+    };
     let spec = request.spec.check().map_err(at)?;
     match request.layout {
         Layout::Segments(n) => spec.check_segments(n).map_err(at)?,
         Layout::Runs(e) => spec.check_compress(e).map_err(at)?,
         Layout::Steps => {}
     }
-    let prefix = options
-        .profile
-        .map_or(String::new(), |name| format!("profile `{name}`: "));
     // A motor that cannot follow the table: which profile, when a file's.
     let motor_at = |e| {
         let mut d = locate_motor(&e, args, whole);

@@ -39,6 +39,7 @@ mod include;
 /// | `timer_hz` | timer tick rate after the prescaler | required |
 /// | `word` | `u16`, `u32`: the reload register's width | `u16` |
 /// | `ticks_per_step` | `1`, or `2` when the timer toggles the pin (each entry a half period, played twice: step edges fall on every other tick, within one tick of the curve; the edge figures and `compress` are in timer ticks at the step edges) | `1` |
+/// | `reload_offset` | an integer added to every period the table stores: `-1` where the timer's reload register holds the period less one (STM32's `ARR`, SysTick, AVR's `OCRnA`), so that DMA copies the table to it as it is; segments store it in each period, runs in each run's interval (every period played is offset); the figures and the motor check are the periods'; a stored value must be from 1 to the word's largest | `0` |
 /// | `discretization` | `exact` (pulse edges where the curve puts them), `left_endpoint` (`1/f` at the step's start), `index` (the curve's x axis is the step index) | `exact` |
 /// | `rounding` | `truncate` (C's cast), `nearest`, `diffuse` (every edge within 0.5 tick) | `diffuse` |
 /// | `arithmetic` | `f64`; `f32` for the S-curve article's C code (`sigmoid`, `index`); `integer` for the S3C4510 article's (`linear`, `index`, `truncate`) | `f64` |
@@ -109,8 +110,11 @@ pub fn period_table(input: proc_macro::TokenStream) -> proc_macro::TokenStream {
 ///
 /// The path is relative to the crate's `Cargo.toml` (`CARGO_MANIFEST_DIR`).
 /// Each `[profiles.NAME]` becomes `pub mod NAME` with `PERIODS` (or
-/// `SEGMENTS`), `LEN`, `TIMER_HZ`, `TICKS_PER_STEP`, `TOTAL_TICKS` and the
-/// other figures as constants, documented with the profile's parameters.
+/// `SEGMENTS`, or `RUNS`), `LEN`, `TIMER_HZ`, `TICKS_PER_STEP`,
+/// `RELOAD_OFFSET`, `TOTAL_TICKS` and the other figures as constants,
+/// documented with the profile's parameters, and `RAMP`, the table as a
+/// `stepper_profiles::player::Rated` ramp of its timer's rate (for
+/// `player::Timed`, feature `fugit`).
 /// Cargo rebuilds the crate when the file changes.
 ///
 /// ```ignore

@@ -100,6 +100,20 @@ pub fn axis_step(axis: &mut Axis<'_, u16>, timer: &mut SYST) {
     axis.step(|period| timer.set_reload(u32::from(period)));
 }
 
+/// The next periods into a DMA buffer: [`Player::fill`].
+#[inline(never)]
+#[unsafe(no_mangle)]
+pub fn player_fill(player: &mut Player<'_, u16>, buf: &mut [u16]) -> usize {
+    player.fill(buf)
+}
+
+/// The same for a player of compressed tables.
+#[inline(never)]
+#[unsafe(no_mangle)]
+pub fn player_runs_fill(player: &mut Player<'_, u16, Compressed>, buf: &mut [u16]) -> usize {
+    player.fill(buf)
+}
+
 /// The peer: stepgen computes each delay (16.8 fixed point, rounded).
 #[inline(never)]
 #[unsafe(no_mangle)]
@@ -158,12 +172,48 @@ fn player_move(label: &str, ramp: Ramp<'_, u16>, (up, cruise): (u32, u32), timer
     check(player.is_done(), label);
 }
 
+/// Periods of DMA buffers (ping-pong halves) filled per phase of a move of
+/// `up`, `cruise`, `up` steps, `B` periods a call; each phase a whole
+/// number of buffers. The buffer is read back, so that the writes count.
+fn fill_phases<const B: usize>(
+    label: &str,
+    (up, cruise): (u32, u32),
+    mut fill: impl FnMut(&mut [u16]) -> usize,
+) -> u32 {
+    let mut buf = [0u16; B];
+    let mut sum = 0u32;
+    for (phase, n) in [
+        ("accelerating", up),
+        ("cruising", cruise),
+        ("decelerating", up),
+    ] {
+        check(n % B as u32 == 0, "whole buffers");
+        hprintln!("measure: {} {}: {} periods", label, phase, n);
+        measure_begin();
+        for _ in 0..n / B as u32 {
+            let filled = fill(&mut buf);
+            sum = buf[..filled]
+                .iter()
+                .fold(sum, |s, &p| s.wrapping_add(u32::from(p)));
+        }
+        measure_end();
+    }
+    sum
+}
+
 /// One call, between the markers.
 fn once(label: &str, call: impl FnOnce()) {
     hprintln!("measure: {}: 1 call", label);
     measure_begin();
     call();
     measure_end();
+}
+
+/// The period of a compressed ramp's top: its last step.
+fn last_run(runs: &[[u16; 5]]) -> u32 {
+    stepper_profiles::runs::Expand::new(runs)
+        .last()
+        .unwrap_or(0)
 }
 
 fn check(ok: bool, what: &str) {
@@ -243,6 +293,43 @@ fn main() -> ! {
         || buffered_runs_step(&mut buffered, timer),
     );
     check(buffered.is_done(), "buffered compressed player");
+
+    // The same moves into DMA buffers: 40 periods a fill on the per-step
+    // table, 62 on the runs (whole buffers in every phase), each filled
+    // sum checked against the move's.
+    let mut player = Player::new(Ramp::steps(&sigmoid_exact::PERIODS));
+    player.start(2 * UP + CRUISE);
+    let sum = fill_phases::<40>(
+        "Player::fill, per-step table (sigmoid_exact)",
+        (UP, CRUISE),
+        |b| player_fill(&mut player, b),
+    );
+    let whole = 2 * sigmoid_exact::TOTAL_TICKS as u32 + CRUISE * sigmoid_exact::LAST_TICKS;
+    check(
+        player.is_done() && sum == whole,
+        "fill of the per-step table",
+    );
+    let (up, cruise) = (microstep_runs::LEN as u32, 992);
+    let whole = 2 * microstep_runs::TOTAL_TICKS as u32 + cruise * last_run(&microstep_runs::RUNS);
+    let mut player = Player::compressed(&microstep_runs::RUNS);
+    player.start(2 * up + cruise);
+    let sum = fill_phases::<62>(
+        "Player::fill, compressed (microstep, compress = 1)",
+        (up, cruise),
+        |b| player_runs_fill(&mut player, b),
+    );
+    check(
+        player.is_done() && sum == whole,
+        "fill of the compressed runs",
+    );
+    let mut player = Player::new(Ramp::runs(&microstep_runs::RUNS));
+    player.start(2 * up + cruise);
+    let sum = fill_phases::<62>(
+        "Player::fill, Ramp::runs (the same runs)",
+        (up, cruise),
+        |b| player_fill(&mut player, b),
+    );
+    check(player.is_done() && sum == whole, "fill of Ramp::runs");
 
     // The axis on the same move as the per-step player, backwards.
     let mut axis = Axis::new(Player::new(Ramp::steps(&sigmoid_exact::PERIODS)), 0);

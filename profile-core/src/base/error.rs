@@ -161,6 +161,28 @@ pub enum Error {
         /// The value given.
         value: u64,
     },
+    /// `reload_offset` outside what any period of the word leaves room for:
+    /// from `1 - max` to `max - 1`, `max` the word's largest value.
+    ReloadOffsetRange {
+        /// The offset given.
+        offset: i32,
+        /// The word.
+        word: Word,
+    },
+    /// A stored value, a period plus `reload_offset`, is 0 or less, or more
+    /// than the word holds.
+    ReloadOffset {
+        /// What holds it: `"entry"`, `"segment"` or `"step"` (of runs).
+        what: &'static str,
+        /// Its index, from 0.
+        index: u32,
+        /// Its period, in ticks.
+        ticks: u32,
+        /// The offset.
+        offset: i32,
+        /// The word.
+        word: Word,
+    },
     /// A valid option that does not apply to this curve or combination.
     Unsupported {
         /// The parameter whose value does not apply.
@@ -231,6 +253,9 @@ impl Error {
             Error::LenZero | Error::LenTooLarge { .. } => Some(Key::LEN),
             Error::TimerZero => Some(Key::TIMER_HZ),
             Error::TicksPerStep { .. } => Some(Key::TICKS_PER_STEP),
+            Error::ReloadOffsetRange { .. } | Error::ReloadOffset { .. } => {
+                Some(Key::RELOAD_OFFSET)
+            }
             Error::PeriodOverflow { .. } => Some(Key::FMIN),
             Error::PeriodZero { .. } => Some(Key::FMAX),
             Error::EmptySegment { .. }
@@ -499,6 +524,7 @@ impl Error {
             Error::TicksPerStep { value } => {
                 write!(f, "`ticks_per_step` must be 1 or 2 (got {value})")
             }
+            Error::ReloadOffsetRange { .. } | Error::ReloadOffset { .. } => self.fmt_offset(f),
             Error::Unsupported {
                 key,
                 value,
@@ -540,6 +566,37 @@ impl Error {
                  the curve's step count is not a finite number there"
             ),
             // Written by `fmt`; every variant's message is pinned in the tests.
+            _ => Ok(()),
+        }
+    }
+
+    /// The messages of `reload_offset`: its range, and a stored value it
+    /// takes out of the word.
+    fn fmt_offset(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            Error::ReloadOffsetRange { offset, word } => write!(
+                f,
+                "`reload_offset` must be from -{max} to {max} with `word = {}`: a period of 1 to \
+             {} ticks plus the offset must fit the word (got {offset})",
+                word.name(),
+                word.max(),
+                max = word.max() - 1,
+            ),
+            Error::ReloadOffset {
+                what,
+                index,
+                ticks,
+                offset,
+                word,
+            } => write!(
+                f,
+                "`reload_offset = {offset}` makes {what} {index} ({ticks} tick{}) {}: a stored \
+             value, the period plus the offset, must be from 1 to {} (`word = {}`)",
+                if ticks == 1 { "" } else { "s" },
+                i64::from(ticks) + i64::from(offset),
+                word.max(),
+                word.name()
+            ),
             _ => Ok(()),
         }
     }

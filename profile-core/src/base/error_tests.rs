@@ -158,6 +158,33 @@ fn examples() -> Vec<(Error, &'static str)> {
             "`ticks_per_step` must be 1 or 2 (got 3)"
         ),
         (
+            Error::ReloadOffsetRange {
+                offset: 70_000,
+                word: Word::U16
+            },
+            "`reload_offset` must be from -65534 to 65534 with `word = u16`: a period of 1 to 65535 ticks plus the offset must fit the word (got 70000)",
+        ),
+        (
+            Error::ReloadOffset {
+                what: "entry",
+                index: 999,
+                ticks: 1,
+                offset: -1,
+                word: Word::U16
+            },
+            "`reload_offset = -1` makes entry 999 (1 tick) 0: a stored value, the period plus the offset, must be from 1 to 65535 (`word = u16`)",
+        ),
+        (
+            Error::ReloadOffset {
+                what: "step",
+                index: 0,
+                ticks: 65_535,
+                offset: 2,
+                word: Word::U16
+            },
+            "`reload_offset = 2` makes step 0 (65535 ticks) 65537: a stored value, the period plus the offset, must be from 1 to 65535 (`word = u16`)",
+        ),
+        (
             Error::Unsupported {
                 key: Key::ARITHMETIC,
                 value: "f32",
@@ -269,13 +296,15 @@ fn covered(e: &Error) -> usize {
         Error::CompressTooSmall { .. } => 23,
         Error::CompressUnreachable { .. } => 24,
         Error::CompressTooLarge { .. } => 25,
+        Error::ReloadOffsetRange { .. } => 26,
+        Error::ReloadOffset { .. } => 27,
     }
 }
 
 #[test]
 fn every_variant_has_a_pinned_message() {
     let examples = examples();
-    let mut seen = [false; 26];
+    let mut seen = [false; 28];
     for (error, message) in &examples {
         assert_eq!(error.to_string(), *message);
         seen[covered(error)] = true;

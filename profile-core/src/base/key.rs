@@ -28,6 +28,9 @@ impl Key {
     pub const WORD: Key = Key("word");
     /// `ticks_per_step`: timer reloads per step.
     pub const TICKS_PER_STEP: Key = Key("ticks_per_step");
+    /// `reload_offset`: what the timer's reload register adds to a period
+    /// (-1 where it holds the period less one); stored in every entry.
+    pub const RELOAD_OFFSET: Key = Key("reload_offset");
     /// `discretization`: how the curve becomes entries.
     pub const DISCRETIZATION: Key = Key("discretization");
     /// `rounding`: how exact periods become integers.
@@ -83,6 +86,7 @@ impl Key {
         Key::TIMER_HZ,
         Key::WORD,
         Key::TICKS_PER_STEP,
+        Key::RELOAD_OFFSET,
         Key::DISCRETIZATION,
         Key::ROUNDING,
         Key::ARITHMETIC,

@@ -56,6 +56,7 @@ pub(crate) struct Constant {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) enum Number {
     U8(u8),
+    I32(i32),
     U32(u32),
     U64(u64),
     Usize(u64),
@@ -79,6 +80,12 @@ pub(crate) fn constants(profile: &Profile) -> Vec<Constant> {
             value: Number::U8(spec.timer.ticks_per_step),
             doc: "Timer reloads per step (2: each entry is a half period).",
         },
+        Constant {
+            name: "RELOAD_OFFSET",
+            value: Number::I32(spec.reload_offset),
+            doc: "Added to every period the table stores (-1: the period less one, as an \
+                  `ARR`-style reload register holds it); the figures are the periods'.",
+        },
     ];
     match table {
         Generated::Steps(t) => {
@@ -92,7 +99,7 @@ pub(crate) fn constants(profile: &Profile) -> Vec<Constant> {
                 Constant {
                     name: "TOTAL_TICKS",
                     value: Number::U64(f.total_ticks),
-                    doc: "Sum of `PERIODS`, in ticks.",
+                    doc: "Sum of the periods, in ticks.",
                 },
                 Constant {
                     name: "FIRST_TICKS",

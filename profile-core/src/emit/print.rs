@@ -86,15 +86,23 @@ fn attribute(out: &mut String, attr: TokenStream) {
 fn inline(out: &mut String, trees: &[TokenTree]) {
     let mut space = false;
     let mut after_ident = false;
+    // The first `:` of a path's `::`.
+    let mut path = false;
     for tree in trees {
         match tree {
             TokenTree::Punct(p) => {
                 let c = p.as_char();
-                if c == '=' {
+                let joint = p.spacing() == Spacing::Joint;
+                // A negative number's sign after `=` or `,` (a literal's
+                // `-` reaches the printer as its own token), a path's
+                // leading `::` after `:` or `=`.
+                if c == '=' || (space && (c == '-' || (c == ':' && joint && !after_ident))) {
                     out.push(' ');
                 }
                 out.push(c);
-                space = matches!(c, ',' | ':' | '=' | ';') && p.spacing() == Spacing::Alone;
+                let closes_path = path && c == ':';
+                path = c == ':' && joint;
+                space = matches!(c, ',' | ':' | '=' | ';') && !joint && !closes_path;
                 after_ident = false;
                 continue;
             }
@@ -134,6 +142,7 @@ mod tests {
 
     #[test]
     fn items_print_as_rustfmt_would() {
+        let minus_one = proc_macro2::Literal::i32_unsuffixed(-1);
         let tokens = quote! {
             #[doc = " A module."]
             #[doc = ""]
@@ -142,6 +151,8 @@ mod tests {
                 pub static P: [u16; 3] = [3u16, 2, 1];
                 pub static S: [(u16, u16); 1] = [(9u16, 3u16)];
                 pub const X: f64 = 0.5;
+                pub const O: i32 = #minus_one;
+                pub const R: ::a::B<'static, u16, 5> = ::a::B::new(&P, O);
             }
         };
         assert_eq!(
@@ -149,7 +160,9 @@ mod tests {
             "/// A module.\n///\n#[allow(dead_code)]\npub mod m {\n    \
              pub static P: [u16; 3] = [3u16, 2, 1];\n    \
              pub static S: [(u16, u16); 1] = [(9u16, 3u16)];\n    \
-             pub const X: f64 = 0.5;\n}\n"
+             pub const X: f64 = 0.5;\n    \
+             pub const O: i32 = -1;\n    \
+             pub const R: ::a::B<'static, u16, 5> = ::a::B::new(&P, O);\n}\n"
         );
     }
 }

@@ -30,30 +30,30 @@ fn word_type(word: Word) -> Ident {
     Ident::new(word.name(), Span::call_site())
 }
 
-/// An array expression holding the table: `[19183u16, 18866, ...]`,
-/// `[(9533u16, 3u16), (4750, 9), ...]` for a segment table, or
-/// `[[2u16, 2442u16, ...], [5, 1303, ...], ...]` for runs (see
-/// [`runs`](crate::runs)).
+/// An array expression holding the table as it is stored (each period plus
+/// `reload_offset`): `[19183u16, 18866, ...]`, `[(9533u16, 3u16), (4750,
+/// 9), ...]` for a segment table, or `[[2u16, 2442u16, ...], [5, 1303,
+/// ...], ...]` for runs (see [`runs`](crate::runs)).
 pub fn table_expr(table: &Generated) -> TokenStream {
     let word = table.spec().timer.word;
     match table {
         Generated::Steps(t) => {
             let items = t
-                .periods
-                .iter()
+                .stored_periods()
+                .into_iter()
                 .enumerate()
-                .map(|(i, &p)| period(word, p, i == 0));
+                .map(|(i, p)| period(word, p, i == 0));
             quote!([#(#items),*])
         }
         Generated::Segments(t) => {
-            let items = t.pairs.iter().enumerate().map(|(i, &(p, c))| {
+            let items = t.stored_pairs().into_iter().enumerate().map(|(i, (p, c))| {
                 let (p, c) = (period(word, p, i == 0), period(word, c, i == 0));
                 quote!((#p, #c))
             });
             quote!([#(#items),*])
         }
         Generated::Runs(t) => {
-            let items = t.runs.iter().enumerate().map(|(i, words)| {
+            let items = t.stored_runs().into_iter().enumerate().map(|(i, words)| {
                 let w = words.map(|w| period(Word::U16, u32::from(w), i == 0));
                 quote!([#(#w),*])
             });
@@ -66,6 +66,7 @@ pub fn table_expr(table: &Generated) -> TokenStream {
 fn value(value: Number) -> (Ident, Literal) {
     let (ty, literal) = match value {
         Number::U8(v) => ("u8", Literal::u8_unsuffixed(v)),
+        Number::I32(v) => ("i32", Literal::i32_unsuffixed(v)),
         Number::U32(v) => ("u32", Literal::u32_unsuffixed(v)),
         Number::U64(v) => ("u64", Literal::u64_unsuffixed(v)),
         Number::Usize(v) => ("usize", Literal::u64_unsuffixed(v)),
@@ -112,14 +113,14 @@ pub fn module(profile: &Profile) -> TokenStream {
         Generated::Steps(t) => {
             let len = Literal::usize_unsuffixed(t.periods.len());
             quote! {
-                #[doc = " Timer periods, one per step, in ticks of `TIMER_HZ`."]
+                #[doc = " Timer periods, one per step, in ticks of `TIMER_HZ`, each plus `RELOAD_OFFSET`."]
                 pub static PERIODS: [#ty; #len] = #array;
             }
         }
         Generated::Segments(t) => {
             let len = Literal::usize_unsuffixed(t.pairs.len());
             quote! {
-                #[doc = " `(period in ticks, steps)` per equal-time segment."]
+                #[doc = " `(period in ticks plus `RELOAD_OFFSET`, steps)` per equal-time segment."]
                 pub static SEGMENTS: [(#ty, #ty); #len] = #array;
             }
         }
@@ -127,10 +128,26 @@ pub fn module(profile: &Profile) -> TokenStream {
             let len = Literal::usize_unsuffixed(t.runs.len());
             quote! {
                 #[doc = " Runs of fixed-point periods, `[count, interval_hi, interval_lo, add_hi, add_lo]`:"]
-                #[doc = " play them with `runs::Expand` (see the `runs` module)."]
+                #[doc = " play them with `runs::Expand` (see the `runs` module); each period plus `RELOAD_OFFSET`."]
                 pub static RUNS: [[u16; 5]; #len] = #array;
             }
         }
+    };
+    // The table with its rate as a type and its offset, for `player::Timed`.
+    let hz = Literal::u32_unsuffixed(spec.timer.timer_hz);
+    let (array_name, ramp) = match &profile.table {
+        Generated::Steps(_) => (quote!(PERIODS), quote!(steps)),
+        Generated::Segments(_) => (quote!(SEGMENTS), quote!(segments)),
+        Generated::Runs(_) => (quote!(RUNS), quote!(runs)),
+    };
+    let rated = quote! {
+        #[doc = " The table as a ramp of a timer of `TIMER_HZ` ticks per second, as a type, storing each"]
+        #[doc = " period plus `RELOAD_OFFSET`: `player::Timed::new(RAMP)` hands out durations of that timer."]
+        pub const RAMP: ::stepper_profiles::player::Rated<'static, #ty, #hz> =
+            ::stepper_profiles::player::Rated::new(
+                ::stepper_profiles::player::Ramp::#ramp(&#array_name),
+                RELOAD_OFFSET
+            );
     };
     let constants = constants(profile).into_iter().map(|c: Constant| {
         let name = Ident::new(c.name, Span::call_site());
@@ -148,6 +165,7 @@ pub fn module(profile: &Profile) -> TokenStream {
         pub mod #name {
             #table
             #(#constants)*
+            #rated
         }
     }
 }

@@ -150,6 +150,13 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
         self.player.next_period()
     }
 
+    /// Writes the next periods into `buf` ([`Player::fill`]): how many,
+    /// fewer than `buf.len()` only when the move ends. The position follows
+    /// them as it follows steps.
+    pub fn fill(&mut self, buf: &mut [W]) -> usize {
+        self.player.fill(buf)
+    }
+
     /// Steps left in the move.
     pub fn remaining(&self) -> u32 {
         self.player.remaining()

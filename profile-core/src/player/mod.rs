@@ -49,9 +49,11 @@
 
 mod axis;
 mod buffered;
+mod fill;
 mod layout;
 mod plan;
 mod ramp;
+mod rated;
 
 use core::marker::PhantomData;
 
@@ -62,6 +64,9 @@ pub use layout::{AnyLayout, Compressed, Layout};
 use plan::{Plan, Run, Sides};
 pub use ramp::Ramp;
 use ramp::{Cursor, RunState};
+pub use rated::Rated;
+#[cfg(feature = "fugit")]
+pub use rated::{OffsetMismatch, Timed};
 
 /// Plays moves from an acceleration ramp and a deceleration ramp.
 ///
@@ -69,6 +74,18 @@ use ramp::{Cursor, RunState};
 /// [`AnyLayout`] (the default, from [`Player::new`]) plays every layout,
 /// [`Compressed`] (from [`Player::compressed`]) only compressed tables,
 /// at the least cost per step.
+///
+/// It hands out what the tables hold. A table made with `reload_offset`
+/// holds register values (each period plus the offset, `-1` for STM32's
+/// `ARR` or SysTick's reload), and the player hands those out: written to
+/// the register, or copied there by DMA from [`Player::fill`], with no
+/// instruction per step. Every decision the player takes compares entries
+/// of its tables with each other (where the ramps cross, where a stop
+/// joins the deceleration ramp), which one offset shifts alike: a move,
+/// its stops and its cruise changes play the same steps as the periods
+/// would, each value the period plus the offset. Give both ramps the same
+/// offset. (The periods themselves, typed by the timer's rate, come from
+/// `Timed` behind the `fugit` feature, from a [`Rated`] ramp.)
 // The fields of the run being played come first, at the smallest offsets,
 // for the step paths.
 #[derive(Clone, Debug)]

@@ -12,7 +12,8 @@ use crate::motor::{Motor, MotorError, StartLimit};
 use crate::table::spec::Spec;
 
 /// The spec's parameters as `(key, value)` pairs, in documentation order, as
-/// a user would write them (defaults included): for docs, headers, reports.
+/// a user would write them (defaults included, but `reload_offset` only
+/// where it is not 0): for docs, headers, reports.
 pub fn describe(spec: &Spec) -> Vec<(Key, String)> {
     let mut out = std::vec![(Key::CURVE, spec.curve.name().to_string())];
     spec.curve.describe(&mut |key, value| {
@@ -31,6 +32,11 @@ pub fn describe(spec: &Spec) -> Vec<(Key, String)> {
         ),
         (Key::WORD, spec.timer.word.name().to_string()),
         (Key::TICKS_PER_STEP, spec.timer.ticks_per_step.to_string()),
+    ]);
+    if spec.reload_offset != 0 {
+        out.push((Key::RELOAD_OFFSET, spec.reload_offset.to_string()));
+    }
+    out.extend([
         (Key::DISCRETIZATION, spec.discretization.name().to_string()),
         (Key::ROUNDING, spec.rounding.name().to_string()),
         (Key::ARITHMETIC, spec.arithmetic.name().to_string()),

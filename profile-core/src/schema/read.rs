@@ -55,6 +55,15 @@ pub fn read<L: Clone>(
     };
     let complete = check_required(&mut c, room, &suggested);
     let timer = timer(&mut c);
+    let reload_offset = c.ranged(Key::RELOAD_OFFSET, "an integer number of ticks", |v| {
+        i32::try_from(v).map_err(|_| {
+            format!(
+                "`reload_offset` must be from {} to {} (got {v})",
+                i32::MIN,
+                i32::MAX
+            )
+        })
+    });
     let modes = modes(&mut c);
     let segments = c.ranged(Key::SEGMENTS, "an integer number of segments", |v| {
         if v < 1 {
@@ -87,6 +96,7 @@ pub fn read<L: Clone>(
             discretization,
             rounding,
             arithmetic,
+            reload_offset: reload_offset.unwrap_or(0),
         },
         layout: match (segments, compress) {
             (Some(n), _) => Layout::Segments(n),
@@ -358,7 +368,8 @@ mod tests {
                 8,
                 "unknown key `flexibel`; did you mean `flexible`? expected one of `curve`, \
                      `len`, `fmin`, `fmax`, `flexible`, `timer_hz`, `word`, `ticks_per_step`, \
-                     `discretization`, `rounding`, `arithmetic`, `segments`, `compress`, or a motor's keys"
+                     `reload_offset`, `discretization`, `rounding`, `arithmetic`, `segments`, `compress`, \
+                     or a motor's keys"
                     .to_string()
             )]
         );

@@ -25,6 +25,7 @@ use crate::base::error::Error;
 use crate::base::key::Key;
 use crate::base::modes::{Discretization, Rounding};
 use crate::base::timer::Word;
+use crate::table::quantize::stored;
 use crate::table::runs::{RUN_FRACTION_BITS, RUN_START_FRACTION, Run};
 use crate::table::spec::{CheckedSpec, Spec};
 
@@ -468,7 +469,10 @@ impl CheckedSpec {
     /// The runs stand for the per-step table of the same spec and hold the
     /// same 16-bit periods: a period that table refuses (longer than the
     /// word holds, or rounding to 0 ticks) is refused here first, at its
-    /// step, before any run is fitted.
+    /// step, before any run is fitted. A period the runs play that
+    /// [`reload_offset`](Spec::reload_offset) takes out of the word is
+    /// refused at its step; the runs are those of the periods
+    /// ([`RunTable::stored_runs`] adds the offset).
     pub fn run_table(&self, tolerance: f64) -> Result<RunTable, Error> {
         self.check_compress(tolerance)?;
         let scale = self.spec().timer.ticks_per_second();
@@ -488,6 +492,11 @@ impl CheckedSpec {
                 done: at.done + run.count as usize,
                 pos: end,
             };
+        }
+        // What the runs store, each played period plus `reload_offset`.
+        let offset = self.spec().reload_offset;
+        for (k, period) in super::runs::Expand::new(&runs).enumerate() {
+            stored(Word::U16, offset, "step", k as u32, period)?;
         }
         let figures = run_figures(&runs, &exact, tolerance, scale, repeat);
         Ok(RunTable {
@@ -532,10 +541,23 @@ fn run_figures(
 pub struct RunTable {
     /// What the table was computed from.
     pub spec: Spec,
-    /// The runs, five words each (see [`Run`]).
+    /// The runs of the periods, five words each (see [`Run`]), without
+    /// `reload_offset`.
     pub runs: Vec<[u16; 5]>,
     /// What the table amounts to.
     pub figures: RunFigures,
+}
+
+impl RunTable {
+    /// The runs as the table stores them: each played period plus
+    /// [`reload_offset`](Spec::reload_offset) ([`runs::with_offset`](super::runs::with_offset)).
+    pub fn stored_runs(&self) -> Vec<[u16; 5]> {
+        let offset = self.spec.reload_offset;
+        self.runs
+            .iter()
+            .map(|r| super::runs::with_offset(r, offset))
+            .collect()
+    }
 }
 
 impl Spec {

@@ -11,6 +11,8 @@ use crate::table::spec::{CheckedSpec, Spec};
 impl CheckedSpec {
     /// Computes the table into `out` and returns its figures.
     ///
+    /// `out` receives what the table stores: each period plus
+    /// [`reload_offset`](Spec::reload_offset); the figures are the periods'.
     /// `out` must hold exactly [`len`](CheckedSpec::len) entries of the
     /// spec's word. No allocation, no panic: the same bits as `period_table!`
     /// on any target.
@@ -27,9 +29,10 @@ impl CheckedSpec {
                 got: out.len(),
             });
         }
+        let spec = self.spec();
         self.for_each_period(|index, ticks| {
             if let Some(slot) = out.get_mut(index as usize) {
-                *slot = W::from_ticks(ticks);
+                *slot = W::from_ticks(spec.stored(ticks));
             }
         })
     }
@@ -66,7 +69,9 @@ impl CheckedSpec {
     }
 
     /// Computes the table entry by entry, calling `sink(index, ticks)` for
-    /// each, and returns its figures. Stops at the first entry that does not fit.
+    /// each period (without [`reload_offset`](Spec::reload_offset): add it
+    /// with [`Spec::stored`]), and returns its figures. Stops at the first
+    /// entry that does not fit, or that the offset takes out of the word.
     pub fn for_each_period<F: FnMut(u32, u32)>(&self, mut sink: F) -> Result<Figures, Error> {
         self.for_each_period_and_edge(|k, ticks, _| sink(k, ticks))
     }

@@ -13,10 +13,19 @@ use crate::table::spec::{CheckedSpec, Spec};
 pub struct Table {
     /// What the table was computed from.
     pub spec: Spec,
-    /// The periods, in ticks; each fits `spec.timer.word`.
+    /// The periods, in ticks; each fits `spec.timer.word`, and so does each
+    /// plus `spec.reload_offset` ([`Table::stored_periods`]).
     pub periods: Vec<u32>,
     /// What the table amounts to.
     pub figures: Figures,
+}
+
+impl Table {
+    /// The entries as the table stores them: each period plus
+    /// [`reload_offset`](Spec::reload_offset).
+    pub fn stored_periods(&self) -> Vec<u32> {
+        self.periods.iter().map(|&p| self.spec.stored(p)).collect()
+    }
 }
 
 /// A generated segment table (the exponential-ramp article's layout) with
@@ -25,10 +34,22 @@ pub struct Table {
 pub struct SegmentTable {
     /// What the table was computed from.
     pub spec: Spec,
-    /// `(period, step count)` per segment, in ticks and steps.
+    /// `(period, step count)` per segment, in ticks and steps, without
+    /// `spec.reload_offset` ([`SegmentTable::stored_pairs`]).
     pub pairs: Vec<(u32, u32)>,
     /// What the table amounts to.
     pub figures: SegmentFigures,
+}
+
+impl SegmentTable {
+    /// The segments as the table stores them: each period plus
+    /// [`reload_offset`](Spec::reload_offset), the counts as they are.
+    pub fn stored_pairs(&self) -> Vec<(u32, u32)> {
+        self.pairs
+            .iter()
+            .map(|&(p, c)| (self.spec.stored(p), c))
+            .collect()
+    }
 }
 
 /// A generated table in one of its layouts.

@@ -4,7 +4,7 @@
 
 use crate::base::error::Error;
 use crate::base::modes::Rounding;
-use crate::base::timer::Timer;
+use crate::base::timer::{Timer, Word};
 use crate::table::spec::Spec;
 
 /// What a generated table amounts to. Times in seconds, frequencies in Hz
@@ -202,10 +202,36 @@ impl Slope {
     }
 }
 
+/// What a table stores for a period of `ticks` (`what` `index`: `entry 3`,
+/// `step 12`), offset by `reload_offset` = `offset`: from 1 to the word's
+/// largest value, or the error that says which period and why. The one
+/// check of a stored value, for every layout.
+pub(crate) fn stored(
+    word: Word,
+    offset: i32,
+    what: &'static str,
+    index: u32,
+    ticks: u32,
+) -> Result<u32, Error> {
+    let value = i64::from(ticks) + i64::from(offset);
+    if value < 1 || value > i64::from(word.max()) {
+        return Err(Error::ReloadOffset {
+            what,
+            index,
+            ticks,
+            offset,
+            word,
+        });
+    }
+    Ok(value as u32)
+}
+
 /// Turns exact periods into integers and keeps the figures.
 pub(crate) struct Quantizer {
     rounding: Rounding,
     timer: Timer,
+    /// `reload_offset`: what each stored entry adds to its period.
+    offset: i32,
     scale: f64,
     exact_edge: f64,
     emitted: u64,
@@ -223,6 +249,7 @@ impl Quantizer {
         Quantizer {
             rounding: spec.rounding,
             timer: spec.timer,
+            offset: spec.reload_offset,
             scale: spec.timer.ticks_per_second(),
             exact_edge: 0.0,
             emitted: 0,
@@ -260,6 +287,7 @@ impl Quantizer {
     /// `None`), and records it in the figures.
     pub(crate) fn push(&mut self, index: u32, entry: f64, edge: Option<f64>) -> Result<u32, Error> {
         let ticks = self.round(index, entry, edge, 1)?;
+        self.stored(index, ticks, "entry")?;
         self.record(index, ticks, entry);
         Ok(ticks)
     }
@@ -325,6 +353,7 @@ impl Quantizer {
     ) -> Result<u32, Error> {
         self.exact_edge += entry;
         let ticks = self.check(index, ticks as f64, entry)?;
+        self.stored(index, ticks, "entry")?;
         self.emitted += ticks as u64;
         self.record(index, ticks, entry);
         Ok(ticks)
@@ -349,6 +378,21 @@ impl Quantizer {
             });
         }
         Ok(rounded as u32)
+    }
+
+    /// The word's limits on what is stored: a period of `ticks` plus
+    /// `reload_offset`, from 1 to the word's largest value; `what` (`entry`,
+    /// `segment`) and `index` say which, as the error does.
+    pub(crate) fn stored(&self, index: u32, ticks: u32, what: &'static str) -> Result<u32, Error> {
+        stored(self.timer.word, self.offset, what, index, ticks)
+    }
+
+    /// The quantizer of the same spec, storing the periods as they are: for
+    /// the per-step table a segment table stands for, whose periods are not
+    /// stored.
+    pub(crate) fn without_offset(mut self) -> Self {
+        self.offset = 0;
+        self
     }
 
     /// Records entry `index`: `ticks` as emitted, `entry` unrounded.

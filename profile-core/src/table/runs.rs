@@ -111,6 +111,24 @@ impl Iterator for Expand<'_> {
     }
 }
 
+/// `words` with every period it plays `offset` ticks longer (shorter when
+/// negative): `offset * 2^16` added to its `interval`, which moves every
+/// `x = frac + interval` by whole ticks and leaves the edges' sub-tick
+/// remainder, and so every later run, as it was. How a compressed table
+/// stores `reload_offset`: [`Expand`], the player (either way along the
+/// ramp) and the C player then play each period plus `offset`, where every
+/// such value is from 1 to 65 535 (checked when a table is made).
+pub const fn with_offset(words: &[u16; 5], offset: i32) -> [u16; 5] {
+    let run = Run::decode(words);
+    Run {
+        interval: run
+            .interval
+            .wrapping_add((offset as u32) << RUN_FRACTION_BITS),
+        ..run
+    }
+    .encode()
+}
+
 /// Steps in a run table: the sum of its counts.
 pub fn run_steps(runs: &[[u16; 5]]) -> u32 {
     runs.iter().map(|r| r[0] as u32).sum()
@@ -152,5 +170,14 @@ mod tests {
         assert_eq!(periods, [3, 2, 3, 1, 1]);
         assert_eq!(run_steps(&runs), 5);
         assert_eq!(Expand::new(&runs).size_hint(), (5, Some(5)));
+        // Offset, the same edges' remainders: every period one tick less.
+        let less: std::vec::Vec<_> = runs.iter().map(|r| with_offset(r, -1)).collect();
+        let stored: std::vec::Vec<u32> = Expand::new(&less).collect();
+        assert_eq!(stored, [2, 1, 2, 0, 0]);
+        let more: std::vec::Vec<_> = runs.iter().map(|r| with_offset(r, 3)).collect();
+        assert_eq!(
+            Expand::new(&more).collect::<std::vec::Vec<_>>(),
+            [6, 5, 6, 4, 4]
+        );
     }
 }

@@ -60,7 +60,8 @@ impl CheckedSpec {
     }
 
     /// Computes the segment table into `out` (one `(period, count)` pair per
-    /// segment) and returns its figures.
+    /// segment, the period plus [`reload_offset`](Spec::reload_offset)) and
+    /// returns its figures.
     pub fn generate_segments<W: TableWord>(
         &self,
         out: &mut [(W, W)],
@@ -72,14 +73,17 @@ impl CheckedSpec {
             });
         }
         let n = u32::try_from(out.len()).unwrap_or(u32::MAX);
+        let spec = self.spec();
         self.for_each_segment(n, |i, period, count| {
             if let Some(slot) = out.get_mut(i as usize) {
-                *slot = (W::from_ticks(period), W::from_ticks(count));
+                *slot = (W::from_ticks(spec.stored(period)), W::from_ticks(count));
             }
         })
     }
 
-    /// Computes `segments` segments, calling `sink(index, period, count)` for each.
+    /// Computes `segments` segments, calling `sink(index, period, count)` for
+    /// each (the period without [`reload_offset`](Spec::reload_offset),
+    /// which must keep it in the word: checked here).
     ///
     /// Segment `i` spans `[i T/n, (i+1) T/n]` of the ramp's duration `T`. Its
     /// count is the difference of the rounded step counts at its ends, so the
@@ -111,7 +115,7 @@ impl CheckedSpec {
         let dt = duration / segments as f64;
         let mut quantizer = Quantizer::new(spec);
         // The per-step table, step by step, as `for_each_period` rounds it.
-        let mut per_step = Quantizer::new(spec);
+        let mut per_step = Quantizer::new(spec).without_offset();
         per_step.reachable(c.freq(0.0), c.end_freq())?;
         let mut step_start = 0.0;
 
@@ -140,6 +144,7 @@ impl CheckedSpec {
             let exact = dt * scale / count as f64;
             let end = edge_time(c, steps_after)? * scale;
             let period = quantizer.round(step, exact, Some(end), count)?;
+            quantizer.stored(i, period, "segment")?;
             for _ in 0..count {
                 played += period as u64;
                 step += 1;

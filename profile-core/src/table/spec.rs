@@ -41,6 +41,11 @@ pub struct Spec {
     pub rounding: Rounding,
     /// Floating-point arithmetic.
     pub arithmetic: Arithmetic,
+    /// Added to every period the table stores (`reload_offset`): -1 for a
+    /// reload register that holds the period less one (STM32's `ARR`,
+    /// SysTick's `RVR`, AVR's `OCRnA` in CTC mode), so that the table can be
+    /// copied to it as it is, by DMA. The figures stay those of the periods.
+    pub reload_offset: i32,
 }
 
 impl Spec {
@@ -53,7 +58,37 @@ impl Spec {
             discretization: Discretization::Exact,
             rounding: Rounding::Diffuse,
             arithmetic: Arithmetic::F64,
+            reload_offset: 0,
         }
+    }
+
+    /// The same spec storing every period plus `offset` ticks
+    /// (`reload_offset`): `-1` for a register that holds the period less
+    /// one. [`generate`](Spec::generate) then writes the stored values and
+    /// returns the figures of the periods.
+    ///
+    /// ```
+    /// use profile_core::{Curve, Sigmoid, Spec, Timer};
+    ///
+    /// let curve = Curve::Sigmoid(Sigmoid { fmin: 500.0, fmax: 2000.0, flexible: 4.0, len: 8 });
+    /// let spec = Spec::new(curve, Timer::new(1_000_000));
+    /// let (mut periods, mut arr) = ([0u16; 8], [0u16; 8]);
+    /// let figures = spec.generate(&mut periods)?;
+    /// let same = spec.with_reload_offset(-1).generate(&mut arr)?;
+    /// assert!(periods.iter().zip(&arr).all(|(p, r)| *r == *p - 1));
+    /// assert_eq!(figures, same);
+    /// # Ok::<(), profile_core::Error>(())
+    /// ```
+    pub const fn with_reload_offset(mut self, offset: i32) -> Self {
+        self.reload_offset = offset;
+        self
+    }
+
+    /// What the table stores for a period of `ticks`: `ticks` plus
+    /// [`reload_offset`](Spec::reload_offset), wrapping (checked when the
+    /// table is computed).
+    pub const fn stored(&self, ticks: u32) -> u32 {
+        ticks.wrapping_add_signed(self.reload_offset)
     }
 
     /// The same spec with another discretization.
@@ -129,6 +164,13 @@ impl Spec {
         if !matches!(self.timer.ticks_per_step, 1 | 2) {
             return Err(Error::TicksPerStep {
                 value: self.timer.ticks_per_step as u64,
+            });
+        }
+        let max = self.timer.word.max() - 1;
+        if self.reload_offset.unsigned_abs() > max {
+            return Err(Error::ReloadOffsetRange {
+                offset: self.reload_offset,
+                word: self.timer.word,
             });
         }
         let room = self.curve.room();

@@ -306,6 +306,8 @@ fn figures(out: &mut String, p: &Profile) {
         let define = format!("#define {upper}_{name}");
         let _ = match value {
             Number::U8(v) => writeln!(out, "{define} {v}u"),
+            Number::I32(v) if v < 0 => writeln!(out, "{define} ({v})"),
+            Number::I32(v) => writeln!(out, "{define} {v}"),
             Number::U32(v) => writeln!(out, "{define} {v}ul"),
             Number::U64(v) | Number::Usize(v) if v <= u64::from(u32::MAX) => {
                 writeln!(out, "{define} {v}ul")
@@ -335,7 +337,7 @@ fn table(out: &mut String, p: &Profile, qualifiers: &str, style: &CStyle, body: 
     let (array, rows): (String, Vec<String>) = match &p.table {
         Generated::Steps(t) => (
             format!("{upper}_PERIODS[{}]", t.periods.len()),
-            t.periods
+            t.stored_periods()
                 .chunks(12)
                 .map(|chunk| {
                     let line: Vec<String> = chunk.iter().map(|v| v.to_string()).collect();
@@ -345,7 +347,7 @@ fn table(out: &mut String, p: &Profile, qualifiers: &str, style: &CStyle, body: 
         ),
         Generated::Runs(t) => (
             format!("{upper}_RUNS[{}][5]", t.runs.len()),
-            t.runs
+            t.stored_runs()
                 .chunks(3)
                 .map(|chunk| {
                     let line: Vec<String> = chunk
@@ -358,7 +360,7 @@ fn table(out: &mut String, p: &Profile, qualifiers: &str, style: &CStyle, body: 
         ),
         Generated::Segments(t) => (
             format!("{upper}_SEGMENTS[{}][2]", t.pairs.len()),
-            t.pairs
+            t.stored_pairs()
                 .chunks(6)
                 .map(|chunk| {
                     let line: Vec<String> =

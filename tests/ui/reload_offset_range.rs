@@ -1,0 +1,9 @@
+use stepper_profiles::period_table;
+
+static T: [u16; 100] = period_table!(
+    curve = sigmoid, len = 100, fmin = 500, fmax = 5000, flexible = 4,
+    timer_hz = 1_000_000,
+    reload_offset = -65535,
+);
+
+fn main() {}
