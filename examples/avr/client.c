@@ -6,8 +6,10 @@
  * STEPS_PERIODS with ramps_player_*, with RUNS=1 the compressed
  * RUNS_RUNS with ramps_runs_player_*. It plays the moves MOVES lists,
  * `{steps, stop_at}` each (a stop once `stop_at` steps are played, none
- * when 0), as the driver (src/main.rs) defines it; then it sleeps with
- * interrupts off, which ends simavr.
+ * when 0), as the driver (src/main.rs) defines it; then, the timer off, it
+ * plans the first move again and stops it 60 steps in, for the harness to
+ * count that stop's cycles; then it sleeps with interrupts off, which ends
+ * simavr.
  *
  * Why every edge of the step pin is exact to the cycle:
  *
@@ -151,6 +153,13 @@ int main(void)
     for (i = 0; i < sizeof(moves) / sizeof(moves[0]); i++) {
         move(moves[i].steps, moves[i].stop_at);
     }
+    /* A stop's cost, the timer off (the harness counts it): 60 steps into
+     * the first move. */
+    player_start(&player, moves[0].steps);
+    for (i = 0; i < 60; i++) {
+        (void)player_next(&player);
+    }
+    player_stop(&player);
     cli();
     sleep_cpu();
     return 0;

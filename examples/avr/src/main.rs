@@ -311,23 +311,33 @@ fn check(image: &Image, manifest: &Path, dir: &Path) -> Result<bool, String> {
     let mut pass = check_full_move(image, &played[0]);
     pass &= check_edges(image, &trace, &played)?;
     pass &= report_cycles(image, &isrs, &played)?;
-    let planning: Vec<String> = calls
-        .iter()
-        .map(|c| {
-            format!(
-                "{} {}",
-                c.name
-                    .trim_start_matches(image.player)
-                    .trim_start_matches('_'),
-                c.cycles
-            )
-        })
-        .collect();
-    println!(
-        "  planning, cycles per call in order: {}",
-        planning.join(", ")
-    );
+    report_planning(image, &calls);
     Ok(pass)
+}
+
+/// Prints the planning calls' cycles: `init`, each move's `start` and
+/// `stop`, then the stop 60 steps into the first move that the client plans
+/// with the timer off.
+fn report_planning(image: &Image, calls: &[cycles::Call]) {
+    let name = |c: &cycles::Call| {
+        c.name
+            .trim_start_matches(image.player)
+            .trim_start_matches('_')
+            .to_string()
+    };
+    let mut starts = image.moves.iter().map(|m| m.what.as_str());
+    let mut out = Vec::new();
+    for c in calls {
+        let what = match name(c).as_str() {
+            "start" => format!(
+                "start ({})",
+                starts.next().unwrap_or("60 steps, then a stop")
+            ),
+            other => other.to_string(),
+        };
+        out.push(format!("{what} {}", c.cycles));
+    }
+    println!("  planning, cycles per call: {}", out.join("; "));
 }
 
 /// The move up and down, from the table alone: each entry up, the top entry
