@@ -1,7 +1,8 @@
 //! The header's C player on an ATmega328P, in simavr, checked at the pin.
 //!
 //! Writes `ramps.h` from `ramps.toml` with `PROGMEM` tables, checks that it
-//! compiles as C89 with avr-gcc, builds `client.c` twice (the per-step
+//! and the README's AVR example compile as C89 with avr-gcc, builds
+//! `client.c` twice (the per-step
 //! table with `ramps_player_*`, the compressed ramp with
 //! `ramps_runs_player_*`) and the harness `sim.c` against libsimavr, and runs
 //! each client in simavr with a time limit. Then:
@@ -154,6 +155,7 @@ fn run() -> Result<bool, String> {
         &dir,
         "avr-gcc -std=c89 -pedantic on ramps.h",
     )?;
+    readme_example(manifest, &dir)?;
     let version = tools::run(Command::new("avr-gcc").arg("--version"), &dir, "avr-gcc")?;
     tools::run(
         Command::new("gcc")
@@ -176,6 +178,36 @@ fn run() -> Result<bool, String> {
     }
     println!("{}", if pass { "pass" } else { "FAIL" });
     Ok(pass)
+}
+
+/// The README's AVR example (the C block with `ramps_player_step`) compiles
+/// against the same header, as C89.
+fn readme_example(manifest: &Path, dir: &Path) -> Result<(), String> {
+    let readme = fs::read_to_string(manifest.join("../../README.md")).map_err(|e| e.to_string())?;
+    let example = readme
+        .split("```c\n")
+        .skip(1)
+        .filter_map(|block| block.split("```").next())
+        .find(|block| block.contains("ISR(TIMER1_COMPA_vect)"))
+        .ok_or("the README has no C block with the step interrupt")?;
+    fs::write(dir.join("readme.c"), example).map_err(|e| e.to_string())?;
+    tools::run(
+        Command::new("avr-gcc").args([
+            "-mmcu=atmega328p",
+            "-std=c89",
+            "-pedantic",
+            "-Wall",
+            "-Wextra",
+            "-Werror",
+            "-Os",
+            "-o",
+            "readme.elf",
+            "readme.c",
+        ]),
+        dir,
+        "avr-gcc on the README's example",
+    )?;
+    Ok(())
 }
 
 /// The two builds of the client: the per-step table (Timer1 at the CPU
