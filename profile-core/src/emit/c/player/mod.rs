@@ -2,10 +2,13 @@
 //! per kind of table the header holds (`uint16_t` periods, `uint32_t`
 //! periods, runs), each emitted only where a profile has that kind.
 //!
-//! Each player's step path (`PREFIX_player_next`) is an inline function in
-//! the header, so that a step interrupt calls nothing and saves only the
-//! registers it uses; its planner (`_init`, `_start`, `_stop`,
-//! `_set_cruise`, `_remaining`) is defined once, where the run expander is.
+//! Each player's step path (`PREFIX_player_step`, `_next`) is an inline
+//! function in the header, so that a step interrupt saves only the registers
+//! it uses: the per-step tables' refill is inline too (16-bit counts, no
+//! call); the runs' refill, which reads a run, is called at a run's end, so
+//! that its registers are saved only then. The planner (`_init`, `_start`,
+//! `_stop`, `_set_cruise`, `_remaining`) is defined once, where the run
+//! expander is.
 //! The C text is in `plan.rs` (shared), `steps.rs` and `runs.rs`, with
 //! `@T@` for the player's prefix, `@W@` for the period's type, `@S@` for the
 //! storage word and `@R@` for the read macro.
