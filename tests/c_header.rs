@@ -228,8 +228,11 @@ fn defines(header: &str, profiles: &Profiles) -> BTreeMap<String, Vec<(String, b
         let Some((macro_name, value)) = rest.split_once(' ') else {
             continue; // the include guard
         };
-        if macro_name.ends_with("_RUNS_READ(p)") {
-            continue; // the run player's memory access
+        if macro_name.ends_with("_RUNS_READ(p)")
+            || macro_name.ends_with("_READ32(p)")
+            || macro_name.starts_with("STEPPER_PROFILES_")
+        {
+            continue; // the players' memory access and inline step paths
         }
         let owner = profiles
             .profiles()
@@ -421,9 +424,16 @@ fn check_header(
             let source = fs::read_to_string(&c).unwrap();
             assert_eq!(header, profiles.c_split(&name, style).header);
             assert!(source.contains(&format!("#include \"{name}\"\n")));
-            // Declarations only: no table is defined in the header.
+            // Declarations only: no table is defined in the header, and
+            // nothing is static but the players' inline step paths.
+            assert!(!header.contains("] = {"), "{header}");
             assert!(
-                !header.contains("] = {") && !header.contains("static"),
+                header
+                    .lines()
+                    .filter(|l| l.contains("static"))
+                    .all(|l| l.starts_with("STEPPER_PROFILES_INLINE ")
+                        || l.starts_with("STEPPER_PROFILES_NOINLINE static ")
+                        || l.contains("#define STEPPER_PROFILES_INLINE static")),
                 "{header}"
             );
             sources.push(source_name);

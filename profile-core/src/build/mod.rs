@@ -134,9 +134,11 @@ impl Profiles {
     }
 
     /// One C header with every profile's table (`static const`) and
-    /// figures (`#define`s); compiles as C89 and C99. Its guard and run
-    /// player are named after the profiles file (`STEPPER_PROFILES_RAMPS_H`
-    /// and `ramps_runs_*` for `ramps.toml`); [`c_header_named`](Self::c_header_named)
+    /// figures (`#define`s), and the players of its kinds of table (a move
+    /// player with `Player`'s semantics per kind, the run expander);
+    /// compiles as C89 and C99. Its guard and players are named after the
+    /// profiles file (`STEPPER_PROFILES_RAMPS_H`, `ramps_player_*` and
+    /// `ramps_runs_*` for `ramps.toml`); [`c_header_named`](Self::c_header_named)
     /// names them after the header's own file.
     pub fn c_header(&self) -> String {
         self.c_header_with(&CStyle::default())
@@ -156,8 +158,8 @@ impl Profiles {
     }
 
     /// The C header to be written as `header_name` (`x_axis.h`): its guard
-    /// and run player named after it (`STEPPER_PROFILES_X_AXIS_H`,
-    /// `x_axis_runs_*`), unless `style.prefix` names them, so that the
+    /// and players named after it (`STEPPER_PROFILES_X_AXIS_H`,
+    /// `x_axis_player_*`, `x_axis_runs_*`), unless `style.prefix` names them, so that the
     /// headers of two files, however those are named, go in one program.
     pub fn c_header_named(&self, header_name: &str, style: &CStyle) -> String {
         emit::c::header(
@@ -170,7 +172,7 @@ impl Profiles {
 
     /// A C header of `extern` declarations and figures, and the source file
     /// that defines the tables once; the source includes the header as
-    /// `header_name`, after which the header's guard and run player are
+    /// `header_name`, after which the header's guard and players are
     /// named unless `style.prefix` names them.
     pub fn c_split(&self, header_name: &str, style: &CStyle) -> Split {
         emit::c::split(
@@ -202,7 +204,7 @@ impl Profiles {
     }
 
     /// Writes the C header to `path` and returns where it went, creating
-    /// the folder; its guard and run player are named after the file
+    /// the folder; its guard and players are named after the file
     /// ([`c_header_named`](Self::c_header_named)). In a build script
     /// (`OUT_DIR` set) a relative path is under `OUT_DIR`, never in the
     /// source tree; give an absolute path to write elsewhere.

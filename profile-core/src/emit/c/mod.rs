@@ -3,7 +3,9 @@
 //!
 //! The output compiles under C89 (`-std=c89 -pedantic`) as well as C99 and
 //! later: block comments only, no `long long` constant where C89 cannot take
-//! one, `<stdint.h>` types for the tables.
+//! one, `<stdint.h>` types for the tables. With the tables come a run
+//! expander for compressed tables and a move player per kind of table
+//! (`player`), `Player`'s semantics in C.
 
 use core::fmt::Write;
 use std::format;
@@ -15,8 +17,10 @@ use crate::base::timer::Word;
 use crate::schema::describe;
 use crate::table::owned::Generated;
 
+mod player;
 mod style;
 
+use player::Kinds;
 pub use style::{CStyle, CStyleError};
 
 /// A header of `extern` declarations and `#define`d figures, and the one
@@ -30,13 +34,13 @@ pub struct Split {
     pub source: String,
 }
 
-/// The names a header takes from its own name: its include guard, its run
-/// player's prefix and the macros that go with them. Two headers in one
+/// The names a header takes from its own name: its include guard, its
+/// players' prefix and the macros that go with them. Two headers in one
 /// program need two names.
 struct Names<'a> {
     /// In capitals, for the guard and the implementation macro.
     stem: String,
-    /// The run player's prefix, a C identifier.
+    /// The players' prefix, a C identifier.
     prefix: String,
     /// The profiles file, for the banner.
     source: &'a str,
@@ -88,20 +92,25 @@ impl<'a> Names<'a> {
         format!("STEPPER_PROFILES_{}_H", self.stem)
     }
 
-    /// The macro that asks a single header for the player's definitions.
+    /// The macro that asks a single header for the players' definitions.
     fn implementation(&self) -> String {
         format!("STEPPER_PROFILES_{}_IMPLEMENTATION", self.stem)
     }
 
-    /// The macro the run player reads a word of its tables with.
+    /// The macro the players read a 16-bit word of the tables with.
     fn read(&self) -> String {
         format!("{}_RUNS_READ", self.prefix.to_uppercase())
+    }
+
+    /// The macro the players read a 32-bit period with.
+    fn read32(&self) -> String {
+        format!("{}_READ32", self.prefix.to_uppercase())
     }
 }
 
 /// Whether the tables go to avr-libc's program memory (`PROGMEM`), which
 /// plain loads cannot read: the header then includes `<avr/pgmspace.h>`
-/// and the run player reads with `pgm_read_word`.
+/// and the players read with `pgm_read_word` (`pgm_read_dword`).
 fn progmem(style: &CStyle) -> bool {
     style.attribute.as_deref().is_some_and(|a| {
         a.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
@@ -117,29 +126,15 @@ fn storage_word(style: &CStyle) -> String {
         .map_or(String::new(), |s| format!("{} ", s.trim()))
 }
 
-/// The run player's type and functions, declared: its pointers carry the
+/// The run expander's type and functions, declared: its pointers carry the
 /// tables' storage word, so that they point where the tables are.
 fn runs_api(names: &Names, style: &CStyle) -> String {
-    let (prefix, read) = (&names.prefix, names.read());
+    let prefix = &names.prefix;
     let storage = storage_word(style);
-    let load = if progmem(style) {
-        "pgm_read_word(p)"
-    } else {
-        "(*(p))"
-    };
     format!(
-        "/* Reads one word of this file's run tables. Define {read}(p) before\n \
-         * including it for tables another way must read (or STEPPER_RUNS_READ(p)\n \
-         * for every such file that does not define its own). */\n\
-         #ifndef {read}\n\
-         #ifdef STEPPER_RUNS_READ\n\
-         #define {read}(p) STEPPER_RUNS_READ(p)\n\
-         #else\n\
-         #define {read}(p) {load}\n\
-         #endif\n\
-         #endif\n\n\
-         /* Plays a compressed ramp (a NAME_RUNS table), one period per call, with\n \
-         * integer additions and shifts only: no division, no floating point. */\n\
+        "/* Plays a compressed ramp (a NAME_RUNS table) forwards, one period per call,\n \
+         * with integer additions and shifts only: no division, no floating point.\n \
+         * The move players below play moves (up, cruise, down, stops). */\n\
          typedef struct {{\n    \
          const {storage}uint16_t *next; /* the next run's five words */\n    \
          uint16_t runs_left;   /* runs not started yet */\n    \
@@ -155,7 +150,7 @@ fn runs_api(names: &Names, style: &CStyle) -> String {
     )
 }
 
-/// The run player's definitions: `runs::Expand`, in C89.
+/// The run expander's definitions: `runs::Expand`, in C89.
 fn runs_player(names: &Names, style: &CStyle) -> String {
     let (prefix, read) = (&names.prefix, names.read());
     let storage = storage_word(style);
@@ -196,7 +191,7 @@ fn runs_player(names: &Names, style: &CStyle) -> String {
 /// One header holding everything: each table as
 /// `static const uintN_t NAME_PERIODS[N]` (or `NAME_SEGMENTS[N][2]`) and its
 /// figures as `#define NAME_FIGURE`s. `name` names the header in C (its
-/// guard `STEPPER_PROFILES_NAME_H`, its run player `name_runs_*`) unless
+/// guard `STEPPER_PROFILES_NAME_H`, its players `name_runs_*`, `name_player_*`) unless
 /// `style.prefix` does: the stem of the file it is written to (`x_axis`
 /// for `x_axis.h`). `source` is the profiles file, for the banner.
 pub fn header(name: &str, source: &str, profiles: &[Profile], style: &CStyle) -> String {
@@ -220,12 +215,11 @@ pub fn split(
     let mut c = String::new();
     banner(&mut c, &names);
     let _ = writeln!(c, "#include \"{header_name}\"\n");
-    if profiles
-        .iter()
-        .any(|p| matches!(p.table, Generated::Runs(_)))
-    {
+    let kinds = Kinds::of(profiles);
+    if kinds.runs {
         c.push_str(&runs_player(&names, style));
     }
+    c.push_str(&player::definitions(&names, style, kinds));
     for p in profiles {
         let _ = writeln!(c, "/* Profile {}: see {header_name}. */", p.name);
         table(&mut c, p, "const", style, true);
@@ -253,19 +247,23 @@ fn header_of(
     if progmem(style) {
         let _ = writeln!(out, "#include <avr/pgmspace.h>\n");
     }
-    let compressed = profiles
-        .iter()
-        .any(|p| matches!(p.table, Generated::Runs(_)));
-    if compressed {
+    let kinds = Kinds::of(profiles);
+    out.push_str(&player::read_macros(names, style, kinds));
+    if kinds.runs {
         out.push_str(&runs_api(names, style));
-        if body {
-            // One file defines the player: `#define ..._IMPLEMENTATION`
-            // before including the header there.
-            let implementation = names.implementation();
-            let _ = writeln!(out, "#ifdef {implementation}");
+    }
+    out.push_str(&player::api(names, style, kinds));
+    let definitions = player::definitions(names, style, kinds);
+    if body && (kinds.runs || !definitions.is_empty()) {
+        // One file defines the players: `#define ..._IMPLEMENTATION`
+        // before including the header there.
+        let implementation = names.implementation();
+        let _ = writeln!(out, "#ifdef {implementation}");
+        if kinds.runs {
             out.push_str(&runs_player(names, style));
-            let _ = writeln!(out, "#endif /* {implementation} */\n");
         }
+        out.push_str(&definitions);
+        let _ = writeln!(out, "#endif /* {implementation} */\n");
     }
     for p in profiles {
         profile_comment(&mut out, p);

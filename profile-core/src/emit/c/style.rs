@@ -12,10 +12,10 @@ use std::vec::Vec;
 /// in the memory the target reads constants from, and the header's name.
 ///
 /// Both are written as given, in the declarations and the definitions,
-/// once [`check`](Self::check) accepts them. The run player's pointers
-/// carry the storage words too; with `PROGMEM` in the attribute the header
-/// includes `<avr/pgmspace.h>` and the run player reads with
-/// `pgm_read_word`.
+/// once [`check`](Self::check) accepts them. The players' pointers carry
+/// the storage words too; with `PROGMEM` in the attribute the header
+/// includes `<avr/pgmspace.h>` and the players read with `pgm_read_word`
+/// (`pgm_read_dword` for `uint32_t` periods).
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct CStyle {
     /// Words before the element type that qualify it: `__code` (SDCC, 8051
@@ -25,7 +25,7 @@ pub struct CStyle {
     /// `__attribute__((section(".ramps")))` for a linker section.
     pub attribute: Option<String>,
     /// The header's name in C, a C identifier: its include guard
-    /// (`STEPPER_PROFILES_<PREFIX>_H`), its run player (`<prefix>_runs_t`,
+    /// (`STEPPER_PROFILES_<PREFIX>_H`), its players (`<prefix>_runs_t`,
     /// `<prefix>_runs_start`, ...) and their macros. Without it, the name
     /// of the file the header is written to (`x_axis` for `x_axis.h`).
     pub prefix: Option<String>,

@@ -1,0 +1,212 @@
+//! The move players of a C header: `Player`'s semantics in C89, one player
+//! per kind of table the header holds (`uint16_t` periods, `uint32_t`
+//! periods, runs), each emitted only where a profile has that kind.
+//!
+//! Each player's step path (`PREFIX_player_step`, `_next`) is an inline
+//! function in the header, so that a step interrupt saves only the registers
+//! it uses: the per-step tables' refill is inline too (16-bit counts, no
+//! call); the runs' refill, which reads a run, is called at a run's end, so
+//! that its registers are saved only then. The planner (`_init`, `_start`,
+//! `_stop`, `_set_cruise`, `_remaining`) is defined once, where the run
+//! expander is.
+//! The C text is in `plan.rs` (shared), `steps.rs` and `runs.rs`, with
+//! `@T@` for the player's prefix, `@W@` for the period's type, `@S@` for the
+//! storage word and `@R@` for the read macro.
+
+use std::format;
+use std::string::String;
+use std::vec::Vec;
+
+use super::{CStyle, Names, progmem, storage_word};
+use crate::base::timer::Word;
+use crate::emit::Profile;
+use crate::table::owned::Generated;
+
+mod plan;
+mod runs;
+mod steps;
+
+/// Which players a header holds: one per kind of table among its profiles.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(super) struct Kinds {
+    /// Per-step tables of `uint16_t`.
+    pub(super) u16: bool,
+    /// Per-step tables of `uint32_t`.
+    pub(super) u32: bool,
+    /// Compressed tables.
+    pub(super) runs: bool,
+}
+
+impl Kinds {
+    /// The kinds of `profiles`' tables (segment tables have no player).
+    pub(super) fn of(profiles: &[Profile]) -> Self {
+        let mut kinds = Kinds::default();
+        for p in profiles {
+            match &p.table {
+                Generated::Steps(t) => match t.spec.timer.word {
+                    Word::U16 => kinds.u16 = true,
+                    Word::U32 => kinds.u32 = true,
+                },
+                Generated::Runs(_) => kinds.runs = true,
+                Generated::Segments(_) => {}
+            }
+        }
+        kinds
+    }
+
+    fn any(self) -> bool {
+        self.u16 || self.u32 || self.runs
+    }
+}
+
+/// A read macro: `name(p)` reads through `p` with `load`, unless the user
+/// defines it, or `fallback(p)` for every header, first.
+fn read_macro(name: &str, fallback: &str, load: &str) -> String {
+    format!(
+        "#ifndef {name}\n#ifdef {fallback}\n#define {name}(p) {fallback}(p)\n#else\n\
+         #define {name}(p) {load}\n#endif\n#endif\n"
+    )
+}
+
+/// The macros the players and the run expander read the tables with: one
+/// for 16-bit words (runs and `uint16_t` periods), one for 32-bit periods;
+/// `pgm_read_word` and `pgm_read_dword` for `PROGMEM` tables.
+pub(super) fn read_macros(names: &Names, style: &CStyle, kinds: Kinds) -> String {
+    let mut out = String::new();
+    let pgm = progmem(style);
+    if kinds.runs || kinds.u16 {
+        let read = names.read();
+        out.push_str(&format!(
+            "/* Reads one 16-bit word of this file's tables. Define {read}(p) before\n \
+             * including it for tables another way must read (or STEPPER_RUNS_READ(p)\n \
+             * for every such file that does not define its own). */\n"
+        ));
+        let load = if pgm { "pgm_read_word(p)" } else { "(*(p))" };
+        out.push_str(&read_macro(&read, "STEPPER_RUNS_READ", load));
+        out.push('\n');
+    }
+    if kinds.u32 {
+        let read = names.read32();
+        out.push_str(&format!(
+            "/* Reads one 32-bit period of this file's tables. Define {read}(p) before\n \
+             * including it for tables another way must read (or STEPPER_READ32(p)\n \
+             * for every such file that does not define its own). */\n"
+        ));
+        let load = if pgm { "pgm_read_dword(p)" } else { "(*(p))" };
+        out.push_str(&read_macro(&read, "STEPPER_READ32", load));
+        out.push('\n');
+    }
+    out
+}
+
+/// What a player's text is filled with.
+struct Fill {
+    /// The player's prefix: `ramps_player`.
+    name: String,
+    /// The period's type.
+    word: &'static str,
+    /// The storage word and a space, or nothing.
+    storage: String,
+    /// The read macro.
+    read: String,
+}
+
+impl Fill {
+    fn apply(&self, template: &str) -> String {
+        template
+            .replace("@T@", &self.name)
+            .replace("@W@", self.word)
+            .replace("@S@", &self.storage)
+            .replace("@R@", &self.read)
+    }
+}
+
+/// The players of `kinds`, each with its templates: (fill, API, helpers,
+/// `_init`).
+fn players(names: &Names, style: &CStyle, kinds: Kinds) -> Vec<(Fill, [&'static str; 3])> {
+    let prefix = &names.prefix;
+    let storage = storage_word(style);
+    let mut out = Vec::new();
+    if kinds.u16 {
+        let fill = Fill {
+            name: format!("{prefix}_player"),
+            word: "uint16_t",
+            storage: storage.clone(),
+            read: names.read(),
+        };
+        out.push((fill, [steps::API, steps::DEFINITIONS, steps::INIT]));
+    }
+    if kinds.u32 {
+        let fill = Fill {
+            name: format!("{prefix}_player32"),
+            word: "uint32_t",
+            storage: storage.clone(),
+            read: names.read32(),
+        };
+        out.push((fill, [steps::API, steps::DEFINITIONS, steps::INIT]));
+    }
+    if kinds.runs {
+        let fill = Fill {
+            name: format!("{prefix}_runs_player"),
+            word: "uint16_t",
+            storage,
+            read: names.read(),
+        };
+        out.push((fill, [runs::API, runs::DEFINITIONS, runs::INIT]));
+    }
+    out
+}
+
+/// The players' types, declarations and inline step paths, for the header,
+/// after the read macros.
+pub(super) fn api(names: &Names, style: &CStyle, kinds: Kinds) -> String {
+    if !kinds.any() {
+        return String::new();
+    }
+    let mut out = String::from(
+        "/* A player's step path is inline: a step interrupt calling it calls no\n \
+         * function, and saves only the registers it uses. */\n\
+         #ifndef STEPPER_PROFILES_INLINE\n\
+         #if defined(__GNUC__)\n\
+         #define STEPPER_PROFILES_INLINE static __inline__ __attribute__((__always_inline__))\n\
+         #elif defined(__STDC_VERSION__) && __STDC_VERSION__ >= 199901L\n\
+         #define STEPPER_PROFILES_INLINE static inline\n\
+         #else\n\
+         #define STEPPER_PROFILES_INLINE static\n\
+         #endif\n\
+         #endif\n\
+         /* A refill is the exception: laid out off the step path where the\n \
+         * compiler can be told so. */\n\
+         #ifndef STEPPER_PROFILES_UNLIKELY\n\
+         #if defined(__GNUC__)\n\
+         #define STEPPER_PROFILES_UNLIKELY(x) __builtin_expect(!!(x), 0)\n\
+         #else\n\
+         #define STEPPER_PROFILES_UNLIKELY(x) (x)\n\
+         #endif\n\
+         #endif\n\
+         /* What only the rarest refills need stays out of their way. */\n\
+         #ifndef STEPPER_PROFILES_NOINLINE\n\
+         #if defined(__GNUC__)\n\
+         #define STEPPER_PROFILES_NOINLINE __attribute__((__noinline__))\n\
+         #else\n\
+         #define STEPPER_PROFILES_NOINLINE\n\
+         #endif\n\
+         #endif\n\n",
+    );
+    for (fill, [api, _, _]) in players(names, style, kinds) {
+        out.push_str(&fill.apply(api));
+    }
+    out
+}
+
+/// The players' planners, defined once: in the single header's
+/// implementation section, or in the split source file.
+pub(super) fn definitions(names: &Names, style: &CStyle, kinds: Kinds) -> String {
+    let mut out = String::new();
+    for (fill, [_, helpers, init]) in players(names, style, kinds) {
+        out.push_str(&fill.apply(helpers));
+        out.push_str(&fill.apply(plan::PLAN));
+        out.push_str(&fill.apply(init));
+    }
+    out
+}

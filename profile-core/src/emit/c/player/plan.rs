@@ -1,0 +1,259 @@
+//! The move's plan in C, shared by every kind of table: `Player::start`,
+//! `stop` and `set_cruise` with the planner of `player::plan`, written
+//! against a few functions each kind defines (`_period_`, `_place_`,
+//! `_crossing_`, `_capped_walk_`, `_last_`, `_enter_`, `_first_`).
+//!
+//! `@T@` is the player's prefix (`ramps_player`).
+
+/// The planner's C89 definitions.
+pub(super) const PLAN: &str = r#"/* One step of the acceleration side towards the cruise position: 1, -1 or 0. */
+static signed char @T@_toward_(const @T@_t *p, uint32_t pos)
+{
+    return pos < p->cruise ? 1 : pos > p->cruise ? -1 : 0;
+}
+
+/* Adds a stretch to the plan (at most 8: a capped walk, a walk and a cruise
+ * out of reach of the deceleration table, then a walk, a cruise and the
+ * deceleration within reach). */
+static void @T@_push_(@T@_t *p, unsigned char decel, uint32_t pos, signed char dir,
+    uint32_t count, uint32_t acc, signed char acc_dir)
+{
+    @T@_stretch_t *s;
+    if (p->len >= 8) {
+        return;
+    }
+    s = &p->plan[p->len];
+    p->len++;
+    s->count_hi = (uint16_t)(count >> 16);
+    s->count_lo = (uint16_t)count;
+    s->total = count;
+    s->acc = acc;
+    s->acc_dir = acc_dir;
+    s->dir = dir;
+    s->decel = decel;
+    s->decelerating = (unsigned char)(decel && dir < 0);
+    @T@_place_(p, s, pos);
+}
+
+/* The acceleration side walking from `pos` for `n` steps (towards the cruise
+ * position, reaching it at most), then holding; where it ends. */
+static uint32_t @T@_walk_(@T@_t *p, uint32_t pos, uint32_t n)
+{
+    uint32_t distance = pos > p->cruise ? pos - p->cruise : p->cruise - pos;
+    uint32_t walked = n < distance ? n : distance;
+    signed char dir = @T@_toward_(p, pos);
+    if (walked > 0) {
+        @T@_push_(p, 0, pos, dir, walked, pos, dir);
+    }
+    pos = dir > 0 ? pos + walked : pos - walked;
+    if (n > walked) {
+        @T@_push_(p, 0, pos, 0, n - walked, pos, 0);
+    }
+    return pos;
+}
+
+/* The last `r` steps, the deceleration table within reach: the acceleration
+ * side plays until the deceleration table, read at the steps that remain, is
+ * not faster; then the deceleration table plays to the end. */
+static void @T@_within_reach_(@T@_t *p, uint32_t pos, uint32_t r)
+{
+    uint32_t j = @T@_crossing_(p, pos, r), after;
+    pos = @T@_walk_(p, pos, j);
+    if (j < r) {
+        after = r - 1 - j;
+        @T@_push_(p, 1, after, -1, after + 1, pos, 0);
+    }
+}
+
+/* Plans `r` steps of a move that is not decelerating, the acceleration side
+ * at `pos`: the stretches it is made of. */
+static void @T@_plan_(@T@_t *p, uint32_t pos, uint32_t r)
+{
+    uint32_t l = p->decel_last, far, n, cap;
+    signed char acc_dir;
+    p->len = 0;
+    while (r > 0 && r - 1 > l) {
+        /* The deceleration table is out of reach for `far` more steps. */
+        far = r - (l + 1);
+        if (@T@_period_(p, 0, pos) < p->decel_fastest) {
+            /* No faster than the deceleration table's fastest entry: its top
+             * plays; the acceleration side only walks down. */
+            acc_dir = (signed char)(p->cruise < pos ? -1 : 0);
+            n = acc_dir < 0 ? @T@_capped_walk_(p, pos, far) : far;
+            @T@_push_(p, 1, l, 0, n, pos, acc_dir);
+            if (acc_dir < 0) {
+                pos -= n;
+            }
+        } else if (pos < p->cruise) {
+            /* Up to the cruise position or the first capped step. */
+            cap = p->cap > pos ? p->cap - pos : 0;
+            n = p->cruise - pos < far ? p->cruise - pos : far;
+            if (cap < 1) {
+                cap = 1;
+            }
+            if (cap < n) {
+                n = cap;
+            }
+            pos = @T@_walk_(p, pos, n);
+        } else {
+            pos = @T@_walk_(p, pos, far);
+            n = far;
+        }
+        r -= n;
+    }
+    if (r > 0) {
+        @T@_within_reach_(p, pos, r);
+    }
+}
+
+/* Steps of a stretch not yet handed to the step path. */
+static uint32_t @T@_count_(const @T@_stretch_t *s)
+{
+    return ((uint32_t)s->count_hi << 16) | s->count_lo;
+}
+
+/* Hands `n` steps of stretch `s` to the step path: at most 255 at once. */
+static void @T@_take_(@T@_t *p, @T@_stretch_t *s, uint16_t n)
+{
+    uint32_t count = @T@_count_(s) - n;
+    s->count_hi = (uint16_t)(count >> 16);
+    s->count_lo = (uint16_t)count;
+    p->left = (unsigned char)(n > 255 ? 255 : n);
+    p->rest = (uint16_t)(n - p->left);
+}
+
+/* Follows the plan from its start: its first steps taken at once. */
+static void @T@_follow_(@T@_t *p, uint32_t before)
+{
+    p->before = before;
+    p->cur = p->plan;
+    p->end = p->plan + p->len;
+    p->left = 0;
+    p->rest = 0;
+    if (p->len == 0) {
+        p->plan[0].count_hi = 0;
+        p->plan[0].count_lo = 0;
+    } else {
+        @T@_enter_(p, p->plan);
+        @T@_take_(p, p->plan, @T@_first_(p->plan));
+    }
+}
+
+uint32_t @T@_remaining(const @T@_t *p)
+{
+    uint32_t n = (uint32_t)p->left + p->rest;
+    unsigned char i;
+    for (i = 0; i < p->len; i++) {
+        n += @T@_count_(&p->plan[i]);
+    }
+    return n;
+}
+
+/* Steps of the stretch being played that have been played. */
+static uint32_t @T@_played_(const @T@_t *p)
+{
+    return p->cur->total - @T@_count_(p->cur) - p->rest - p->left;
+}
+
+/* Where the acceleration side stands after the steps played, and whether the
+ * deceleration table has taken over. */
+static uint32_t @T@_acc_(const @T@_t *p, unsigned char *decelerating)
+{
+    const @T@_stretch_t *s = p->cur;
+    uint32_t played;
+    *decelerating = 0;
+    if (s >= p->end) {
+        return 0;
+    }
+    played = @T@_played_(p);
+    *decelerating = s->decelerating;
+    return s->acc_dir > 0 ? s->acc + played : s->acc_dir < 0 ? s->acc - played : s->acc;
+}
+
+/* The period of the last step played, in ticks (0 at rest). Nothing of a plan
+ * is played only right after it is made: then the period played before. */
+static uint32_t @T@_last_period_(const @T@_t *p)
+{
+    if (p->cur >= p->end || @T@_played_(p) == 0) {
+        return p->before;
+    }
+    return @T@_last_(p);
+}
+
+/* The largest position of the deceleration table whose period is not faster
+ * than `current`: a binary search, then a bounded look past the boundary for
+ * the ties of diffused tables. */
+static uint32_t @T@_entry_point_(const @T@_t *p, uint32_t current)
+{
+    uint32_t lo = 0, hi = p->decel_last, mid;
+    unsigned char k;
+    if (@T@_period_(p, 1, hi) >= current) {
+        lo = hi;
+    } else {
+        while (hi - lo > 1) {
+            mid = lo + ((hi - lo) >> 1);
+            if (@T@_period_(p, 1, mid) >= current) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+    }
+    for (k = 0; k < 16; k++) {
+        if (lo >= p->decel_last || @T@_period_(p, 1, lo + 1) < current) {
+            break;
+        }
+        lo++;
+    }
+    return lo;
+}
+
+void @T@_start(@T@_t *p, uint32_t steps)
+{
+    p->cruise = p->accel_last;
+    p->len = 0;
+    if (steps > 0 && !p->empty) {
+        @T@_plan_(p, 0, steps);
+    }
+    @T@_follow_(p, 0);
+}
+
+void @T@_set_cruise(@T@_t *p, uint32_t pos)
+{
+    unsigned char decelerating;
+    uint32_t acc, remaining, last;
+    p->cruise = pos < p->accel_last ? pos : p->accel_last;
+    acc = @T@_acc_(p, &decelerating);
+    remaining = @T@_remaining(p);
+    if (remaining > 0 && !decelerating) {
+        last = @T@_last_period_(p);
+        @T@_plan_(p, acc, remaining);
+        @T@_follow_(p, last);
+    }
+}
+
+void @T@_stop(@T@_t *p)
+{
+    unsigned char decelerating;
+    uint32_t remaining = @T@_remaining(p), current, needed, acc;
+    if (remaining == 0) {
+        return;
+    }
+    current = @T@_last_period_(p);
+    /* Not moving yet, or already slower than the table's slowest entry: at
+     * rest now. */
+    if (current == 0 || @T@_period_(p, 1, 0) < current) {
+        p->len = 0;
+        @T@_follow_(p, current);
+        return;
+    }
+    needed = @T@_entry_point_(p, current) + 1;
+    if (needed < remaining) {
+        acc = @T@_acc_(p, &decelerating);
+        p->len = 0;
+        @T@_push_(p, 1, needed - 1, -1, needed, acc, 0);
+        @T@_follow_(p, current);
+    }
+}
+
+"#;
