@@ -188,7 +188,11 @@ impl CurveKind for Exponential {
     }
 
     fn read(r: &mut dyn Reader) -> Option<Self> {
-        let (fmin, fmax, f_inf) = (r.number(Key::FMIN), r.number(Key::FMAX), r.number(Key::F_INF));
+        let (fmin, fmax, f_inf) = (
+            r.number(Key::FMIN),
+            r.number(Key::FMAX),
+            r.number(Key::F_INF),
+        );
         let extent = if r.has(Key::LEN) {
             ExponentialExtent::Len(r.len()?)
         } else {

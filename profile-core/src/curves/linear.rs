@@ -53,7 +53,6 @@ impl Linear {
         }
     }
 
-
     /// Frequency after `i` steps, `sqrt(fmin² + 2 a i)`, held at `fmax` once reached.
     pub fn freq_at_index(&self, i: u32) -> f64 {
         let a = self.accel(true);

@@ -255,7 +255,11 @@ impl CurveKind for ThreeStage {
     }
 
     fn read(r: &mut dyn Reader) -> Option<Self> {
-        let (fmin, fmax, accel) = (r.number(Key::FMIN), r.number(Key::FMAX), r.number(Key::ACCEL));
+        let (fmin, fmax, accel) = (
+            r.number(Key::FMIN),
+            r.number(Key::FMAX),
+            r.number(Key::ACCEL),
+        );
         let (f1, f2, shape) = (r.number(Key::F1), r.number(Key::F2), r.number(Key::SHAPE));
         Some(ThreeStage {
             fmin: fmin?,
