@@ -6,6 +6,7 @@ pub(crate) mod error;
 pub(crate) mod key;
 pub(crate) mod math;
 pub(crate) mod modes;
+pub(crate) mod numbers;
 pub(crate) mod solve;
 pub(crate) mod timer;
 
