@@ -167,14 +167,15 @@ impl Slope {
         }
     }
 
-    /// Adds a period of `ticks`; `scale` is ticks per second.
-    fn push(&mut self, ticks: f64, scale: f64) {
+    /// Adds a period of `ticks`; `scale` is ticks per second. Returns the
+    /// acceleration it reads, once two windows are seen.
+    fn push(&mut self, ticks: f64, scale: f64) -> Option<f64> {
         let w = self.window;
         self.periods[self.count % (2 * w)] = ticks;
         self.now += ticks;
         self.count += 1;
         if self.count < 2 * w {
-            return;
+            return None;
         }
         let sum = |from: usize| -> f64 {
             (from..from + w)
@@ -199,6 +200,7 @@ impl Slope {
             }
         }
         self.accels[slot] = (accel, at);
+        Some(accel)
     }
 }
 
@@ -237,9 +239,8 @@ pub(crate) struct Quantizer {
     emitted: u64,
     /// The integer table's acceleration.
     windowed: AccelWindows,
-    /// The last unrounded entry, in ticks.
-    last_exact: Option<f64>,
-    /// The unrounded periods.
+    /// The unrounded periods: the curve's acceleration and jerk, entry by
+    /// entry.
     curve: Slope,
     figures: Figures,
 }
@@ -254,7 +255,6 @@ impl Quantizer {
             exact_edge: 0.0,
             emitted: 0,
             windowed: AccelWindows::new(f64::INFINITY),
-            last_exact: None,
             curve: Slope::new(1),
             figures: Figures {
                 len: 0,
@@ -408,13 +408,9 @@ impl Quantizer {
         }
         // The curve's own frequency and acceleration here, between this
         // unrounded entry and the one before: what the windows resolve.
-        let f = self.scale / entry;
-        let accel = self.last_exact.map_or(0.0, |before| {
-            (f - self.scale / before) / ((before + entry) / 2.0 / self.scale)
-        });
-        self.last_exact = Some(entry);
-        self.windowed.push(ticks as f64, self.scale, f, accel);
-        self.curve.push(entry, self.scale);
+        let accel = self.curve.push(entry, self.scale).unwrap_or(0.0);
+        self.windowed
+            .push(ticks as f64, self.scale, self.scale / entry, accel);
         fig.last_ticks = ticks;
         fig.len = index + 1;
     }
