@@ -109,6 +109,8 @@ pub struct Player<'a, W, L = AnyLayout> {
     /// The first acceleration step faster than `decel_fastest`.
     cap: u32,
     cruise: u32,
+    /// Both ramps are ordered slow to fast: planning searches them.
+    monotone: bool,
     layout: PhantomData<L>,
 }
 
@@ -171,6 +173,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             decel_fastest,
             cap: accel.first_faster_than(decel_fastest),
             cruise: accel_last,
+            monotone: accel.is_ordered() && decel.is_ordered(),
             run: Run::empty(),
             computed: RunState::default(),
             before: 0,
@@ -188,6 +191,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             decel_fastest: self.decel_fastest,
             cap: self.cap,
             cruise: self.cruise,
+            monotone: self.monotone,
         }
     }
 

@@ -165,6 +165,9 @@ pub(crate) struct Sides<'p, 'a, W> {
     /// The first acceleration step faster than `decel_fastest`.
     pub(crate) cap: u32,
     pub(crate) cruise: u32,
+    /// Both ramps are ordered slow to fast (non-increasing periods): their
+    /// crossings can be searched.
+    pub(crate) monotone: bool,
 }
 
 impl<'a, W: TableWord> Sides<'_, 'a, W> {
@@ -302,7 +305,62 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
     /// The first of the last `r` steps at which the deceleration ramp, read
     /// at the steps that remain, is not faster than the acceleration side
     /// (walking from `p` towards the cruise position); `r` if none is.
+    ///
+    /// On ramps ordered slow to fast, once the acceleration side walks up or
+    /// holds, the deceleration ramp read at the steps that remain only gets
+    /// slower and the acceleration side only faster: the first step where
+    /// one is not faster than the other is found by bisection. Walking down,
+    /// both get slower, and other ramps have no order: those steps are read
+    /// one by one.
     fn crossing(&self, p: u32, r: u32) -> u32 {
+        let walked_down = match self.toward(p).1 {
+            -1 if self.monotone => (p - self.cruise).min(r),
+            -1 => r,
+            _ if self.monotone => 0,
+            _ => r,
+        };
+        if let Some(j) = self.scan(p, r, walked_down) {
+            return j;
+        }
+        // `f(j)`: the deceleration ramp at step `j` is not faster; false at
+        // every step before `walked_down`, false then true from there.
+        let mut d = None;
+        let mut a = None;
+        let (mut lo, mut hi) = (walked_down, r);
+        while lo < hi {
+            let j = lo + (hi - lo) / 2;
+            let dp = Cursor::period_near(&mut d, self.decel, r - 1 - j);
+            let ap = Cursor::period_near(&mut a, self.accel, self.walked(p, j));
+            let found = match (dp, ap) {
+                (Some(dp), Some(ap)) => dp.into_ticks() >= ap.into_ticks(),
+                // Past a ramp's end nothing is read, as in the scan.
+                _ => return r,
+            };
+            if found {
+                hi = j;
+            } else {
+                lo = j + 1;
+            }
+        }
+        lo
+    }
+
+    /// Where the acceleration side stands `j` steps after `p`.
+    fn walked(&self, p: u32, j: u32) -> u32 {
+        match self.toward(p).1 {
+            1 => p.saturating_add(j).min(self.cruise),
+            -1 => p.saturating_sub(j).max(self.cruise),
+            _ => p,
+        }
+    }
+
+    /// [`Sides::crossing`] read step by step over the first `n` of the last
+    /// `r` steps: the step found, or `None` when none of those is, `Some(r)`
+    /// when a ramp ends before.
+    fn scan(&self, p: u32, r: u32, n: u32) -> Option<u32> {
+        if n == 0 {
+            return None;
+        }
         if let (
             Ramp::Steps {
                 periods: a,
@@ -317,41 +375,41 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
             // Per-step tables: read them directly. Held at the cruise
             // position, the acceleration side's period is one number: scan
             // the deceleration table down for the first that is not faster.
-            if self.toward(p).1 == 0 {
+            if self.toward(p).1 == 0 && n == r {
                 if let Some(&held) = a.get(p as usize) {
                     let held = held.into_ticks();
                     let top = (r as usize).min(d.len());
                     // From entry `r - 1` down; past the table's end there is
                     // nothing to read, as in the walk below.
                     if top == r as usize {
-                        return match d[..top].iter().rposition(|x| x.into_ticks() >= held) {
-                            Some(i) => r - 1 - i as u32,
-                            None => r,
-                        };
+                        return Some(
+                            match d[..top].iter().rposition(|x| x.into_ticks() >= held) {
+                                Some(i) => r - 1 - i as u32,
+                                None => r,
+                            },
+                        );
                     }
                 }
             }
             let (mut pa, mut di) = (p as usize, r as usize - 1);
-            for j in 0..r {
+            for j in 0..n {
                 let (Some(da), Some(aa)) = (d.get(di), a.get(pa)) else {
-                    break;
+                    return Some(r);
                 };
                 if da.into_ticks() >= aa.into_ticks() {
-                    return j;
+                    return Some(j);
                 }
                 di = di.wrapping_sub(1);
                 pa = self.toward(pa as u32).0 as usize;
             }
-            return r;
+            return (n == r).then_some(r);
         }
         let mut d = Cursor::at(self.decel, r - 1).unwrap_or(Cursor::ZERO);
         let mut a = Cursor::at(self.accel, p).unwrap_or(Cursor::ZERO);
-        let mut j = 0;
-        while j < r {
+        for j in 0..n {
             if d.period(self.decel).into_ticks() >= a.period(self.accel).into_ticks() {
-                return j;
+                return Some(j);
             }
-            j += 1;
             d.backward(self.decel);
             match self.toward(a.pos).1 {
                 1 => {
@@ -363,6 +421,6 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
                 _ => {}
             }
         }
-        r
+        (n == r).then_some(r)
     }
 }

@@ -140,6 +140,32 @@ impl<'a, W: TableWord> Ramp<'a, W> {
         .unwrap_or(0)
     }
 
+    /// `true` when the ramp is ordered slow to fast: no step's period is
+    /// longer than the one before (ties allowed), so that positions along
+    /// it can be searched by period.
+    pub(crate) fn is_ordered(&self) -> bool {
+        fn falls(mut periods: impl Iterator<Item = u32>) -> bool {
+            let Some(mut last) = periods.next() else {
+                return true;
+            };
+            periods.all(|p| {
+                let ok = p <= last;
+                last = p;
+                ok
+            })
+        }
+        match *self {
+            Ramp::Steps { periods, .. } => falls(periods.iter().map(|p| p.into_ticks())),
+            Ramp::Segments(pairs) => falls(
+                pairs
+                    .iter()
+                    .filter(|p| p.1.into_ticks() > 0)
+                    .map(|p| p.0.into_ticks()),
+            ),
+            Ramp::Runs(runs) => falls(Expand::new(runs)),
+        }
+    }
+
     /// The first step whose period is shorter than `ticks`, or `u32::MAX`.
     pub(crate) fn first_faster_than(&self, ticks: u32) -> u32 {
         let Some(mut c) = Cursor::at(self, 0) else {
