@@ -39,6 +39,18 @@ impl core::fmt::Display for Moving {
     }
 }
 
+/// What an [`Axis`] plays when the move playing ends.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Then {
+    /// Rest.
+    Rest,
+    /// A move to this position: the target was behind, or nearer than the
+    /// motor could stop.
+    To(i64),
+    /// A run this way.
+    Run(Direction),
+}
+
 /// A [`Player`] with a position, in steps: [`Axis::move_to`] and
 /// [`Axis::move_by`] choose the direction and start the move, and the
 /// position follows every step played.
@@ -46,29 +58,50 @@ impl core::fmt::Display for Moving {
 /// The position costs nothing per step: it is the move's end less the steps
 /// that remain, so [`Axis::step`] is [`Player::step`].
 ///
+/// A new target while a move plays is taken at once. Ahead, and at least
+/// the steps the motor needs to stop ([`Player::steps_to_stop`]), the move
+/// goes on and ends there ([`Player::retarget`]). Nearer or behind, the
+/// axis decelerates along its deceleration ramp to rest, then moves to the
+/// target from there: when that is behind, it reverses at the ramp's
+/// slowest entry, and [`Axis::direction`] changes at the step that starts
+/// the way back. The speed never jumps: each period is the one before, or
+/// a neighbouring entry of a ramp.
+///
 /// ```
 /// use profile_core::player::{Axis, Direction, Player, Ramp};
 ///
 /// static RAMP: [u16; 4] = [4000, 3000, 2000, 1500];
 /// let mut axis = Axis::new(Player::new(Ramp::steps(&RAMP)), 0);
 /// // Set the driver's direction pin, then step.
-/// assert_eq!(axis.move_to(-10), Ok(Direction::Backward));
+/// assert_eq!(axis.move_to(-10), Direction::Backward);
 /// let mut reload = 0;
 /// for _ in 0..4 {
 ///     axis.step(|period| reload = period);
 /// }
 /// assert_eq!(axis.position(), -4);
-/// while axis.step(|period| reload = period) {}
-/// assert_eq!((axis.position(), reload), (-10, 4000));
+/// // Back to 0: a stop, then the way back.
+/// axis.move_to(0);
+/// let mut path = vec![];
+/// while axis.step(|period| reload = period) {
+///     path.push((axis.position(), axis.direction(), reload));
+/// }
+/// assert_eq!(path[3], (-8, Direction::Backward, 4000));
+/// assert_eq!(path[4], (-7, Direction::Forward, 4000));
+/// assert_eq!((axis.position(), reload), (0, 4000));
 /// ```
 // The player first, so that its step path keeps its offsets.
 #[derive(Clone, Debug)]
 #[repr(C)]
 pub struct Axis<'a, W, L = AnyLayout> {
     player: Player<'a, W, L>,
-    /// Where the move playing ends, in steps.
+    /// Where the move playing ends, in steps (before a run's laps).
     end: i64,
     direction: Direction,
+    /// The move after this one.
+    then: Then,
+    /// The last reversal: the direction before it, and the steps the
+    /// player had left once it handed out the first period after it.
+    turn: Option<(Direction, u32)>,
 }
 
 impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
@@ -78,12 +111,19 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
             player,
             end: position,
             direction: Direction::Forward,
+            then: Then::Rest,
+            turn: None,
         }
+    }
+
+    /// The steps to the move's end, a run's laps taken off.
+    fn left(&self) -> i64 {
+        i64::from(self.player.remaining()) - self.player.extended() as i64
     }
 
     /// The position, in steps: exact after every step.
     pub fn position(&self) -> i64 {
-        self.end - self.direction.sign() * i64::from(self.player.remaining())
+        self.end - self.direction.sign() * self.left()
     }
 
     /// Sets the position (after homing, say), at rest; refused while a move
@@ -95,76 +135,179 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
     }
 
     /// The direction of the move playing, or of the last one: what the
-    /// driver's direction pin must say.
+    /// driver's direction pin must say for the step [`Axis::step`] plays.
     pub fn direction(&self) -> Direction {
         self.direction
     }
 
-    /// Starts a move from rest to `target`; returns the direction to set
-    /// before the first step. A move to the position itself has no steps.
-    /// Refused while another move plays; a move of more than `u32::MAX`
-    /// steps stops there.
-    pub fn move_to(&mut self, target: i64) -> Result<Direction, Moving> {
-        let delta = target.saturating_sub(self.position());
-        self.move_by(delta)
+    /// Moves to `target` and returns the direction to set now. From rest,
+    /// starts the move (a move to the position itself has no steps; one of
+    /// more than `u32::MAX` steps stops there). While a move plays, takes
+    /// the new target as the type's docs say.
+    pub fn move_to(&mut self, target: i64) -> Direction {
+        self.turn = None;
+        if self.player.is_done() {
+            self.then = Then::Rest;
+            self.start_to(target);
+            return self.direction;
+        }
+        let position = self.position();
+        let delta = target.saturating_sub(position);
+        let ahead = delta != 0 && delta.signum() == self.direction.sign();
+        let reach = u32::try_from(delta.unsigned_abs()).ok();
+        match reach {
+            Some(steps) if ahead && steps >= self.player.steps_to_stop() => {
+                self.then = Then::Rest;
+                self.replan(|p| {
+                    p.retarget(steps);
+                });
+            }
+            _ => {
+                self.then = Then::To(target);
+                self.replan(Player::stop);
+            }
+        }
+        self.direction
     }
 
-    /// Starts a move of `delta` steps from rest (negative: backward);
-    /// returns the direction to set before the first step.
-    pub fn move_by(&mut self, delta: i64) -> Result<Direction, Moving> {
-        self.idle()?;
+    /// Moves by `delta` steps from the position (negative: backward), as
+    /// [`Axis::move_to`] does.
+    pub fn move_by(&mut self, delta: i64) -> Direction {
+        self.move_to(self.position().saturating_add(delta))
+    }
+
+    /// Runs `direction` without an end ([`Player::run`]) until
+    /// [`Axis::stop`]: at once from rest or moving that way, after a stop
+    /// when moving the other way. Returns the direction to set now.
+    pub fn run(&mut self, direction: Direction) -> Direction {
+        self.turn = None;
+        if self.player.is_done() {
+            self.then = Then::Rest;
+            self.direction = direction;
+            self.replan(Player::run);
+        } else if direction == self.direction {
+            self.then = Then::Rest;
+            self.replan(Player::run);
+        } else {
+            self.then = Then::Run(direction);
+            self.replan(Player::stop);
+        }
+        self.direction
+    }
+
+    /// Changes the player's move, the position kept.
+    fn replan(&mut self, change: impl FnOnce(&mut Player<'a, W, L>)) {
+        let position = self.position();
+        change(&mut self.player);
+        self.end = position + self.direction.sign() * self.left();
+    }
+
+    /// Starts a move from rest to `target`.
+    fn start_to(&mut self, target: i64) {
+        let position = self.position();
+        let delta = target.saturating_sub(position);
         let steps = u32::try_from(delta.unsigned_abs()).unwrap_or(u32::MAX);
         self.direction = if delta < 0 {
             Direction::Backward
         } else {
             Direction::Forward
         };
-        self.end = self.position() + self.direction.sign() * i64::from(steps);
         self.player.start(steps);
-        Ok(self.direction)
+        self.end = position + self.direction.sign() * i64::from(steps);
     }
 
     /// Decelerates to rest from the current speed ([`Player::stop`]); the
-    /// move then ends short of its target.
+    /// move then ends short of its target, and a target it was to go on to
+    /// is dropped.
     pub fn stop(&mut self) {
-        let position = self.position();
-        self.player.stop();
-        self.end = position + self.direction.sign() * i64::from(self.player.remaining());
+        self.then = Then::Rest;
+        self.turn = None;
+        self.replan(Player::stop);
     }
 
     /// Cruises slower or faster ([`Player::set_cruise`]); the target stays.
     pub fn set_cruise(&mut self, pos: u32) {
-        self.player.set_cruise(pos);
+        self.replan(|p| p.set_cruise(pos));
+    }
+
+    /// Cruises at a period in ticks ([`Player::set_cruise_period`]); the
+    /// target stays.
+    pub fn set_cruise_period(&mut self, period: W) {
+        self.replan(|p| p.set_cruise_period(period));
     }
 
     /// Plays the next step ([`Player::step`]): its period to `write`,
-    /// `false` when the move is done.
+    /// `false` when the move is done. Where the move ends and another
+    /// follows (a reversal), the next's first step.
     #[inline]
     pub fn step(&mut self, write: impl FnOnce(W)) -> bool {
-        self.player.step(write)
+        let mut write = Some(write);
+        if self.player.step(|p| {
+            if let Some(w) = write.take() {
+                w(p)
+            }
+        }) {
+            return true;
+        }
+        match write {
+            Some(w) => self.then_step(w),
+            None => false,
+        }
+    }
+
+    /// The move after the one that ended, and its first step.
+    #[cold]
+    #[inline(never)]
+    fn then_step(&mut self, write: impl FnOnce(W)) -> bool {
+        let before = self.direction;
+        match core::mem::replace(&mut self.then, Then::Rest) {
+            Then::Rest => return false,
+            Then::To(target) => self.start_to(target),
+            Then::Run(direction) => {
+                self.direction = direction;
+                self.replan(Player::run);
+            }
+        }
+        if !self.player.step(write) {
+            return false;
+        }
+        self.turn = Some((before, self.player.remaining()));
+        true
     }
 
     /// The period of the next step ([`Player::next_period`]).
     #[inline]
     pub fn next_period(&mut self) -> Option<W> {
-        self.player.next_period()
+        let mut period = None;
+        self.step(|p| period = Some(p));
+        period
     }
 
     /// Writes the next periods into `buf` ([`Player::fill`]): how many,
     /// fewer than `buf.len()` only when the move ends. The position follows
-    /// them as it follows steps.
+    /// them as it follows steps. A reversal's way back is not written: it
+    /// begins at the next [`Axis::step`] or fill, once the direction pin is
+    /// set for it.
     pub fn fill(&mut self, buf: &mut [W]) -> usize {
-        self.player.fill(buf)
+        let n = self.player.fill(buf);
+        if n == 0 {
+            if let Some(first) = buf.first_mut() {
+                if self.step(|p| *first = p) {
+                    return 1 + self.player.fill(&mut buf[1..]);
+                }
+            }
+        }
+        n
     }
 
-    /// Steps left in the move.
+    /// Steps left in the move (a run: to an end it keeps putting off).
     pub fn remaining(&self) -> u32 {
         self.player.remaining()
     }
 
-    /// `true` when the move has played all its steps.
+    /// `true` when the move has played all its steps and no other follows.
     pub fn is_done(&self) -> bool {
-        self.player.is_done()
+        self.player.is_done() && self.then == Then::Rest
     }
 
     /// The player.
@@ -172,9 +315,15 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
         &self.player
     }
 
+    /// The last reversal ([`Buffered`](super::Buffered) reads the direction
+    /// at the pin from it).
+    pub(crate) fn turn(&self) -> Option<(Direction, u32)> {
+        self.turn
+    }
+
     fn idle(&self) -> Result<(), Moving> {
         match self.player.remaining() {
-            0 => Ok(()),
+            0 if self.then == Then::Rest => Ok(()),
             remaining => Err(Moving { remaining }),
         }
     }

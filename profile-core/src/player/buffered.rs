@@ -3,7 +3,7 @@
 
 use crate::base::timer::TableWord;
 use crate::player::Player;
-use crate::player::axis::{Axis, Direction, Moving};
+use crate::player::axis::{Axis, Direction};
 use crate::player::layout::Layout;
 
 /// What [`Buffered`] plays: one period per call, as [`Player`] and [`Axis`]
@@ -189,23 +189,52 @@ impl<'a, W: TableWord, L: Layout> Buffered<Player<'a, W, L>> {
 }
 
 impl<'a, W: TableWord, L: Layout> Buffered<Axis<'a, W, L>> {
-    /// Starts a move to `target` ([`Axis::move_to`]) and begins it: the
-    /// direction to set before the first step, and the first two periods.
-    pub fn move_to(&mut self, target: i64) -> Result<(Direction, Option<W>, Option<W>), Moving> {
-        let delta = target.saturating_sub(self.position());
-        self.move_by(delta)
+    /// Moves to `target` ([`Axis::move_to`]): the direction to set now,
+    /// and, when the move starts from rest, its first two periods
+    /// ([`Buffered::begin`]). While a move plays, the new target is taken
+    /// from the first period not yet in the timer's hands, and there is
+    /// nothing to load: `(direction, None, None)`.
+    pub fn move_to(&mut self, target: i64) -> (Direction, Option<W>, Option<W>) {
+        if self.remaining() > 0 {
+            return (self.inner.move_to(target), None, None);
+        }
+        let direction = self.inner.move_to(target);
+        let (first, next) = self.begin();
+        (direction, first, next)
     }
 
-    /// Starts a move of `delta` steps ([`Axis::move_by`]) and begins it.
-    pub fn move_by(&mut self, delta: i64) -> Result<(Direction, Option<W>, Option<W>), Moving> {
+    /// Moves by `delta` steps from the position at the pin, as
+    /// [`Buffered::move_to`] does.
+    pub fn move_by(&mut self, delta: i64) -> (Direction, Option<W>, Option<W>) {
+        self.move_to(self.position().saturating_add(delta))
+    }
+
+    /// Runs `direction` without an end ([`Axis::run`]): the direction to
+    /// set now, and from rest the first two periods to load.
+    pub fn run(&mut self, direction: Direction) -> (Direction, Option<W>, Option<W>) {
         if self.remaining() > 0 {
-            return Err(Moving {
-                remaining: self.remaining(),
-            });
+            return (self.inner.run(direction), None, None);
         }
-        let direction = self.inner.move_by(delta)?;
+        let direction = self.inner.run(direction);
         let (first, next) = self.begin();
-        Ok((direction, first, next))
+        (direction, first, next)
+    }
+
+    /// The direction of the step the pin takes now, from the interrupt that
+    /// [`Buffered::step`] returned `true` in: what the driver's direction pin
+    /// must say for it. The axis's own direction is one step ahead at a
+    /// reversal.
+    pub fn direction(&self) -> Direction {
+        match self.inner.turn() {
+            // The first period after the turn is in the timer's hands, its
+            // step not taken: the pin takes the last step before the turn.
+            Some((before, mark))
+                if self.inner.player().remaining() == mark && (mark > 0 || self.ahead) =>
+            {
+                before
+            }
+            _ => self.inner.direction(),
+        }
     }
 
     /// The position at the pin, in steps: the axis's less the step whose

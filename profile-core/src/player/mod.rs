@@ -51,6 +51,7 @@ mod axis;
 mod buffered;
 mod fill;
 mod layout;
+mod motion;
 mod plan;
 mod ramp;
 mod rated;
@@ -111,6 +112,11 @@ pub struct Player<'a, W, L = AnyLayout> {
     cruise: u32,
     /// Both ramps are ordered slow to fast: planning searches them.
     monotone: bool,
+    /// Playing [`Player::run`]: the deceleration is put off, a lap at a
+    /// time, until [`Player::stop`].
+    endless: bool,
+    /// Steps the laps of a run have added to the move since it started.
+    extended: u64,
     layout: PhantomData<L>,
 }
 
@@ -174,6 +180,8 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             cap: accel.first_faster_than(decel_fastest),
             cruise: accel_last,
             monotone: accel.is_ordered() && decel.is_ordered(),
+            endless: false,
+            extended: 0,
             run: Run::empty(),
             computed: RunState::default(),
             before: 0,
@@ -213,6 +221,13 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// acceleration ramp. A move on an empty ramp has no steps.
     pub fn start(&mut self, steps: u32) {
         self.cruise = self.accel_last;
+        self.begin(steps);
+    }
+
+    /// Starts a move of `steps` steps from rest to the cruise position.
+    fn begin(&mut self, steps: u32) {
+        self.endless = false;
+        self.extended = 0;
         let empty = self.accel.period_at(0).is_none() || self.decel.period_at(0).is_none();
         let plan = if empty || steps == 0 {
             Plan::EMPTY
@@ -242,6 +257,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// when the motor already runs slower than that entry). A stop never
     /// lengthens a move.
     pub fn stop(&mut self) {
+        self.endless = false;
         let remaining = self.remaining();
         if remaining == 0 {
             return;
@@ -456,7 +472,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         let next = self.plan.next;
         if next < self.plan.len {
             if let Some(s) = self.plan.stretches.get_mut(next) {
-                if s.run.is_some() {
+                if s.run.is_some() && !(self.endless && s.decelerating) {
                     self.run = s.run.take()?;
                     s.count = 0;
                     self.plan.at = next;
@@ -478,7 +494,12 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             if next >= self.plan.len {
                 return None;
             }
-            if self.plan.stretches.get(next)?.count > 0 {
+            let s = self.plan.stretches.get(next)?;
+            if s.count > 0 {
+                if self.endless && s.decelerating {
+                    self.next_lap();
+                    continue;
+                }
                 self.plan.at = next;
                 return Some(next);
             }

@@ -1,0 +1,263 @@
+//! Moves that change while they play: a speed without an end
+//! ([`Player::run`]), a cruise speed in ticks ([`Player::set_cruise_period`])
+//! and a new end ([`Player::retarget`]).
+
+use super::plan::Plan;
+use super::ramp::Cursor;
+use super::{Layout, Player};
+use crate::base::timer::TableWord;
+
+/// Steps a run plans at a time: when they are played but for the
+/// deceleration, the run plans as many again from where it stands.
+const LAP: u32 = 1 << 31;
+
+impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
+    /// Starts a move without an end: up the acceleration ramp to the cruise
+    /// position (its top, or where [`Player::set_cruise`] or
+    /// [`Player::set_cruise_period`] put it), and at cruise until
+    /// [`Player::stop`] decelerates it to rest. [`Player::remaining`]
+    /// counts to an end that is put off, a lap of 2³¹ steps at a time,
+    /// for as long as the run goes on.
+    ///
+    /// ```
+    /// use profile_core::player::{Player, Ramp};
+    ///
+    /// static RAMP: [u16; 3] = [3000, 2000, 1500];
+    /// let mut player = Player::new(Ramp::steps(&RAMP));
+    /// player.run();
+    /// let jog: Vec<u16> = (0..6).map(|_| player.next_period().unwrap()).collect();
+    /// assert_eq!(jog, [3000, 2000, 1500, 1500, 1500, 1500]);
+    /// player.stop();
+    /// let rest: Vec<u16> = core::iter::from_fn(|| player.next_period()).collect();
+    /// assert_eq!(rest, [1500, 2000, 3000]);
+    /// ```
+    ///
+    /// While a move plays, it goes on from where it stands (as
+    /// [`Player::retarget`] does) and no longer ends.
+    pub fn run(&mut self) {
+        if self.remaining() > 0 {
+            self.retarget(LAP);
+            self.endless = true;
+        } else {
+            self.run_lap(LAP);
+        }
+    }
+
+    fn run_lap(&mut self, lap: u32) {
+        self.begin(lap);
+        self.endless = self.remaining() > 0;
+    }
+
+    /// The run's next lap, its deceleration reached: as many steps again
+    /// from where the acceleration side stands. A ramp whose deceleration
+    /// is longer than a lap ends the run there.
+    #[cold]
+    pub(super) fn next_lap(&mut self) {
+        let (acc, _) = self.state();
+        let last = self.last_period();
+        let before = self.remaining();
+        let plan = self.sides().plan(acc, LAP);
+        if plan.len == 0 || plan.stretches[0].decelerating {
+            self.endless = false;
+            return;
+        }
+        self.extended += u64::from(LAP - before);
+        self.plan = plan;
+        self.before = last;
+    }
+
+    /// Steps the laps of a run have added since it started: a run's
+    /// position is its start plus the steps played, and those are the
+    /// first lap's steps plus these, less the steps that remain.
+    pub(crate) fn extended(&self) -> u64 {
+        self.extended
+    }
+
+    /// `true` while a run ([`Player::run`]) plays at cruise, not stopped.
+    pub fn is_running(&self) -> bool {
+        self.endless && self.remaining() > 0
+    }
+
+    /// Cruises at the fastest entry of the acceleration ramp whose period is
+    /// not shorter than `period` (in the table's ticks, as it holds them),
+    /// or at its slowest entry when every entry is shorter: a speed set in
+    /// timer ticks, without the table's indices. Then as
+    /// [`Player::set_cruise`].
+    ///
+    /// ```
+    /// use profile_core::player::{Player, Ramp};
+    ///
+    /// static RAMP: [u16; 4] = [4000, 3000, 2000, 1500];
+    /// let mut player = Player::new(Ramp::steps(&RAMP));
+    /// player.set_cruise_period(2500);
+    /// player.run();
+    /// let jog: Vec<u16> = (0..4).map(|_| player.next_period().unwrap()).collect();
+    /// assert_eq!(jog, [4000, 3000, 3000, 3000]);
+    /// ```
+    pub fn set_cruise_period(&mut self, period: W) {
+        let pos = self.cruise_position(period.into_ticks());
+        self.set_cruise(pos);
+    }
+
+    /// The position [`Player::set_cruise_period`] cruises at.
+    fn cruise_position(&self, ticks: u32) -> u32 {
+        let mut cursor = None;
+        let mut at = |pos| {
+            Cursor::period_near(&mut cursor, &self.accel, pos).map_or(0, |w: W| w.into_ticks())
+        };
+        if self.monotone {
+            // The last position not shorter: bisection on the ordered ramp.
+            if at(0) < ticks {
+                return 0;
+            }
+            let (mut lo, mut hi) = (0, self.accel_last);
+            while lo < hi {
+                let mid = hi - (hi - lo) / 2;
+                if at(mid) >= ticks {
+                    lo = mid;
+                } else {
+                    hi = mid - 1;
+                }
+            }
+            return lo;
+        }
+        // In any order: every position, the last of the shortest kept.
+        let Some(mut c) = Cursor::at(&self.accel, 0) else {
+            return 0;
+        };
+        let mut best: Option<(u32, u32)> = None;
+        loop {
+            let p = c.period(&self.accel).into_ticks();
+            if p >= ticks && best.is_none_or(|(b, _)| p <= b) {
+                best = Some((p, c.pos));
+            }
+            if !c.forward(&self.accel, self.accel_last) {
+                break;
+            }
+        }
+        best.map_or(0, |(_, pos)| pos)
+    }
+
+    /// Steps a [`Player::stop`] now would play: the deceleration ramp from
+    /// its entry nearest the current period that is not faster, or the
+    /// steps that remain when fewer. 0 at rest, before the first step, and
+    /// when the motor already runs slower than the ramp's slowest entry.
+    pub fn steps_to_stop(&self) -> u32 {
+        let remaining = self.remaining();
+        let current = self.last_period();
+        if remaining == 0 || current == 0 || self.period_dec(0) < current {
+            return 0;
+        }
+        (self.entry_point(current) + 1).min(remaining)
+    }
+
+    /// Ends the move `steps` steps from now, at rest, if it can stop in
+    /// that many ([`Player::steps_to_stop`]); returns `false`, changing
+    /// nothing, when it cannot. At rest, starts a move of `steps` steps.
+    ///
+    /// The move goes on from where it stands: accelerating, cruising or
+    /// decelerating, it plays on along the acceleration ramp towards the
+    /// cruise position (entering it, when the deceleration ramp had taken
+    /// over, at its first entry not slower than the current period) until
+    /// the deceleration ramp, read at the steps that remain, is not faster,
+    /// and down that ramp to rest. The cruise position stays.
+    ///
+    /// ```
+    /// use profile_core::player::{Player, Ramp};
+    ///
+    /// static RAMP: [u16; 3] = [3000, 2000, 1500];
+    /// let mut player = Player::new(Ramp::steps(&RAMP));
+    /// player.start(4);
+    /// assert_eq!(player.next_period(), Some(3000));
+    /// assert_eq!(player.next_period(), Some(2000));
+    /// assert!(player.retarget(5));
+    /// let rest: Vec<u16> = core::iter::from_fn(|| player.next_period()).collect();
+    /// assert_eq!(rest, [1500, 1500, 1500, 2000, 3000]);
+    /// assert!(!{ player.start(6); player.next_period(); player.next_period(); player.retarget(1) });
+    /// ```
+    pub fn retarget(&mut self, steps: u32) -> bool {
+        if self.remaining() == 0 {
+            self.start(steps);
+            return true;
+        }
+        if steps < self.steps_to_stop() {
+            return false;
+        }
+        self.endless = false;
+        let current = self.last_period();
+        let (acc, decelerating) = self.state();
+        let from = match (current, decelerating) {
+            (0, _) => 0,
+            (_, true) => self.accel_entry(current),
+            (_, false) => acc,
+        };
+        let plan = if steps == 0 {
+            Plan::EMPTY
+        } else {
+            self.sides().plan(from, steps)
+        };
+        self.follow(plan, current);
+        true
+    }
+
+    /// The first position of the acceleration ramp whose period is not
+    /// longer than `current`; its top when none is.
+    fn accel_entry(&self, current: u32) -> u32 {
+        let mut cursor = None;
+        let mut at = |pos| {
+            Cursor::period_near(&mut cursor, &self.accel, pos).map_or(0, |w: W| w.into_ticks())
+        };
+        if self.monotone {
+            let (mut lo, mut hi) = (0, self.accel_last);
+            while lo < hi {
+                let mid = lo + (hi - lo) / 2;
+                if at(mid) <= current {
+                    hi = mid;
+                } else {
+                    lo = mid + 1;
+                }
+            }
+            return lo;
+        }
+        let Some(mut c) = Cursor::at(&self.accel, 0) else {
+            return 0;
+        };
+        loop {
+            if c.period(&self.accel).into_ticks() <= current {
+                return c.pos;
+            }
+            if !c.forward(&self.accel, self.accel_last) {
+                return self.accel_last;
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use crate::player::{Player, Ramp};
+    use std::vec::Vec;
+
+    /// A run plays lap after lap at cruise, the laps joined without a
+    /// deceleration, and a stop after many laps decelerates from cruise.
+    #[test]
+    fn a_run_joins_its_laps_at_cruise() {
+        static RAMP: [u16; 4] = [4000, 3000, 2000, 1500];
+        let mut player = Player::new(Ramp::steps(&RAMP));
+        player.run_lap(10);
+        let mut played = Vec::new();
+        for _ in 0..100 {
+            played.push(player.next_period().unwrap());
+        }
+        assert_eq!(played[..4], [4000, 3000, 2000, 1500]);
+        assert!(played[3..].iter().all(|&p| p == 1500), "{played:?}");
+        assert!(player.is_running());
+        // Each lap after the first added its steps but the deceleration.
+        let steps = 100 + u64::from(player.remaining());
+        assert_eq!(steps, 10 + player.extended());
+        player.stop();
+        let rest: Vec<u16> = core::iter::from_fn(|| player.next_period()).collect();
+        assert_eq!(rest, [1500, 2000, 3000, 4000]);
+    }
+}
