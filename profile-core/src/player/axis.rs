@@ -67,6 +67,10 @@ enum Then {
 /// the way back. The speed never jumps: each period is the one before, or
 /// a neighbouring entry of a ramp.
 ///
+/// A cruise speed set on an axis ([`Axis::set_cruise`],
+/// [`Axis::set_cruise_period`]) holds for its moves and runs until it is
+/// set again (where [`Player::start`] cruises at the ramp's top).
+///
 /// ```
 /// use profile_core::player::{Axis, Direction, Player, Ramp};
 ///
@@ -212,7 +216,7 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
         } else {
             Direction::Forward
         };
-        self.player.start(steps);
+        self.player.begin(steps);
         self.end = position + self.direction.sign() * i64::from(steps);
     }
 

@@ -55,6 +55,7 @@ mod motion;
 mod plan;
 mod ramp;
 mod rated;
+mod search;
 
 use core::marker::PhantomData;
 
@@ -110,8 +111,11 @@ pub struct Player<'a, W, L = AnyLayout> {
     /// The first acceleration step faster than `decel_fastest`.
     cap: u32,
     cruise: u32,
-    /// Both ramps are ordered slow to fast: planning searches them.
-    monotone: bool,
+    /// The ramps' slack added ([`Ramp::slack`]): how far from ordered
+    /// slow to fast they are, for planning's searches.
+    slack: u32,
+    /// The acceleration ramp's alone.
+    accel_slack: u32,
     /// Playing [`Player::run`]: the deceleration is put off, a lap at a
     /// time, until [`Player::stop`].
     endless: bool,
@@ -179,7 +183,8 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             decel_fastest,
             cap: accel.first_faster_than(decel_fastest),
             cruise: accel_last,
-            monotone: accel.is_ordered() && decel.is_ordered(),
+            slack: accel.slack().saturating_add(decel.slack()),
+            accel_slack: accel.slack(),
             endless: false,
             extended: 0,
             run: Run::empty(),
@@ -199,7 +204,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             decel_fastest: self.decel_fastest,
             cap: self.cap,
             cruise: self.cruise,
-            monotone: self.monotone,
+            slack: self.slack,
         }
     }
 
@@ -225,7 +230,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     }
 
     /// Starts a move of `steps` steps from rest to the cruise position.
-    fn begin(&mut self, steps: u32) {
+    pub(crate) fn begin(&mut self, steps: u32) {
         self.endless = false;
         self.extended = 0;
         let empty = self.accel.period_at(0).is_none() || self.decel.period_at(0).is_none();

@@ -4,6 +4,7 @@
 
 use super::plan::Plan;
 use super::ramp::Cursor;
+use super::search::{self, Probe};
 use super::{Layout, Player};
 use crate::base::timer::TableWord;
 
@@ -82,7 +83,9 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// not shorter than `period` (in the table's ticks, as it holds them),
     /// or at its slowest entry when every entry is shorter: a speed set in
     /// timer ticks, without the table's indices. Then as
-    /// [`Player::set_cruise`].
+    /// [`Player::set_cruise`]. (On a table rounded by diffusion, whose
+    /// neighbours may differ by a tick either way, the last entry not
+    /// shorter.)
     ///
     /// ```
     /// use profile_core::player::{Player, Ramp};
@@ -99,43 +102,29 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         self.set_cruise(pos);
     }
 
-    /// The position [`Player::set_cruise_period`] cruises at.
+    /// The position [`Player::set_cruise_period`] cruises at: the last
+    /// whose period is not shorter than `ticks`, searched from the top.
     fn cruise_position(&self, ticks: u32) -> u32 {
+        let (last, slack) = (self.accel_last, u64::from(self.accel_slack));
         let mut cursor = None;
-        let mut at = |pos| {
-            Cursor::period_near(&mut cursor, &self.accel, pos).map_or(0, |w: W| w.into_ticks())
-        };
-        if self.monotone {
-            // The last position not shorter: bisection on the ordered ramp.
-            if at(0) < ticks {
-                return 0;
+        let mut ended = false;
+        // From the top down: `k` steps below it.
+        let k = search::first(0, last.saturating_add(1), &mut |k| {
+            let Some(p) = Cursor::period_near(&mut cursor, &self.accel, last - k) else {
+                ended = true;
+                return Probe::Found;
+            };
+            let p = u64::from(p.into_ticks());
+            if p >= u64::from(ticks) {
+                Probe::Found
+            } else if p + slack < u64::from(ticks) {
+                // No step before it, above it on the ramp, reaches `ticks`.
+                Probe::Before
+            } else {
+                Probe::Fails
             }
-            let (mut lo, mut hi) = (0, self.accel_last);
-            while lo < hi {
-                let mid = hi - (hi - lo) / 2;
-                if at(mid) >= ticks {
-                    lo = mid;
-                } else {
-                    hi = mid - 1;
-                }
-            }
-            return lo;
-        }
-        // In any order: every position, the last of the shortest kept.
-        let Some(mut c) = Cursor::at(&self.accel, 0) else {
-            return 0;
-        };
-        let mut best: Option<(u32, u32)> = None;
-        loop {
-            let p = c.period(&self.accel).into_ticks();
-            if p >= ticks && best.is_none_or(|(b, _)| p <= b) {
-                best = Some((p, c.pos));
-            }
-            if !c.forward(&self.accel, self.accel_last) {
-                break;
-            }
-        }
-        best.map_or(0, |(_, pos)| pos)
+        });
+        if ended { 0 } else { last.saturating_sub(k) }
     }
 
     /// Steps a [`Player::stop`] now would play: the deceleration ramp from
@@ -203,33 +192,21 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// The first position of the acceleration ramp whose period is not
     /// longer than `current`; its top when none is.
     fn accel_entry(&self, current: u32) -> u32 {
+        let (last, slack) = (self.accel_last, u64::from(self.accel_slack));
         let mut cursor = None;
-        let mut at = |pos| {
-            Cursor::period_near(&mut cursor, &self.accel, pos).map_or(0, |w: W| w.into_ticks())
-        };
-        if self.monotone {
-            let (mut lo, mut hi) = (0, self.accel_last);
-            while lo < hi {
-                let mid = lo + (hi - lo) / 2;
-                if at(mid) <= current {
-                    hi = mid;
-                } else {
-                    lo = mid + 1;
-                }
+        let pos = search::first(0, last, &mut |pos| {
+            let p =
+                Cursor::period_near(&mut cursor, &self.accel, pos).map_or(0, |w: W| w.into_ticks());
+            if p <= current {
+                Probe::Found
+            } else if u64::from(p) > u64::from(current) + slack {
+                // Every step before it is slower than `p - slack`.
+                Probe::Before
+            } else {
+                Probe::Fails
             }
-            return lo;
-        }
-        let Some(mut c) = Cursor::at(&self.accel, 0) else {
-            return 0;
-        };
-        loop {
-            if c.period(&self.accel).into_ticks() <= current {
-                return c.pos;
-            }
-            if !c.forward(&self.accel, self.accel_last) {
-                return self.accel_last;
-            }
-        }
+        });
+        pos.min(last)
     }
 }
 

@@ -11,6 +11,7 @@
 use core::slice;
 
 use super::ramp::{Cursor, Ramp};
+use super::search::{self, Probe};
 use crate::base::timer::TableWord;
 
 /// A run of steps, as the step path plays it.
@@ -165,9 +166,10 @@ pub(crate) struct Sides<'p, 'a, W> {
     /// The first acceleration step faster than `decel_fastest`.
     pub(crate) cap: u32,
     pub(crate) cruise: u32,
-    /// Both ramps are ordered slow to fast (non-increasing periods): their
-    /// crossings can be searched.
-    pub(crate) monotone: bool,
+    /// The two ramps' slack ([`Ramp::slack`]) added: a deceleration step
+    /// that far faster than the acceleration side has every step before it
+    /// faster too.
+    pub(crate) slack: u32,
 }
 
 impl<'a, W: TableWord> Sides<'_, 'a, W> {
@@ -306,43 +308,41 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
     /// at the steps that remain, is not faster than the acceleration side
     /// (walking from `p` towards the cruise position); `r` if none is.
     ///
-    /// On ramps ordered slow to fast, once the acceleration side walks up or
-    /// holds, the deceleration ramp read at the steps that remain only gets
-    /// slower and the acceleration side only faster: the first step where
-    /// one is not faster than the other is found by bisection. Walking down,
-    /// both get slower, and other ramps have no order: those steps are read
+    /// Once the acceleration side walks up or holds, the deceleration ramp
+    /// read at the steps that remain only gets slower and the acceleration
+    /// side only faster, but for the ramps' slack: the step is searched
+    /// ([`search`]). Walking down, both get slower: those steps are read
     /// one by one.
     fn crossing(&self, p: u32, r: u32) -> u32 {
+        // Walking down, the steps one by one; then the search.
         let walked_down = match self.toward(p).1 {
-            -1 if self.monotone => (p - self.cruise).min(r),
-            -1 => r,
-            _ if self.monotone => 0,
-            _ => r,
+            -1 => (p - self.cruise).min(r),
+            _ => 0,
         };
         if let Some(j) = self.scan(p, r, walked_down) {
             return j;
         }
-        // `f(j)`: the deceleration ramp at step `j` is not faster; false at
-        // every step before `walked_down`, false then true from there.
         let mut d = None;
         let mut a = None;
-        let (mut lo, mut hi) = (walked_down, r);
-        while lo < hi {
-            let j = lo + (hi - lo) / 2;
+        let mut ended = false;
+        let j = search::first(walked_down, r, &mut |j| {
             let dp = Cursor::period_near(&mut d, self.decel, r - 1 - j);
             let ap = Cursor::period_near(&mut a, self.accel, self.walked(p, j));
-            let found = match (dp, ap) {
-                (Some(dp), Some(ap)) => dp.into_ticks() >= ap.into_ticks(),
+            let (Some(dp), Some(ap)) = (dp, ap) else {
                 // Past a ramp's end nothing is read, as in the scan.
-                _ => return r,
+                ended = true;
+                return Probe::Found;
             };
-            if found {
-                hi = j;
+            let (dp, ap) = (u64::from(dp.into_ticks()), u64::from(ap.into_ticks()));
+            if dp >= ap {
+                Probe::Found
+            } else if dp + u64::from(self.slack) < ap {
+                Probe::Before
             } else {
-                lo = j + 1;
+                Probe::Fails
             }
-        }
-        lo
+        });
+        if ended { r } else { j }
     }
 
     /// Where the acceleration side stands `j` steps after `p`.
@@ -372,25 +372,7 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
             },
         ) = (*self.accel, *self.decel)
         {
-            // Per-step tables: read them directly. Held at the cruise
-            // position, the acceleration side's period is one number: scan
-            // the deceleration table down for the first that is not faster.
-            if self.toward(p).1 == 0 && n == r {
-                if let Some(&held) = a.get(p as usize) {
-                    let held = held.into_ticks();
-                    let top = (r as usize).min(d.len());
-                    // From entry `r - 1` down; past the table's end there is
-                    // nothing to read, as in the walk below.
-                    if top == r as usize {
-                        return Some(
-                            match d[..top].iter().rposition(|x| x.into_ticks() >= held) {
-                                Some(i) => r - 1 - i as u32,
-                                None => r,
-                            },
-                        );
-                    }
-                }
-            }
+            // Per-step tables: read them directly.
             let (mut pa, mut di) = (p as usize, r as usize - 1);
             for j in 0..n {
                 let (Some(da), Some(aa)) = (d.get(di), a.get(pa)) else {

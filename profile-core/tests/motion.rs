@@ -1,0 +1,256 @@
+//! Moves that change while they play, over random tables and random
+//! sequences of new targets, runs, stops and cruise speeds: checked step by
+//! step against rules computed here from the table alone.
+//!
+//! - The position the test counts (one step each call, signed by the
+//!   direction the axis says the pin must have) is the axis's, after every
+//!   step.
+//! - The speed never jumps: each period is the one before, or the entry
+//!   next to it in the table.
+//! - A reversal happens only at rest: the last period before it and the
+//!   first after it are the table's slowest entry.
+//! - A move from rest starts at the slowest entry, and every move ends
+//!   there.
+//! - After the last target, the axis arrives there exactly.
+//! - A run at a cruise period plays, once there, the table's last entry
+//!   not shorter than that period.
+//!
+//! `PROPTEST_CASES` sets the number of cases (default 256).
+
+use profile_core::player::{Axis, Direction, Player, Ramp};
+use proptest::prelude::*;
+
+/// A table ordered slow to fast with ties, as generated tables are.
+fn table() -> impl Strategy<Value = Vec<u16>> {
+    (1usize..60, 200u16..=u16::MAX).prop_flat_map(|(len, start)| {
+        proptest::collection::vec(0u16..300, len).prop_map(move |drops| {
+            let mut p = u32::from(start);
+            drops
+                .iter()
+                .map(|d| {
+                    let v = p as u16;
+                    p = p.saturating_sub(u32::from(*d)).max(1);
+                    v
+                })
+                .collect()
+        })
+    })
+}
+
+#[derive(Clone, Debug)]
+enum Op {
+    MoveTo(i64),
+    Run(bool),
+    Stop,
+    Cruise(u32),
+    CruisePeriod(u16),
+    Play(u32),
+}
+
+fn ops() -> impl Strategy<Value = Vec<Op>> {
+    let op = prop_oneof![
+        4 => (-400i64..400).prop_map(Op::MoveTo),
+        1 => any::<bool>().prop_map(Op::Run),
+        1 => Just(Op::Stop),
+        1 => (0u32..70).prop_map(Op::Cruise),
+        1 => any::<u16>().prop_map(Op::CruisePeriod),
+        6 => (0u32..150).prop_map(Op::Play),
+    ];
+    proptest::collection::vec(op, 1..14)
+}
+
+/// The positions of the table holding `period`.
+fn positions(table: &[u16], period: u16) -> impl Iterator<Item = usize> + '_ {
+    table
+        .iter()
+        .enumerate()
+        .filter(move |&(_, &p)| p == period)
+        .map(|(i, _)| i)
+}
+
+/// `y` follows `x` without a jump: the same, or entries next to each other.
+fn neighbours(table: &[u16], x: u16, y: u16) -> bool {
+    x == y || positions(table, x).any(|i| positions(table, y).any(|j| i.abs_diff(j) <= 1))
+}
+
+/// What the test knows of the motion so far.
+struct Watch<'t> {
+    table: &'t [u16],
+    position: i64,
+    /// The last step's period and direction; `None` at rest.
+    last: Option<(u16, Direction)>,
+    steps: u64,
+}
+
+impl Watch<'_> {
+    /// One step played, its period `period`, the pin's direction `dir`.
+    fn step(&mut self, period: u16, dir: Direction, axis_position: i64) -> Result<(), String> {
+        let slowest = self.table[0];
+        self.position += dir.sign();
+        self.steps += 1;
+        if axis_position != self.position {
+            return Err(format!(
+                "step {}: the axis says {axis_position}, the steps counted {}",
+                self.steps, self.position
+            ));
+        }
+        match self.last {
+            None if period != slowest => Err(format!(
+                "step {}: from rest at {period}, not the slowest entry {slowest}",
+                self.steps
+            )),
+            Some((before, turned)) if turned != dir && (before != slowest || period != slowest) => {
+                Err(format!(
+                    "step {}: reversed between {before} and {period}, not at rest ({slowest})",
+                    self.steps
+                ))
+            }
+            Some((before, _)) if !neighbours(self.table, before, period) => Err(format!(
+                "step {}: a jump from {before} to {period}",
+                self.steps
+            )),
+            _ => {
+                self.last = Some((period, dir));
+                Ok(())
+            }
+        }
+    }
+
+    /// The move ended: at rest, after the slowest entry.
+    fn rest(&mut self) -> Result<(), String> {
+        if let Some((period, _)) = self.last.take() {
+            if period != self.table[0] {
+                return Err(format!(
+                    "step {}: ended at {period}, not at rest",
+                    self.steps
+                ));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Plays up to `n` steps; stops early when the axis is done.
+fn play(axis: &mut Axis<'_, u16>, watch: &mut Watch<'_>, n: u32) -> Result<Vec<u16>, String> {
+    let mut periods = vec![];
+    for _ in 0..n {
+        let mut period = 0;
+        if !axis.step(|p| period = p) {
+            watch.rest()?;
+            break;
+        }
+        watch.step(period, axis.direction(), axis.position())?;
+        periods.push(period);
+    }
+    Ok(periods)
+}
+
+/// The last entry not shorter than `period` (on a table ordered slow to
+/// fast, the fastest), or the slowest.
+fn cruise_entry(table: &[u16], period: u16) -> u16 {
+    table
+        .iter()
+        .copied()
+        .rfind(|&p| p >= period)
+        .unwrap_or(table[0])
+}
+
+fn check(table: &[u16], ops: &[Op]) -> Result<(), String> {
+    let mut axis = Axis::new(Player::new(Ramp::steps(table)), 0);
+    let mut watch = Watch {
+        table,
+        position: 0,
+        last: None,
+        steps: 0,
+    };
+    let mut target = 0i64;
+    let mut cruise_period = None;
+    for op in ops {
+        match *op {
+            Op::MoveTo(t) => {
+                axis.move_to(t);
+                target = t;
+            }
+            Op::Run(forward) => {
+                let dir = if forward {
+                    Direction::Forward
+                } else {
+                    Direction::Backward
+                };
+                axis.run(dir);
+                // A run held long enough reaches its cruise speed.
+                let periods = play(&mut axis, &mut watch, 4 * table.len() as u32 + 10)?;
+                if let (Some(p), Some(&last)) = (cruise_period, periods.last()) {
+                    let want = cruise_entry(table, p);
+                    if axis.direction() == dir && last != want {
+                        return Err(format!("run at {p} cruises at {last}, not {want}"));
+                    }
+                }
+                axis.stop();
+                target = i64::MIN;
+            }
+            Op::Stop => {
+                axis.stop();
+                target = i64::MIN;
+            }
+            Op::Cruise(pos) => {
+                axis.set_cruise(pos);
+                cruise_period = None;
+            }
+            Op::CruisePeriod(p) => {
+                axis.set_cruise_period(p);
+                cruise_period = Some(p);
+            }
+            Op::Play(n) => {
+                play(&mut axis, &mut watch, n)?;
+            }
+        }
+    }
+    // Played out: at rest, at the last target when the last word was one.
+    play(&mut axis, &mut watch, u32::MAX)?;
+    if !axis.is_done() {
+        return Err("not done".into());
+    }
+    if target != i64::MIN && axis.position() != target {
+        return Err(format!("arrived at {}, not {target}", axis.position()));
+    }
+    Ok(())
+}
+
+fn cases() -> u32 {
+    std::env::var("PROPTEST_CASES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(256)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(cases()))]
+
+    #[test]
+    fn new_targets_runs_and_stops_never_jump_and_arrive(table in table(), ops in ops()) {
+        check(&table, &ops).map_err(TestCaseError::fail)?;
+    }
+}
+
+/// The way back from a target behind, on a hand-checked table.
+#[test]
+fn a_target_behind_reverses_at_rest() {
+    static RAMP: [u16; 4] = [4000, 3000, 2000, 1500];
+    let mut axis = Axis::new(Player::new(Ramp::steps(&RAMP)), 0);
+    axis.move_to(100);
+    let mut periods = vec![];
+    for _ in 0..6 {
+        axis.step(|p| periods.push(p));
+    }
+    assert_eq!(axis.move_to(2), Direction::Forward);
+    while axis.step(|p| periods.push(p)) {}
+    assert_eq!(
+        periods,
+        [
+            4000, 3000, 2000, 1500, 1500, 1500, 1500, 2000, 3000, 4000, 4000, 3000, 2000, 1500,
+            1500, 2000, 3000, 4000
+        ]
+    );
+    assert_eq!(axis.position(), 2);
+}
