@@ -15,7 +15,7 @@ use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprintln};
 use panic_semihosting as _;
 use stepgen::Stepgen;
-use stepper_profiles::player::{Axis, Compressed, Direction, Player, Ramp};
+use stepper_profiles::player::{Axis, Compressed, Direction, Layout, Player, Ramp};
 
 /// The tables of the root `profiles.toml`.
 mod profiles {
@@ -125,6 +125,102 @@ pub fn player_stop(player: &mut Player<'_, u16>) {
 #[unsafe(no_mangle)]
 pub fn player_set_cruise(player: &mut Player<'_, u16>, pos: u32) {
     player.set_cruise(pos);
+}
+
+/// Planning calls, one set per kind of player: not inlined and not
+/// mangled, so that the trace names them.
+macro_rules! planning_calls {
+    ($player:ty, $start:ident, $cruise:ident, $cruise_period:ident, $retarget:ident, $stop:ident) => {
+        #[inline(never)]
+        #[unsafe(no_mangle)]
+        pub fn $start(player: &mut $player, steps: u32) {
+            player.start(steps);
+        }
+
+        #[inline(never)]
+        #[unsafe(no_mangle)]
+        pub fn $cruise(player: &mut $player, pos: u32) {
+            player.set_cruise(pos);
+        }
+
+        #[inline(never)]
+        #[unsafe(no_mangle)]
+        pub fn $cruise_period(player: &mut $player, period: u16) {
+            player.set_cruise_period(period);
+        }
+
+        #[inline(never)]
+        #[unsafe(no_mangle)]
+        pub fn $retarget(player: &mut $player, steps: u32) -> bool {
+            player.retarget(steps)
+        }
+
+        #[inline(never)]
+        #[unsafe(no_mangle)]
+        pub fn $stop(player: &mut $player) {
+            player.stop();
+        }
+    };
+}
+
+planning_calls!(
+    Player<'_, u16>,
+    player_plan_start,
+    player_plan_set_cruise,
+    player_plan_set_cruise_period,
+    player_plan_retarget,
+    player_plan_stop
+);
+planning_calls!(
+    Player<'_, u16, Compressed>,
+    player_runs_plan_start,
+    player_runs_plan_set_cruise,
+    player_runs_plan_set_cruise_period,
+    player_runs_plan_retarget,
+    player_runs_plan_stop
+);
+
+/// Plays `n` steps of a player, not measured.
+fn skip<L: Layout>(player: &mut Player<'_, u16, L>, n: u32) {
+    for _ in 0..n {
+        player.next_period();
+    }
+}
+
+/// Planning on one ramp of `len` steps, each call measured once: a move of
+/// `2 len + 3000` steps starts; cruising, it changes its cruise speed to
+/// the ramp's middle, then to twice the top's period, takes a target 1000
+/// steps farther, and stops.
+macro_rules! planning {
+    ($label:expr, $player:expr, $len:expr, $top:expr, $start:ident, $cruise:ident,
+     $cruise_period:ident, $retarget:ident, $stop:ident) => {{
+        let mut player = $player;
+        let len: u32 = $len;
+        let top: u16 = $top;
+        once(concat!("planning, ", $label, ", start"), || {
+            $start(&mut player, 2 * len + 3000)
+        });
+        skip(&mut player, len + 100);
+        once(concat!("planning, ", $label, ", set_cruise"), || {
+            $cruise(&mut player, len / 2)
+        });
+        skip(&mut player, 200);
+        once(concat!("planning, ", $label, ", set_cruise_period"), || {
+            $cruise_period(&mut player, 2 * top)
+        });
+        skip(&mut player, 200);
+        let steps = player.remaining() + 1000;
+        let mut taken = false;
+        once(concat!("planning, ", $label, ", retarget"), || {
+            taken = $retarget(&mut player, steps)
+        });
+        check(taken, "retarget");
+        skip(&mut player, 100);
+        once(concat!("planning, ", $label, ", stop"), || {
+            $stop(&mut player)
+        });
+        while player.next_period().is_some() {}
+    }};
 }
 
 /// Runs `steps` calls of a step function between the markers.
@@ -344,6 +440,30 @@ fn main() -> ! {
     }
     once("player, stop (at entry 500)", || player_stop(&mut player));
     while player.next_period().is_some() {}
+
+    // Planning on the per-step table and on the compressed microstep ramp.
+    planning!(
+        "per-step table (sigmoid_exact, 1000 entries)",
+        Player::new(Ramp::steps(&sigmoid_exact::PERIODS)),
+        UP,
+        sigmoid_exact::PERIODS[sigmoid_exact::LEN - 1],
+        player_plan_start,
+        player_plan_set_cruise,
+        player_plan_set_cruise_period,
+        player_plan_retarget,
+        player_plan_stop
+    );
+    planning!(
+        "compressed ramp (microstep_runs, 7192 steps)",
+        Player::<u16, _>::compressed(&microstep_runs::RUNS),
+        microstep_runs::LEN as u32,
+        last_run(&microstep_runs::RUNS) as u16,
+        player_runs_plan_start,
+        player_runs_plan_set_cruise,
+        player_runs_plan_set_cruise_period,
+        player_runs_plan_retarget,
+        player_runs_plan_stop
+    );
 
     hprintln!("ok");
     debug::exit(debug::EXIT_SUCCESS);

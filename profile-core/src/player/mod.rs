@@ -116,6 +116,8 @@ pub struct Player<'a, W, L = AnyLayout> {
     slack: u32,
     /// The acceleration ramp's alone.
     accel_slack: u32,
+    /// The deceleration ramp's alone.
+    decel_slack: u32,
     /// Playing [`Player::run`]: the deceleration is put off, a lap at a
     /// time, until [`Player::stop`].
     endless: bool,
@@ -185,6 +187,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             cruise: accel_last,
             slack: accel.slack().saturating_add(decel.slack()),
             accel_slack: accel.slack(),
+            decel_slack: decel.slack(),
             endless: false,
             extended: 0,
             run: Run::empty(),
@@ -205,6 +208,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             cap: self.cap,
             cruise: self.cruise,
             slack: self.slack,
+            decel_slack: self.decel_slack,
         }
     }
 

@@ -4,7 +4,7 @@
 
 use super::plan::Plan;
 use super::ramp::Cursor;
-use super::search::{self, Probe};
+use super::search;
 use super::{Layout, Player};
 use crate::base::timer::TableWord;
 
@@ -103,28 +103,27 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     }
 
     /// The position [`Player::set_cruise_period`] cruises at: the last
-    /// whose period is not shorter than `ticks`, searched from the top.
+    /// whose period is not shorter than `ticks`, 0 when none is.
     fn cruise_position(&self, ticks: u32) -> u32 {
         let (last, slack) = (self.accel_last, u64::from(self.accel_slack));
         let mut cursor = None;
-        let mut ended = false;
-        // From the top down: `k` steps below it.
-        let k = search::first(0, last.saturating_add(1), &mut |k| {
-            let Some(p) = Cursor::period_near(&mut cursor, &self.accel, last - k) else {
-                ended = true;
-                return Probe::Found;
-            };
-            let p = u64::from(p.into_ticks());
-            if p >= u64::from(ticks) {
-                Probe::Found
-            } else if p + slack < u64::from(ticks) {
-                // No step before it, above it on the ramp, reaches `ticks`.
-                Probe::Before
-            } else {
-                Probe::Fails
-            }
+        // `k` steps below the top: short by more than the slack, and so is
+        // every step above it.
+        let k = search::past(0, last.saturating_add(1), &mut |k| {
+            Cursor::period_near(&mut cursor, &self.accel, last - k)
+                .is_some_and(|p: W| u64::from(p.into_ticks()) + slack < u64::from(ticks))
         });
-        if ended { 0 } else { last.saturating_sub(k) }
+        let Some(mut c) = Cursor::at(&self.accel, last.saturating_sub(k)) else {
+            return 0;
+        };
+        loop {
+            if c.period(&self.accel).into_ticks() >= ticks {
+                return c.pos;
+            }
+            if !c.backward(&self.accel) {
+                return 0;
+            }
+        }
     }
 
     /// Steps a [`Player::stop`] now would play: the deceleration ramp from
@@ -194,19 +193,22 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     fn accel_entry(&self, current: u32) -> u32 {
         let (last, slack) = (self.accel_last, u64::from(self.accel_slack));
         let mut cursor = None;
-        let pos = search::first(0, last, &mut |pos| {
-            let p =
-                Cursor::period_near(&mut cursor, &self.accel, pos).map_or(0, |w: W| w.into_ticks());
-            if p <= current {
-                Probe::Found
-            } else if u64::from(p) > u64::from(current) + slack {
-                // Every step before it is slower than `p - slack`.
-                Probe::Before
-            } else {
-                Probe::Fails
-            }
+        // Longer by more than the slack, and so is every step before it.
+        let pos = search::past(0, last, &mut |pos| {
+            Cursor::period_near(&mut cursor, &self.accel, pos)
+                .is_some_and(|p: W| u64::from(p.into_ticks()) > u64::from(current) + slack)
         });
-        pos.min(last)
+        let Some(mut c) = Cursor::at(&self.accel, pos) else {
+            return last;
+        };
+        loop {
+            if c.period(&self.accel).into_ticks() <= current {
+                return c.pos;
+            }
+            if !c.forward(&self.accel, last) {
+                return last;
+            }
+        }
     }
 }
 

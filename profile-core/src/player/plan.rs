@@ -11,7 +11,7 @@
 use core::slice;
 
 use super::ramp::{Cursor, Ramp};
-use super::search::{self, Probe};
+use super::search;
 use crate::base::timer::TableWord;
 
 /// A run of steps, as the step path plays it.
@@ -170,6 +170,8 @@ pub(crate) struct Sides<'p, 'a, W> {
     /// that far faster than the acceleration side has every step before it
     /// faster too.
     pub(crate) slack: u32,
+    /// The deceleration ramp's slack alone.
+    pub(crate) decel_slack: u32,
 }
 
 impl<'a, W: TableWord> Sides<'_, 'a, W> {
@@ -315,34 +317,48 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
     /// one by one.
     fn crossing(&self, p: u32, r: u32) -> u32 {
         // Walking down, the steps one by one; then the search.
-        let walked_down = match self.toward(p).1 {
-            -1 => (p - self.cruise).min(r),
-            _ => 0,
+        let (walked_down, slack) = match self.toward(p).1 {
+            -1 => ((p - self.cruise).min(r), self.slack),
+            1 => (0, self.slack),
+            // Held: only the deceleration ramp's order counts.
+            _ => (0, self.decel_slack),
         };
-        if let Some(j) = self.scan(p, r, walked_down) {
+        if walked_down > 0 {
+            // Walking down, the acceleration side is never faster than at
+            // `p` but for its slack: a deceleration step more than both
+            // ramps' slack faster than that has every step before it faster
+            // than the acceleration side.
+            let mut d = None;
+            let at_p = self.a(p);
+            let from = search::past(0, walked_down, &mut |j| {
+                Cursor::period_near(&mut d, self.decel, r - 1 - j).is_some_and(|dp: W| {
+                    u64::from(dp.into_ticks()) + u64::from(self.slack) < u64::from(at_p)
+                })
+            });
+            if let Some(j) = self.scan(p, r, from, walked_down - from) {
+                return j;
+            }
+        }
+        // Often the first: a long move's deceleration ramp joins at its top.
+        if let Some(j) = self.scan(p, r, walked_down, 1.min(r - walked_down)) {
             return j;
         }
+        // A step more than `slack` ticks short of not faster has every
+        // step before it faster: the last of those is searched, and the
+        // steps from there read one by one.
         let mut d = None;
         let mut a = None;
-        let mut ended = false;
-        let j = search::first(walked_down, r, &mut |j| {
+        let from = search::past(walked_down, r, &mut |j| {
             let dp = Cursor::period_near(&mut d, self.decel, r - 1 - j);
             let ap = Cursor::period_near(&mut a, self.accel, self.walked(p, j));
-            let (Some(dp), Some(ap)) = (dp, ap) else {
-                // Past a ramp's end nothing is read, as in the scan.
-                ended = true;
-                return Probe::Found;
-            };
-            let (dp, ap) = (u64::from(dp.into_ticks()), u64::from(ap.into_ticks()));
-            if dp >= ap {
-                Probe::Found
-            } else if dp + u64::from(self.slack) < ap {
-                Probe::Before
-            } else {
-                Probe::Fails
+            match (dp, ap) {
+                (Some(dp), Some(ap)) => {
+                    u64::from(dp.into_ticks()) + u64::from(slack) < u64::from(ap.into_ticks())
+                }
+                _ => false,
             }
         });
-        if ended { r } else { j }
+        self.scan(p, r, from, r - from).unwrap_or(r)
     }
 
     /// Where the acceleration side stands `j` steps after `p`.
@@ -354,13 +370,15 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
         }
     }
 
-    /// [`Sides::crossing`] read step by step over the first `n` of the last
-    /// `r` steps: the step found, or `None` when none of those is, `Some(r)`
-    /// when a ramp ends before.
-    fn scan(&self, p: u32, r: u32, n: u32) -> Option<u32> {
+    /// [`Sides::crossing`] read step by step over `n` of the last `r`
+    /// steps from step `from`: the step found, `Some(r)` when the steps
+    /// read reach the last or a ramp ends, `None` when none of those is.
+    fn scan(&self, p: u32, r: u32, from: u32, n: u32) -> Option<u32> {
         if n == 0 {
             return None;
         }
+        let to_end = (from + n == r).then_some(r);
+        let p = self.walked(p, from);
         if let (
             Ramp::Steps {
                 periods: a,
@@ -373,8 +391,22 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
         ) = (*self.accel, *self.decel)
         {
             // Per-step tables: read them directly.
-            let (mut pa, mut di) = (p as usize, r as usize - 1);
-            for j in 0..n {
+            let top = (r - 1 - from) as usize;
+            if self.toward(p).1 == 0 {
+                // Held: one period to compare the deceleration table with,
+                // read down from `top`.
+                let (Some(&held), Some(d)) = (a.get(p as usize), d.get(top + 1 - n as usize..=top))
+                else {
+                    return Some(r);
+                };
+                let held = held.into_ticks();
+                return match d.iter().rev().position(|x| x.into_ticks() >= held) {
+                    Some(i) => Some(from + i as u32),
+                    None => to_end,
+                };
+            }
+            let (mut pa, mut di) = (p as usize, top);
+            for j in from..from + n {
                 let (Some(da), Some(aa)) = (d.get(di), a.get(pa)) else {
                     return Some(r);
                 };
@@ -384,11 +416,11 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
                 di = di.wrapping_sub(1);
                 pa = self.toward(pa as u32).0 as usize;
             }
-            return (n == r).then_some(r);
+            return to_end;
         }
-        let mut d = Cursor::at(self.decel, r - 1).unwrap_or(Cursor::ZERO);
+        let mut d = Cursor::at(self.decel, r - 1 - from).unwrap_or(Cursor::ZERO);
         let mut a = Cursor::at(self.accel, p).unwrap_or(Cursor::ZERO);
-        for j in 0..n {
+        for j in from..from + n {
             if d.period(self.decel).into_ticks() >= a.period(self.accel).into_ticks() {
                 return Some(j);
             }
@@ -403,6 +435,6 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
                 _ => {}
             }
         }
-        (n == r).then_some(r)
+        to_end
     }
 }
