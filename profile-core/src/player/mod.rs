@@ -118,6 +118,9 @@ pub struct Player<'a, W, L = AnyLayout> {
     accel_slack: u32,
     /// The deceleration ramp's alone.
     decel_slack: u32,
+    /// Cursors at the two ramps' tops, from which searches on compressed
+    /// ramps seek positions near the top, a run at a time.
+    tops: [Option<Cursor>; 2],
     /// Playing [`Player::run`]: the deceleration is put off, a lap at a
     /// time, until [`Player::stop`].
     endless: bool,
@@ -188,6 +191,10 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             slack: accel.slack().saturating_add(decel.slack()),
             accel_slack: accel.slack(),
             decel_slack: decel.slack(),
+            tops: [
+                Cursor::at(&accel, accel_last),
+                Cursor::at(&decel, decel.len_steps().saturating_sub(1)),
+            ],
             endless: false,
             extended: 0,
             run: Run::empty(),
@@ -198,10 +205,10 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         }
     }
 
-    fn sides(&self) -> Sides<'_, 'a, W> {
+    fn sides(&self) -> Sides<'a, W> {
         Sides {
-            accel: &self.accel,
-            decel: &self.decel,
+            accel: self.accel,
+            decel: self.decel,
             accel_last: self.accel_last,
             decel_last: self.decel_last,
             decel_fastest: self.decel_fastest,
@@ -209,12 +216,20 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             cruise: self.cruise,
             slack: self.slack,
             decel_slack: self.decel_slack,
+            tops: self.tops,
         }
     }
 
-    /// Follows `plan` from its start: nothing played of it yet.
-    fn follow(&mut self, plan: Plan<'a, W>, before: u32) {
-        self.plan = plan;
+    /// Plans `r` steps from `p` (the acceleration side's position) and
+    /// follows the plan, `before` the period played before it.
+    fn replan(&mut self, p: u32, r: u32, before: u32) {
+        let sides = self.sides();
+        sides.plan(&mut self.plan, p, r);
+        self.follow(before);
+    }
+
+    /// Follows the plan from its start: nothing played of it yet.
+    fn follow(&mut self, before: u32) {
         self.run = Run::empty();
         self.computed = RunState::default();
         self.before = before;
@@ -238,12 +253,12 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         self.endless = false;
         self.extended = 0;
         let empty = self.accel.period_at(0).is_none() || self.decel.period_at(0).is_none();
-        let plan = if empty || steps == 0 {
-            Plan::EMPTY
+        if empty || steps == 0 {
+            self.plan.clear();
+            self.follow(0);
         } else {
-            self.sides().plan(0, steps)
-        };
-        self.follow(plan, 0);
+            self.replan(0, steps, 0);
+        }
     }
 
     /// Cruises at step `pos` of the acceleration ramp (the entry index for a
@@ -255,8 +270,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         let remaining = self.remaining();
         if remaining > 0 && !decelerating {
             let last = self.last_period();
-            let plan = self.sides().plan(acc, remaining);
-            self.follow(plan, last);
+            self.replan(acc, remaining, last);
         }
     }
 
@@ -275,14 +289,17 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         // Not moving yet, or already slower than the ramp's slowest entry:
         // at rest now.
         if current == 0 || self.period_dec(0) < current {
-            self.follow(Plan::EMPTY, current);
+            self.plan.clear();
+            self.follow(current);
             return;
         }
         let needed = self.entry_point(current) + 1;
         if needed < remaining {
             let (acc, _) = self.state();
-            let plan = Plan::one(self.sides().decelerate(needed - 1, acc));
-            self.follow(plan, current);
+            let stretch = self.sides().decelerate(needed - 1, acc);
+            self.plan.clear();
+            self.plan.push(stretch);
+            self.follow(current);
         }
     }
 
@@ -292,7 +309,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// diffused tables.
     fn entry_point(&self, current: u32) -> u32 {
         // Probes near each other: one cursor moves between them.
-        let mut cursor = None;
+        let mut cursor = self.tops[1];
         let mut period_dec = |pos| {
             Cursor::period_near(&mut cursor, &self.decel, pos).map_or(0, |w: W| w.into_ticks())
         };
@@ -319,7 +336,8 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     }
 
     fn period_dec(&self, pos: u32) -> u32 {
-        self.decel.period_at(pos).map_or(0, |w| w.into_ticks())
+        Cursor::near(self.tops[1], &self.decel, pos)
+            .map_or(0, |c| c.period(&self.decel).into_ticks())
     }
 
     /// Where the acceleration side stands after the steps played, and
@@ -353,8 +371,8 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             _ => (s, played),
         };
         let ramp = if s.decel { &self.decel } else { &self.accel };
-        ramp.period_at(s.read_at(k - 1))
-            .map_or(0, |w| w.into_ticks())
+        // The stretch's cursor stands near: where it reads next.
+        Cursor::near(Some(s.at), ramp, s.read_at(k - 1)).map_or(0, |c| c.period(ramp).into_ticks())
     }
 
     /// Steps left in the move.

@@ -2,7 +2,6 @@
 //! ([`Player::run`]), a cruise speed in ticks ([`Player::set_cruise_period`])
 //! and a new end ([`Player::retarget`]).
 
-use super::plan::Plan;
 use super::ramp::Cursor;
 use super::search;
 use super::{Layout, Player};
@@ -54,16 +53,17 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// is longer than a lap ends the run there.
     #[cold]
     pub(super) fn next_lap(&mut self) {
-        let (acc, _) = self.state();
-        let last = self.last_period();
-        let before = self.remaining();
-        let plan = self.sides().plan(acc, LAP);
-        if plan.len == 0 || plan.stretches[0].decelerating {
+        // Within reach of the deceleration ramp at once: no lap to add.
+        if LAP - 1 <= self.decel_last {
             self.endless = false;
             return;
         }
+        let (acc, _) = self.state();
+        let last = self.last_period();
+        let before = self.remaining();
+        let sides = self.sides();
+        sides.plan(&mut self.plan, acc, LAP);
         self.extended += u64::from(LAP - before);
-        self.plan = plan;
         self.before = last;
     }
 
@@ -106,14 +106,14 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// whose period is not shorter than `ticks`, 0 when none is.
     fn cruise_position(&self, ticks: u32) -> u32 {
         let (last, slack) = (self.accel_last, u64::from(self.accel_slack));
-        let mut cursor = None;
+        let mut cursor = self.tops[0];
         // `k` steps below the top: short by more than the slack, and so is
         // every step above it.
         let k = search::past(0, last.saturating_add(1), &mut |k| {
             Cursor::period_near(&mut cursor, &self.accel, last - k)
                 .is_some_and(|p: W| u64::from(p.into_ticks()) + slack < u64::from(ticks))
         });
-        let Some(mut c) = Cursor::at(&self.accel, last.saturating_sub(k)) else {
+        let Some(mut c) = Cursor::near(self.tops[0], &self.accel, last.saturating_sub(k)) else {
             return 0;
         };
         loop {
@@ -179,12 +179,12 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             (_, true) => self.accel_entry(current),
             (_, false) => acc,
         };
-        let plan = if steps == 0 {
-            Plan::EMPTY
+        if steps == 0 {
+            self.plan.clear();
+            self.follow(current);
         } else {
-            self.sides().plan(from, steps)
-        };
-        self.follow(plan, current);
+            self.replan(from, steps, current);
+        }
         true
     }
 
@@ -192,13 +192,13 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// longer than `current`; its top when none is.
     fn accel_entry(&self, current: u32) -> u32 {
         let (last, slack) = (self.accel_last, u64::from(self.accel_slack));
-        let mut cursor = None;
+        let mut cursor = self.tops[0];
         // Longer by more than the slack, and so is every step before it.
         let pos = search::past(0, last, &mut |pos| {
             Cursor::period_near(&mut cursor, &self.accel, pos)
                 .is_some_and(|p: W| u64::from(p.into_ticks()) > u64::from(current) + slack)
         });
-        let Some(mut c) = Cursor::at(&self.accel, pos) else {
+        let Some(mut c) = Cursor::near(self.tops[0], &self.accel, pos) else {
             return last;
         };
         loop {

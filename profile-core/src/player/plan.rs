@@ -136,7 +136,14 @@ impl<'a, W: TableWord> Plan<'a, W> {
         }; MAX_STRETCHES],
     };
 
-    fn push(&mut self, stretch: Stretch<'a, W>) {
+    /// No stretches: nothing to play.
+    pub(crate) fn clear(&mut self) {
+        self.next = 0;
+        self.at = 0;
+        self.len = 0;
+    }
+
+    pub(crate) fn push(&mut self, stretch: Stretch<'a, W>) {
         if let Some(slot) = self.stretches.get_mut(self.len) {
             *slot = stretch;
             self.len += 1;
@@ -147,19 +154,12 @@ impl<'a, W: TableWord> Plan<'a, W> {
     pub(crate) fn steps(&self) -> u32 {
         self.stretches[..self.len].iter().map(|s| s.count).sum()
     }
-
-    /// A plan of one stretch.
-    pub(crate) fn one(stretch: Stretch<'a, W>) -> Self {
-        let mut plan = Self::EMPTY;
-        plan.push(stretch);
-        plan
-    }
 }
 
 /// What the planner knows of a player.
-pub(crate) struct Sides<'p, 'a, W> {
-    pub(crate) accel: &'p Ramp<'a, W>,
-    pub(crate) decel: &'p Ramp<'a, W>,
+pub(crate) struct Sides<'a, W> {
+    pub(crate) accel: Ramp<'a, W>,
+    pub(crate) decel: Ramp<'a, W>,
     pub(crate) accel_last: u32,
     pub(crate) decel_last: u32,
     pub(crate) decel_fastest: u32,
@@ -172,11 +172,21 @@ pub(crate) struct Sides<'p, 'a, W> {
     pub(crate) slack: u32,
     /// The deceleration ramp's slack alone.
     pub(crate) decel_slack: u32,
+    /// Cursors at the tops of the acceleration and deceleration ramps.
+    pub(crate) tops: [Option<Cursor>; 2],
 }
 
-impl<'a, W: TableWord> Sides<'_, 'a, W> {
+impl<'a, W: TableWord> Sides<'a, W> {
     fn a(&self, pos: u32) -> u32 {
-        self.accel.period_at(pos).map_or(0, |w| w.into_ticks())
+        self.cursor(false, pos)
+            .map_or(0, |c| c.period(&self.accel).into_ticks())
+    }
+
+    /// The cursor at `pos` of the deceleration ramp (else the acceleration
+    /// ramp), sought from the ramp's top when that is nearer.
+    fn cursor(&self, decel: bool, pos: u32) -> Option<Cursor> {
+        let ramp = if decel { &self.decel } else { &self.accel };
+        Cursor::near(self.tops[usize::from(decel)], ramp, pos)
     }
 
     /// One step of the acceleration side towards the cruise position.
@@ -203,7 +213,7 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
         acc: u32,
         acc_dir: i8,
     ) -> Stretch<'a, W> {
-        let ramp = if decel { self.decel } else { self.accel };
+        let ramp = if decel { &self.decel } else { &self.accel };
         let run = match *ramp {
             Ramp::Steps { periods, hold } if hold <= 1 => Run::over(periods, pos, dir, count),
             _ => None,
@@ -212,7 +222,7 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
             run,
             decel,
             start: pos,
-            at: Cursor::at(ramp, pos).unwrap_or(Cursor::ZERO),
+            at: self.cursor(decel, pos).unwrap_or(Cursor::ZERO),
             dir,
             count,
             total: count,
@@ -239,9 +249,9 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
     }
 
     /// Plans `r` steps of a move that is not decelerating, the acceleration
-    /// side at `p`.
-    pub(crate) fn plan(&self, mut p: u32, mut r: u32) -> Plan<'a, W> {
-        let mut plan = Plan::EMPTY;
+    /// side at `p`, into `plan` (in place: a plan is large to copy).
+    pub(crate) fn plan(&self, plan: &mut Plan<'a, W>, mut p: u32, mut r: u32) {
+        plan.clear();
         let l = self.decel_last;
         while r > 0 && r - 1 > l {
             // The deceleration ramp is out of reach for `far` more steps.
@@ -265,31 +275,30 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
                 let n = far
                     .min(self.cruise - p)
                     .min(self.cap.saturating_sub(p).max(1));
-                p = self.walk(&mut plan, p, n);
+                p = self.walk(plan, p, n);
                 n
             } else {
-                p = self.walk(&mut plan, p, far);
+                p = self.walk(plan, p, far);
                 far
             };
             r -= n;
         }
         if r > 0 {
-            self.within_reach(&mut plan, p, r);
+            self.within_reach(plan, p, r);
         }
-        plan
     }
 
     /// Steps in a row, from `p` walking down to the cruise position, whose
     /// acceleration period is faster than the deceleration ramp's fastest.
     fn capped_walk(&self, p: u32, far: u32) -> u32 {
-        let mut c = Cursor::at(self.accel, p).unwrap_or(Cursor::ZERO);
+        let mut c = self.cursor(false, p).unwrap_or(Cursor::ZERO);
         let mut n = 0;
         while n < far
             && c.pos > self.cruise
-            && c.period(self.accel).into_ticks() < self.decel_fastest
+            && c.period(&self.accel).into_ticks() < self.decel_fastest
         {
             n += 1;
-            c.backward(self.accel);
+            c.backward(&self.accel);
         }
         n.max(1)
     }
@@ -328,10 +337,10 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
             // `p` but for its slack: a deceleration step more than both
             // ramps' slack faster than that has every step before it faster
             // than the acceleration side.
-            let mut d = None;
+            let mut d = self.tops[1];
             let at_p = self.a(p);
             let from = search::past(0, walked_down, &mut |j| {
-                Cursor::period_near(&mut d, self.decel, r - 1 - j).is_some_and(|dp: W| {
+                Cursor::period_near(&mut d, &self.decel, r - 1 - j).is_some_and(|dp: W| {
                     u64::from(dp.into_ticks()) + u64::from(self.slack) < u64::from(at_p)
                 })
             });
@@ -346,11 +355,10 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
         // A step more than `slack` ticks short of not faster has every
         // step before it faster: the last of those is searched, and the
         // steps from there read one by one.
-        let mut d = None;
-        let mut a = None;
+        let [mut a, mut d] = self.tops;
         let from = search::past(walked_down, r, &mut |j| {
-            let dp = Cursor::period_near(&mut d, self.decel, r - 1 - j);
-            let ap = Cursor::period_near(&mut a, self.accel, self.walked(p, j));
+            let dp = Cursor::period_near(&mut d, &self.decel, r - 1 - j);
+            let ap = Cursor::period_near(&mut a, &self.accel, self.walked(p, j));
             match (dp, ap) {
                 (Some(dp), Some(ap)) => {
                     u64::from(dp.into_ticks()) + u64::from(slack) < u64::from(ap.into_ticks())
@@ -388,7 +396,7 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
                 periods: d,
                 hold: 0..=1,
             },
-        ) = (*self.accel, *self.decel)
+        ) = (self.accel, self.decel)
         {
             // Per-step tables: read them directly.
             let top = (r - 1 - from) as usize;
@@ -418,19 +426,19 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
             }
             return to_end;
         }
-        let mut d = Cursor::at(self.decel, r - 1 - from).unwrap_or(Cursor::ZERO);
-        let mut a = Cursor::at(self.accel, p).unwrap_or(Cursor::ZERO);
+        let mut d = self.cursor(true, r - 1 - from).unwrap_or(Cursor::ZERO);
+        let mut a = self.cursor(false, p).unwrap_or(Cursor::ZERO);
         for j in from..from + n {
-            if d.period(self.decel).into_ticks() >= a.period(self.accel).into_ticks() {
+            if d.period(&self.decel).into_ticks() >= a.period(&self.accel).into_ticks() {
                 return Some(j);
             }
-            d.backward(self.decel);
+            d.backward(&self.decel);
             match self.toward(a.pos).1 {
                 1 => {
-                    a.forward(self.accel, self.accel_last);
+                    a.forward(&self.accel, self.accel_last);
                 }
                 -1 => {
-                    a.backward(self.accel);
+                    a.backward(&self.accel);
                 }
                 _ => {}
             }

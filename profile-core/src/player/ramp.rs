@@ -275,23 +275,42 @@ impl Cursor {
     /// placed, when `None`): on runs a whole run at a time, so that probes
     /// near each other cost the runs between them, not the runs from the
     /// start. The same cursor as [`Cursor::at`]; `None` past the ramp's end
-    /// (the cursor then stands nowhere useful: place it again).
+    /// (the cursor then stands nowhere useful: place it again). A per-step
+    /// table is read directly, the cursor left as it is.
     pub(crate) fn period_near<W: TableWord>(
         cursor: &mut Option<Cursor>,
         ramp: &Ramp<'_, W>,
         pos: u32,
     ) -> Option<W> {
-        let c = match (*cursor, *ramp) {
-            (Some(mut c), Ramp::Runs(runs)) => {
+        if let Ramp::Steps {
+            periods,
+            hold: 0..=1,
+        } = *ramp
+        {
+            return periods.get(pos as usize).copied();
+        }
+        let c = Cursor::near(*cursor, ramp, pos)?;
+        *cursor = Some(c);
+        Some(c.period(ramp))
+    }
+
+    /// The cursor at `pos`: on runs moved there from `hint` (a cursor on
+    /// the same ramp) when that is nearer than the ramp's start, a run at a
+    /// time; else placed as [`Cursor::at`] places it.
+    pub(crate) fn near<W: TableWord>(
+        hint: Option<Cursor>,
+        ramp: &Ramp<'_, W>,
+        pos: u32,
+    ) -> Option<Cursor> {
+        match (hint, *ramp) {
+            (Some(mut c), Ramp::Runs(runs)) if c.pos.abs_diff(pos) < pos => {
                 c.seek_runs(runs, pos);
                 // Past the last run: no step there.
                 run_at(runs, c.entry).filter(|_| c.pos == pos)?;
-                c
+                Some(c)
             }
-            _ => Cursor::at(ramp, pos)?,
-        };
-        *cursor = Some(c);
-        Some(c.period(ramp))
+            _ => Cursor::at(ramp, pos),
+        }
     }
 
     /// Moves the cursor to step `pos` of `runs` (which holds it), a run at a
