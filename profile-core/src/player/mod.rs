@@ -217,6 +217,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             slack: self.slack,
             decel_slack: self.decel_slack,
             tops: self.tops,
+            recent: core::cell::Cell::new([None; 2]),
         }
     }
 

@@ -8,6 +8,7 @@
 //! the deceleration ramp plays to the end. The planner finds where each of
 //! these changes happens, so that playing is a countdown and a load.
 
+use core::cell::Cell;
 use core::slice;
 
 use super::ramp::{Cursor, Ramp};
@@ -174,6 +175,9 @@ pub(crate) struct Sides<'a, W> {
     pub(crate) decel_slack: u32,
     /// Cursors at the tops of the acceleration and deceleration ramps.
     pub(crate) tops: [Option<Cursor>; 2],
+    /// The cursors placed last on each ramp: a plan's stretches begin near
+    /// each other.
+    pub(crate) recent: Cell<[Option<Cursor>; 2]>,
 }
 
 impl<'a, W: TableWord> Sides<'a, W> {
@@ -185,8 +189,32 @@ impl<'a, W: TableWord> Sides<'a, W> {
     /// The cursor at `pos` of the deceleration ramp (else the acceleration
     /// ramp), sought from the ramp's top when that is nearer.
     fn cursor(&self, decel: bool, pos: u32) -> Option<Cursor> {
-        let ramp = if decel { &self.decel } else { &self.accel };
-        Cursor::near(self.tops[usize::from(decel)], ramp, pos)
+        let (ramp, side) = if decel {
+            (&self.decel, 1)
+        } else {
+            (&self.accel, 0)
+        };
+        if !matches!(ramp, Ramp::Runs(_)) {
+            return Cursor::at(ramp, pos);
+        }
+        let mut recent = self.recent.get();
+        let hint = match (recent[side], self.tops[side]) {
+            (Some(r), Some(t)) if r.pos.abs_diff(pos) < t.pos.abs_diff(pos) => Some(r),
+            (r, None) => r,
+            (_, t) => t,
+        };
+        let c = Cursor::near(hint, ramp, pos);
+        if c.is_some() {
+            recent[side] = c;
+            self.recent.set(recent);
+        }
+        c
+    }
+
+    /// A cursor to begin a search on each ramp from: the one placed last.
+    fn hints(&self) -> [Option<Cursor>; 2] {
+        let recent = self.recent.get();
+        [recent[0].or(self.tops[0]), recent[1].or(self.tops[1])]
     }
 
     /// One step of the acceleration side towards the cruise position.
@@ -337,7 +365,7 @@ impl<'a, W: TableWord> Sides<'a, W> {
             // `p` but for its slack: a deceleration step more than both
             // ramps' slack faster than that has every step before it faster
             // than the acceleration side.
-            let mut d = self.tops[1];
+            let [_, mut d] = self.hints();
             let at_p = self.a(p);
             let from = search::past(0, walked_down, &mut |j| {
                 Cursor::period_near(&mut d, &self.decel, r - 1 - j).is_some_and(|dp: W| {
@@ -355,7 +383,7 @@ impl<'a, W: TableWord> Sides<'a, W> {
         // A step more than `slack` ticks short of not faster has every
         // step before it faster: the last of those is searched, and the
         // steps from there read one by one.
-        let [mut a, mut d] = self.tops;
+        let [mut a, mut d] = self.hints();
         let from = search::past(walked_down, r, &mut |j| {
             let dp = Cursor::period_near(&mut d, &self.decel, r - 1 - j);
             let ap = Cursor::period_near(&mut a, &self.accel, self.walked(p, j));
