@@ -277,6 +277,7 @@ impl Cursor {
     /// start. The same cursor as [`Cursor::at`]; `None` past the ramp's end
     /// (the cursor then stands nowhere useful: place it again). A per-step
     /// table is read directly, the cursor left as it is.
+    #[inline]
     pub(crate) fn period_near<W: TableWord>(
         cursor: &mut Option<Cursor>,
         ramp: &Ramp<'_, W>,
@@ -289,6 +290,15 @@ impl Cursor {
         {
             return periods.get(pos as usize).copied();
         }
+        Self::period_placed(cursor, ramp, pos)
+    }
+
+    /// [`Cursor::period_near`] on a ramp that is not a per-step table.
+    fn period_placed<W: TableWord>(
+        cursor: &mut Option<Cursor>,
+        ramp: &Ramp<'_, W>,
+        pos: u32,
+    ) -> Option<W> {
         let c = Cursor::near(*cursor, ramp, pos)?;
         *cursor = Some(c);
         Some(c.period(ramp))
