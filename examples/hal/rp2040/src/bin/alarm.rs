@@ -129,6 +129,8 @@ fn main() -> ! {
     // Step 0 in 100 µs, from the alarm's interrupt like every other.
     let at = timer.get_counter() + MicrosDurationU32::from_ticks(100);
     alarm.enable_interrupt();
+    // The interrupt is taken once the handler's state is in place, at the
+    // end of this critical section.
     critical_section::with(|cs| {
         let _ = alarm.schedule_at(at);
         STEPPER.borrow(cs).replace(Some(Stepper {
@@ -137,10 +139,9 @@ fn main() -> ! {
             pin,
             at,
         }));
+        // SAFETY: no critical section relies on this interrupt being masked.
+        unsafe { pac::NVIC::unmask(pac::Interrupt::TIMER_IRQ_0) };
     });
-    // SAFETY: the handler's state is in place; no critical section relies on
-    // the interrupt staying masked.
-    unsafe { pac::NVIC::unmask(pac::Interrupt::TIMER_IRQ_0) };
     loop {
         cortex_m::asm::wfi(); // the move plays from the interrupt
     }

@@ -157,6 +157,8 @@ fn main() -> ! {
     let mut transfer =
         Transfer::init_memory_to_peripheral(streams.2, Arr(tim), first, Some(second), config);
 
+    // The interrupt is taken once the handler's state is in place, at the
+    // end of this critical section (the first buffer ends `HALF` periods on).
     critical_section::with(|cs| {
         // The stream waits for the first update event; step 0 now, its edge
         // `PULSE_DELAY` ticks after the counter starts.
@@ -164,10 +166,9 @@ fn main() -> ! {
             arr.0.cr1().modify(|_, w| w.cen().set_bit());
         });
         STEPPER.borrow(cs).replace(Some((player, transfer)));
+        // SAFETY: no critical section relies on this interrupt being masked.
+        unsafe { cortex_m::peripheral::NVIC::unmask(pac::Interrupt::DMA1_STREAM2) };
     });
-    // SAFETY: the handler's state is in place; no critical section relies on
-    // the interrupt staying masked.
-    unsafe { cortex_m::peripheral::NVIC::unmask(pac::Interrupt::DMA1_STREAM2) };
     loop {
         cortex_m::asm::wfi(); // the move plays by DMA
     }

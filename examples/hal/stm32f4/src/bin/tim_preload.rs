@@ -109,14 +109,15 @@ fn main() -> ! {
     tim.arr().write(|w| w.arr().set(reload(next)));
     tim.dier().write(|w| w.uie().set_bit());
 
+    // The interrupt is taken once the handler's state is in place, at the
+    // end of this critical section (the first update event is a period on).
     critical_section::with(|cs| {
         // Step 0 now: its edge `PULSE_DELAY` ticks after the counter starts.
         tim.cr1().modify(|_, w| w.cen().set_bit());
         STEPPER.borrow(cs).replace(Some((player, tim)));
+        // SAFETY: no critical section relies on this interrupt being masked.
+        unsafe { cortex_m::peripheral::NVIC::unmask(pac::Interrupt::TIM3) };
     });
-    // SAFETY: the handler's state is in place; no critical section relies on
-    // the interrupt staying masked.
-    unsafe { cortex_m::peripheral::NVIC::unmask(pac::Interrupt::TIM3) };
     loop {
         cortex_m::asm::wfi(); // the move plays from the interrupt
     }
