@@ -47,6 +47,7 @@
 //! assert_eq!(periods, [4000, 2500, 2000, 1800, 1800, 1800, 1800, 2000, 2500, 4000]);
 //! ```
 
+mod axes;
 mod axis;
 mod buffered;
 mod fill;
@@ -58,8 +59,9 @@ mod rated;
 use core::marker::PhantomData;
 
 use crate::base::timer::TableWord;
+pub use axes::Axes;
 pub use axis::{Axis, Direction, Moving};
-pub use buffered::{Buffered, Steps};
+pub use buffered::{AxesStart, Buffered, Steps};
 pub use layout::{AnyLayout, Compressed, Layout};
 use plan::{Plan, Run, Sides};
 pub use ramp::Ramp;
