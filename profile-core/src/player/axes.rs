@@ -66,13 +66,14 @@ use crate::base::timer::TableWord;
 /// assert_eq!(y_steps_at, [3, 5, 8, 10]);
 /// assert_eq!(plotter.position(), [10, -4]);
 /// ```
-// The player first, so that its step path keeps its offsets; the edges'
-// state next, read by every step.
+// The edges' state first, read by every step at the smallest offsets (an
+// M0 loads a word at most 124 bytes from its base), then the player, whose
+// step path reads only its first fields.
 #[derive(Clone, Debug)]
 #[repr(C)]
 pub struct Axes<'a, W, const N: usize, L = AnyLayout> {
-    player: Player<'a, W, L>,
     edges: Edges<N>,
+    player: Player<'a, W, L>,
     /// Each axis's position when the move began.
     start: [i64; N],
     /// Each axis's steps in the move.
@@ -113,22 +114,27 @@ impl<const N: usize> Edges<N> {
     };
 
     /// The mask of the axes that step on the lead's next step, the
-    /// followers' accumulators moved on by it.
+    /// followers' accumulators moved on by it. Written out slot by slot
+    /// (the slots past `N` vanish): a loop costs more than its body.
     #[inline(always)]
     fn next(&mut self) -> u32 {
         let lead_steps = self.inc[0];
         let mut mask = self.bit[0];
-        for j in 1..N {
-            let (sum, carry) = self.acc[j].overflowing_add(self.inc[j]);
-            self.acc[j] = if carry {
-                sum.wrapping_sub(lead_steps)
-            } else {
-                sum
-            };
-            if carry {
-                mask |= self.bit[j];
-            }
+        macro_rules! follow {
+            ($($j:literal)*) => {$(
+                if $j < N {
+                    let slot = (self.acc.get_mut($j), self.inc.get($j), self.bit.get($j));
+                    if let (Some(acc), Some(&inc), Some(&bit)) = slot {
+                        let (sum, carry) = acc.overflowing_add(inc);
+                        *acc = if carry { sum.wrapping_sub(lead_steps) } else { sum };
+                        if carry {
+                            mask |= bit;
+                        }
+                    }
+                }
+            )*};
         }
+        follow!(1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 21 22 23 24 25 26 27 28 29 30 31);
         mask
     }
 }
@@ -279,8 +285,10 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     /// an addition per follower, and a subtraction where it steps.
     #[inline]
     pub fn step(&mut self, write: impl FnOnce(W, u32)) -> bool {
-        let edges = &mut self.edges;
-        self.player.step(|period| write(period, edges.next()))
+        // The followers first, with the registers free: after the move's
+        // last step the accumulators move on unread.
+        let mask = self.edges.next();
+        self.player.step(|period| write(period, mask))
     }
 
     /// The next edge's period and mask ([`Axes::step`]), or `None` when

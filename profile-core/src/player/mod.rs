@@ -33,6 +33,10 @@
 //! its step path trying their run first. Each plays at nearly the cost of
 //! a load.
 //!
+//! Around it: [`Axis`] (a position and a direction), [`Axes`] (up to 32
+//! axes on one ramp, each stepping in proportion to its move), [`Buffered`]
+//! (for reload registers that take effect at the next wrap).
+//!
 //! ```
 //! use profile_core::player::{Player, Ramp};
 //!
