@@ -406,6 +406,16 @@ fn the_rule_by_hand() {
     assert_eq!(masks([0, 0]), [0u32; 0]);
 }
 
+/// On an empty ramp a move has no steps, and no axis moves.
+#[test]
+fn an_empty_ramp_moves_nothing() {
+    let mut axes = Axes::new(Player::new(Ramp::steps(&[] as &[u16])), [1, 2]);
+    assert!(axes.move_by([5, -3]).is_ok());
+    assert!(axes.is_done());
+    assert_eq!(axes.next_step(), None);
+    assert_eq!(axes.position(), [1, 2]);
+}
+
 /// A move is refused while another plays, and the positions can be set at
 /// rest.
 #[test]

@@ -118,23 +118,27 @@ impl<const N: usize> Edges<N> {
     /// (the slots past `N` vanish): a loop costs more than its body.
     #[inline(always)]
     fn next(&mut self) -> u32 {
-        let lead_steps = self.inc[0];
-        let mut mask = self.bit[0];
+        // The whole state in registers first, then the accumulators back.
+        let Edges { mut acc, inc, bit } = *self;
+        let lead_steps = inc[0];
+        let mut mask = bit[0];
         macro_rules! follow {
             ($($j:literal)*) => {$(
                 if $j < N {
-                    let slot = (self.acc.get_mut($j), self.inc.get($j), self.bit.get($j));
+                    let slot = (acc.get_mut($j), inc.get($j), bit.get($j));
                     if let (Some(acc), Some(&inc), Some(&bit)) = slot {
-                        let (sum, carry) = acc.overflowing_add(inc);
-                        *acc = if carry { sum.wrapping_sub(lead_steps) } else { sum };
+                        let (mut sum, carry) = acc.overflowing_add(inc);
                         if carry {
+                            sum = sum.wrapping_sub(lead_steps);
                             mask |= bit;
                         }
+                        *acc = sum;
                     }
                 }
             )*};
         }
         follow!(1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 21 22 23 24 25 26 27 28 29 30 31);
+        self.acc = acc;
         mask
     }
 }
@@ -258,9 +262,10 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
         }
         self.edges = edges;
         self.lead_steps = l;
-        self.lead_total = l;
         self.lead = lead;
         self.player.start(l);
+        // `l`, or none on an empty ramp.
+        self.lead_total = self.player.remaining();
         Ok(self.directions)
     }
 
@@ -282,7 +287,10 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     /// the mask of the axes that step on it (bit `i` for axis `i`) to
     /// `write`, and returns `true`; or returns `false` when the move is
     /// done. The lead's [`Player::step`] with the followers' accumulators:
-    /// an addition per follower, and a subtraction where it steps.
+    /// an addition per follower, and a subtraction where it steps, without
+    /// a branch. Three axes (two followers) take 20 instructions per step
+    /// more than the player on a Cortex-M3, 19 on an M4F and 29.2 on an M0
+    /// (`examples/measure/measure.sh`).
     #[inline]
     pub fn step(&mut self, write: impl FnOnce(W, u32)) -> bool {
         // The followers first, with the registers free: after the move's
