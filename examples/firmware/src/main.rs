@@ -27,6 +27,7 @@
 #![no_std]
 #![no_main]
 
+mod axes;
 mod moves;
 mod regen;
 mod stack;
@@ -112,7 +113,8 @@ fn main() -> ! {
     let mut report = Report::default();
 
     hprintln!("stepper-profiles firmware: Cortex-M3 (MPS2 AN385), tables from profiles.toml");
-    moves::run(timer, &mut report);
+    let (timer, log) = moves::run(timer, &mut report);
+    axes::run(timer, log, &mut report);
     regen::run(&mut report);
     hprintln!(
         "stack: {} bytes at most, of {} free",

@@ -100,7 +100,7 @@ pub enum Event {
 /// deceleration ramp's fastest entry, until the deceleration ramp at the
 /// steps that remain is within reach and not faster; from then on the
 /// deceleration ramp plays to the end. Both play exactly as their tables read.
-struct Model<'a> {
+pub struct Model<'a> {
     accel: Table<'a>,
     decel: Table<'a>,
     pos: u32,
@@ -112,7 +112,7 @@ struct Model<'a> {
 }
 
 impl<'a> Model<'a> {
-    fn new(accel: Table<'a>, decel: Table<'a>, steps: u32) -> Self {
+    pub fn new(accel: Table<'a>, decel: Table<'a>, steps: u32) -> Self {
         let top = accel.len_steps() - 1;
         let decel_fastest = (0..decel.len_steps())
             .map(|p| decel.at(p))
@@ -132,7 +132,7 @@ impl<'a> Model<'a> {
 
     /// Applies `event`; for a stop, `chosen` is the player's steps remaining
     /// after it. Returns `false` when the player's choice breaks the contract.
-    fn apply(&mut self, event: Event, chosen: u32) -> bool {
+    pub fn apply(&mut self, event: Event, chosen: u32) -> bool {
         match event {
             Event::Cruise(pos) => {
                 self.cruise = pos.min(self.accel.len_steps() - 1);
@@ -172,7 +172,7 @@ impl<'a> Model<'a> {
         }
     }
 
-    fn next(&mut self) -> Option<u16> {
+    pub fn next(&mut self) -> Option<u16> {
         if self.remaining == 0 {
             return None;
         }
@@ -338,7 +338,7 @@ pub fn play(
 /// Every step, timed at the pin by the clock the player does not drive: step
 /// `k` at the sum of the first `k` periods loaded, from the move's start,
 /// exact to the tick; one step per period.
-fn check_pin(name: &str, loaded: &[u16], taken: usize, report: &mut Report) {
+pub fn check_pin(name: &str, loaded: &[u16], taken: usize, report: &mut Report) {
     report.equal("steps timed at the pin", taken as u64, loaded.len() as u64);
     let (mut expected, mut off, mut first) = (0u64, 0u32, None);
     step::step_times(taken, |k, time| {
@@ -750,8 +750,9 @@ fn check_edges(log: &[u16], report: &mut Report) {
     );
 }
 
-/// Plays every move from the step interrupt and checks what it amounts to.
-pub fn run(mut timer: SYST, report: &mut Report) -> SYST {
+/// Plays every move from the step interrupt and checks what it amounts to;
+/// hands back the timer and the log of periods.
+pub fn run(mut timer: SYST, report: &mut Report) -> (SYST, &'static mut [u16; step::MAX_STEPS]) {
     hprintln!("moves (ticks of each table's timer):");
     report.equal(
         "sigmoid_exact ramp = TOTAL_TICKS",
@@ -794,5 +795,5 @@ pub fn run(mut timer: SYST, report: &mut Report) -> SYST {
         u64::from(*core::hint::black_box(&crate::SEED) == sigmoid_orange::PERIODS),
         1,
     );
-    timer
+    (timer, log)
 }

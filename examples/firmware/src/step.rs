@@ -26,15 +26,16 @@ use cortex_m::peripheral::SYST;
 use cortex_m::peripheral::syst::SystClkSource;
 use cortex_m_rt::exception;
 use critical_section::Mutex;
-use stepper_profiles::player::{Buffered, Compressed, Player};
+use stepper_profiles::player::{Axes, Buffered, Compressed, Player};
 
 use crate::moves::Event;
 
 /// The most steps a move may record.
 pub const MAX_STEPS: usize = 15_000;
 
-/// The step pin: the MPS2 FPGA's LED 0 (the SCC's `CFG_REG1`).
-const STEP_PIN: usize = 0x4002_F004;
+/// The step pins: the MPS2 FPGA's LEDs (the SCC's `CFG_REG1`), bit 0 for
+/// a player, bit `i` for axis `i` of [`Players::Axes`].
+pub const STEP_PINS: usize = 0x4002_F004;
 
 /// CMSDK APB timer 0: control and current value. It counts down from its
 /// reload value at 25 MHz, the MPS2's system clock.
@@ -48,11 +49,17 @@ pub const CLOCK_PER_TICK: u32 = 1;
 /// The stamps of the steps of the move playing: the clock's value at each.
 pub static STAMPS: Mutex<RefCell<[u32; MAX_STEPS]>> = Mutex::new(RefCell::new([0; MAX_STEPS]));
 
+/// The step pins toggled at each step of the move playing (bit `i`: pin
+/// `i`).
+pub static PINS: Mutex<RefCell<[u8; MAX_STEPS]>> = Mutex::new(RefCell::new([0; MAX_STEPS]));
+
 /// The player the interrupt plays from, for SysTick's buffered reload: of
 /// any layout, or of compressed tables only.
 pub enum Players {
     Any(Buffered<Player<'static, u16>>),
     Compressed(Buffered<Player<'static, u16, Compressed>>),
+    /// Three axes and the move they make (steps on each).
+    Axes(Buffered<Axes<'static, u16, 3>>, [i64; 3]),
 }
 
 /// `$body` on whichever player `$players` holds, bound to `$p`.
@@ -61,19 +68,47 @@ macro_rules! with_player {
         match $players {
             Players::Any($p) => $body,
             Players::Compressed($p) => $body,
+            Players::Axes($p, _) => $body,
         }
     };
 }
 
 impl Players {
-    /// Starts a move: the first two periods.
-    pub fn start(&mut self, steps: u32) -> (Option<u16>, Option<u16>) {
-        with_player!(self, p => p.start(steps))
+    /// Starts a move (of `steps` steps; the axes make theirs): the first
+    /// two periods and the pins the first step toggles.
+    pub fn start(&mut self, steps: u32) -> (Option<u16>, Option<u16>, u32) {
+        let (first, next) = match self {
+            Players::Any(p) => p.start(steps),
+            Players::Compressed(p) => p.start(steps),
+            Players::Axes(p, delta) => {
+                let s = p.move_by(*delta);
+                return (s.first, s.next, s.mask);
+            }
+        };
+        (first, next, u32::from(first.is_some()))
+    }
+
+    /// From the interrupt: the pins that step now (0: the move is over),
+    /// the period after the interval now starting to `load`.
+    fn step(&mut self, load: impl FnOnce(u16)) -> u32 {
+        match self {
+            Players::Any(p) => u32::from(p.step(load)),
+            Players::Compressed(p) => u32::from(p.step(load)),
+            Players::Axes(p, _) => p.step(load),
+        }
     }
 
     /// Periods of the move not yet loaded: what the model counts.
     pub fn to_load(&self) -> u32 {
         with_player!(self, p => p.inner().remaining())
+    }
+
+    /// The axes' positions at the pins (zeros for a player).
+    pub fn axes_position(&self) -> [i64; 3] {
+        match self {
+            Players::Axes(p, _) => p.position(),
+            _ => [0; 3],
+        }
     }
 
     pub fn is_done(&self) -> bool {
@@ -121,13 +156,19 @@ fn clock() -> u32 {
     unsafe { ptr::read_volatile(CLOCK_VALUE as *const u32) }
 }
 
-fn toggle_step_pin() {
-    // SAFETY: the SCC's LED register, read and written back with bit 0
-    // flipped.
+fn toggle_step_pins(pins: u32) {
+    // SAFETY: the SCC's LED register, read and written back with the bits
+    // of `pins` flipped.
     unsafe {
-        let pin = STEP_PIN as *mut u32;
-        ptr::write_volatile(pin, ptr::read_volatile(pin) ^ 1);
+        let reg = STEP_PINS as *mut u32;
+        ptr::write_volatile(reg, ptr::read_volatile(reg) ^ pins);
     }
+}
+
+/// The step pins as they are now.
+pub fn step_pins() -> u32 {
+    // SAFETY: the SCC's LED register, read only.
+    unsafe { ptr::read_volatile(STEP_PINS as *const u32) }
 }
 
 /// The step interrupt.
@@ -162,10 +203,14 @@ fn SysTick() {
             }
             *steps += 1;
         };
-        if with_player!(&mut s.player, p => p.step(load)) {
-            toggle_step_pin();
+        let pins = s.player.step(load);
+        if pins != 0 {
+            toggle_step_pins(pins);
             if let Some(stamp) = STAMPS.borrow_ref_mut(cs).get_mut(s.taken) {
                 *stamp = now;
+            }
+            if let Some(slot) = PINS.borrow_ref_mut(cs).get_mut(s.taken) {
+                *slot = pins as u8;
             }
             s.taken += 1;
             s.toggles += 1;
@@ -182,7 +227,7 @@ fn SysTick() {
 /// stamped with that tick), loads the second, and waits, spinning, for the
 /// handler to end the move. Returns the stepper, with what it recorded.
 pub fn run(mut stepper: Stepper, steps: u32) -> Stepper {
-    let (first, next) = stepper.player.start(steps);
+    let (first, next, pins) = stepper.player.start(steps);
     let Some(first) = first else {
         stepper.finished = true;
         return stepper;
@@ -200,7 +245,7 @@ pub fn run(mut stepper: Stepper, steps: u32) -> Stepper {
         start = clock();
     }
     stepper.timer.enable_counter();
-    toggle_step_pin();
+    toggle_step_pins(pins);
     // SysTick loads its reload register at its first tick, at most one of
     // its own after the enable: the second period goes in after that.
     while start.wrapping_sub(clock()) <= CLOCK_PER_TICK {}
@@ -209,7 +254,10 @@ pub fn run(mut stepper: Stepper, steps: u32) -> Stepper {
         stepper.log[1] = next;
         stepper.steps = 2;
     }
-    critical_section::with(|cs| STAMPS.borrow_ref_mut(cs)[0] = start);
+    critical_section::with(|cs| {
+        STAMPS.borrow_ref_mut(cs)[0] = start;
+        PINS.borrow_ref_mut(cs)[0] = pins as u8;
+    });
     stepper.taken = 1;
     stepper.toggles = 1;
     critical_section::with(|cs| STEPPER.borrow(cs).replace(Some(stepper)));

@@ -15,7 +15,7 @@ use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprintln};
 use panic_semihosting as _;
 use stepgen::Stepgen;
-use stepper_profiles::player::{Axis, Compressed, Direction, Layout, Player, Ramp};
+use stepper_profiles::player::{Axes, Axis, Compressed, Direction, Layout, Player, Ramp};
 
 /// The tables of the root `profiles.toml`.
 mod profiles {
@@ -83,6 +83,18 @@ pub fn player_runs_step(player: &mut Player<'_, u16, Compressed>, timer: &mut SY
 #[unsafe(no_mangle)]
 pub fn axis_step(axis: &mut Axis<'_, u16>, timer: &mut SYST) {
     axis.step(|period| timer.set_reload(u32::from(period)));
+}
+
+/// Three axes on one ramp: the lead's next period into the reload
+/// register, and the mask of the axes that step on the edge to the step
+/// pins.
+#[inline(never)]
+#[unsafe(no_mangle)]
+pub fn axes_step(axes: &mut Axes<'_, u16, 3>, timer: &mut SYST, pins: &mut u32) {
+    axes.step(|period, mask| {
+        timer.set_reload(u32::from(period));
+        *pins = mask;
+    });
 }
 
 /// The next periods into a DMA buffer: [`Player::fill`].
@@ -221,6 +233,37 @@ macro_rules! planning {
         });
         while player.next_period().is_some() {}
     }};
+}
+
+/// Three axes on the move of the per-step player, the lead on axis 1; the
+/// followers step on 4321 and 1234 of its 5000 steps. Not inlined, so that
+/// `main`'s frame (and with it where the DMA buffers of the fills lie)
+/// stays as it is without it.
+#[inline(never)]
+fn axes_move(timer: &mut SYST) {
+    let (lead, high, low) = (i64::from(2 * UP + CRUISE), 4321, -1234);
+    let mut axes = Axes::new(Player::new(Ramp::steps(&sigmoid_exact::PERIODS)), [0; 3]);
+    check(
+        axes.move_by([high, lead, low])
+            == [Direction::Forward, Direction::Forward, Direction::Backward],
+        "axes move",
+    );
+    let mut pins = 0u32;
+    let mut stepped = [0i64; 3];
+    phases(
+        "axes, 3 (1 lead + 2 followers), per-step table",
+        (UP, CRUISE),
+        || {
+            axes_step(&mut axes, timer, &mut pins);
+            for (i, n) in stepped.iter_mut().enumerate() {
+                *n += i64::from(pins >> i & 1);
+            }
+        },
+    );
+    check(
+        axes.position() == [high, lead, low] && stepped == [high, lead, -low],
+        "axes positions",
+    );
 }
 
 /// Runs `steps` calls of a step function between the markers.
@@ -409,6 +452,8 @@ fn main() -> ! {
         axis.position() == -i64::from(2 * UP + CRUISE),
         "axis position",
     );
+
+    axes_move(timer);
 
     // The peer on a move of the same shape: 1000 steps to 64 kHz (the top of
     // sigmoid_exact, 156 ticks of 10 MHz) at constant acceleration, 3000 at

@@ -3,11 +3,13 @@
 
 use crate::base::timer::TableWord;
 use crate::player::Player;
+use crate::player::axes::Axes;
 use crate::player::axis::{Axis, Direction};
 use crate::player::layout::Layout;
 
 /// What [`Buffered`] plays: one period per call, as [`Player`] and [`Axis`]
-/// hand them out.
+/// hand them out. ([`Axes`] hand out a period and a mask of the axes that
+/// step: `Buffered<Axes>` has its own calls, which hand on both.)
 pub trait Steps {
     /// The table's word.
     type Word;
@@ -50,8 +52,8 @@ impl<W: TableWord, L: Layout> Steps for Axis<'_, W, L> {
     }
 }
 
-/// A [`Player`] or an [`Axis`] for a reload register that takes effect at
-/// the next wrap.
+/// A [`Player`], an [`Axis`] or [`Axes`] for a reload register that takes
+/// effect at the next wrap.
 ///
 /// Playing a move on a timer whose reload register takes effect at the next
 /// wrap: SysTick, an STM32 timer's `ARR` with preload on, an AVR timer's
@@ -101,17 +103,16 @@ impl<W: TableWord, L: Layout> Steps for Axis<'_, W, L> {
 #[derive(Clone, Debug)]
 pub struct Buffered<S> {
     inner: S,
-    /// A period is in the reload register whose step is not taken yet.
-    ahead: bool,
+    /// A period is in the reload register whose step is not taken yet: 0
+    /// when none; else 1, or for [`Axes`] the mask of the axes that step
+    /// there (never 0: the lead steps on every edge).
+    ahead: u32,
 }
 
 impl<S> Buffered<S> {
     /// Wraps a player or an axis at rest.
     pub fn new(inner: S) -> Self {
-        Buffered {
-            inner,
-            ahead: false,
-        }
+        Buffered { inner, ahead: 0 }
     }
 
     /// The player or axis: what it has handed out is one period ahead of
@@ -134,7 +135,7 @@ impl<S: Steps> Buffered<S> {
     pub fn begin(&mut self) -> (Option<S::Word>, Option<S::Word>) {
         let first = self.inner.next_period();
         let next = first.as_ref().and_then(|_| self.inner.next_period());
-        self.ahead = next.is_some();
+        self.ahead = u32::from(next.is_some());
         (first, next)
     }
 
@@ -151,12 +152,12 @@ impl<S: Steps> Buffered<S> {
         }
         // The player is done: the period in the register, if any, is the
         // last interval, starting now.
-        core::mem::replace(&mut self.ahead, false)
+        core::mem::replace(&mut self.ahead, 0) != 0
     }
 
     /// Steps not yet taken.
     pub fn remaining(&self) -> u32 {
-        self.inner.remaining() + u32::from(self.ahead)
+        self.inner.remaining() + u32::from(self.ahead != 0)
     }
 
     /// `true` when every step has been taken (the last interval may still
@@ -229,7 +230,7 @@ impl<'a, W: TableWord, L: Layout> Buffered<Axis<'a, W, L>> {
             // The first period after the turn is in the timer's hands, its
             // step not taken: the pin takes the last step before the turn.
             Some((before, mark))
-                if self.inner.player().remaining() == mark && (mark > 0 || self.ahead) =>
+                if self.inner.player().remaining() == mark && (mark > 0 || self.ahead != 0) =>
             {
                 before
             }
@@ -240,7 +241,7 @@ impl<'a, W: TableWord, L: Layout> Buffered<Axis<'a, W, L>> {
     /// The position at the pin, in steps: the axis's less the step whose
     /// period is in the timer's hands and not yet taken.
     pub fn position(&self) -> i64 {
-        self.inner.position() - self.inner.direction().sign() * i64::from(self.ahead)
+        self.inner.position() - self.inner.direction().sign() * i64::from(self.ahead != 0)
     }
 
     /// Decelerates to rest ([`Axis::stop`]), from the first period not yet
@@ -250,6 +251,124 @@ impl<'a, W: TableWord, L: Layout> Buffered<Axis<'a, W, L>> {
     }
 
     /// Cruises slower or faster ([`Axis::set_cruise`]).
+    pub fn set_cruise(&mut self, pos: u32) {
+        self.inner.set_cruise(pos);
+    }
+}
+
+/// How a move of [`Buffered`] [`Axes`] begins: set the direction pins,
+/// load `first`, start the counter and take the first step (on the axes in
+/// `mask`), then load `next`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct AxesStart<W, const N: usize> {
+    /// The direction each axis's pin must say before the first step.
+    pub directions: [Direction; N],
+    /// The axes that step on the first edge (0 for a move without steps).
+    pub mask: u32,
+    /// The first period: `None` for a move without steps.
+    pub first: Option<W>,
+    /// The second: `None` for a move of fewer than two steps.
+    pub next: Option<W>,
+}
+
+impl<'a, W: TableWord, const N: usize, L: Layout> Buffered<Axes<'a, W, N, L>> {
+    /// Moves to `target` ([`Axes::move_to`]). From rest, begins the move:
+    /// the directions, the first edge's mask and the first two periods.
+    /// While a move plays, the new target is taken from the first period
+    /// not yet in the timer's hands, and there is nothing to load: the
+    /// directions now, mask 0 and no periods.
+    pub fn move_to(&mut self, target: [i64; N]) -> AxesStart<W, N> {
+        if self.remaining() > 0 {
+            return AxesStart {
+                directions: self.inner.move_to(target),
+                mask: 0,
+                first: None,
+                next: None,
+            };
+        }
+        let directions = self.inner.move_to(target);
+        let (first, mask) = match self.inner.next_step() {
+            Some((period, mask)) => (Some(period), mask),
+            None => (None, 0),
+        };
+        let next = first.and_then(|_| self.inner.next_step());
+        self.ahead = next.map_or(0, |(_, mask)| mask);
+        AxesStart {
+            directions,
+            mask,
+            first,
+            next: next.map(|(period, _)| period),
+        }
+    }
+
+    /// Moves by `delta` steps on each axis from the positions at the pins,
+    /// as [`Buffered::move_to`] does.
+    pub fn move_by(&mut self, delta: [i64; N]) -> AxesStart<W, N> {
+        let mut target = self.position();
+        for (t, d) in target.iter_mut().zip(delta) {
+            *t = t.saturating_add(d);
+        }
+        self.move_to(target)
+    }
+
+    /// The direction each axis's pin must say for the edge the pins take
+    /// now, from the interrupt [`Buffered::step`] returned a mask in: at a
+    /// turn to a queued move the axes' own directions are one edge ahead.
+    pub fn directions(&self) -> [Direction; N] {
+        match self.inner.turn() {
+            Some((before, mark))
+                if self.inner.player().remaining() == mark && (mark > 0 || self.ahead != 0) =>
+            {
+                before
+            }
+            _ => self.inner.directions(),
+        }
+    }
+
+    /// From the timer's interrupt, at the end of an interval: the mask of
+    /// the axes that step now, on the edge the interval now starting
+    /// begins with, having handed the period after that interval to
+    /// `write` (not called near the move's end, where there is none); 0
+    /// when the interval that ended was the move's last.
+    #[inline]
+    pub fn step(&mut self, write: impl FnOnce(W)) -> u32 {
+        let now = self.ahead;
+        let ahead = &mut self.ahead;
+        if !self.inner.step(|period, mask| {
+            *ahead = mask;
+            write(period);
+        }) {
+            *ahead = 0;
+        }
+        now
+    }
+
+    /// Edges not yet taken.
+    pub fn remaining(&self) -> u32 {
+        self.inner.remaining() + u32::from(self.ahead != 0)
+    }
+
+    /// `true` when every step has been taken (the last interval may still
+    /// be counting).
+    pub fn is_done(&self) -> bool {
+        self.remaining() == 0
+    }
+
+    /// The positions at the pins, in steps: the axes' less the edge whose
+    /// period is in the timer's hands and not yet taken.
+    pub fn position(&self) -> [i64; N] {
+        let played = self.inner.lead_played();
+        self.inner
+            .position_after(played - u32::from(self.ahead != 0 && played > 0))
+    }
+
+    /// Decelerates to rest ([`Axes::stop`]), from the first period not yet
+    /// in the timer's hands.
+    pub fn stop(&mut self) {
+        self.inner.stop();
+    }
+
+    /// Cruises slower or faster ([`Axes::set_cruise`]).
     pub fn set_cruise(&mut self, pos: u32) {
         self.inner.set_cruise(pos);
     }

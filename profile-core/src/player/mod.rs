@@ -33,6 +33,10 @@
 //! its step path trying their run first. Each plays at nearly the cost of
 //! a load.
 //!
+//! Around it: [`Axis`] (a position and a direction), [`Axes`] (up to 32
+//! axes on one ramp, each stepping in proportion to its move), [`Buffered`]
+//! (for reload registers that take effect at the next wrap).
+//!
 //! ```
 //! use profile_core::player::{Player, Ramp};
 //!
@@ -47,6 +51,7 @@
 //! assert_eq!(periods, [4000, 2500, 2000, 1800, 1800, 1800, 1800, 2000, 2500, 4000]);
 //! ```
 
+mod axes;
 mod axis;
 mod buffered;
 mod fill;
@@ -60,8 +65,9 @@ mod search;
 use core::marker::PhantomData;
 
 use crate::base::timer::TableWord;
+pub use axes::Axes;
 pub use axis::{Axis, Direction, Moving};
-pub use buffered::{Buffered, Steps};
+pub use buffered::{AxesStart, Buffered, Steps};
 pub use layout::{AnyLayout, Compressed, Layout};
 use plan::{Plan, Run, Sides};
 pub use ramp::Ramp;
