@@ -33,8 +33,8 @@ use common::cc::CProgram;
 use common::lcg::Lcg;
 use profile_core::Generated;
 use profile_core::TableWord;
-use profile_core::build::{CStyle, Profiles};
 use profile_core::player::{Layout, Player, Ramp};
+use profile_core::profiles::{CStyle, Profiles};
 use profile_core::runs::Run;
 
 /// A table the players play.

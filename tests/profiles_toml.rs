@@ -9,7 +9,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use profile_core::Generated;
-use profile_core::build::Profiles;
+use profile_core::profiles::Profiles;
 use profile_core::{
     Arithmetic, Curve, Discretization, Exponential, ExponentialExtent, Linear, LinearExtent,
     Rounding, Sigmoid, Spec, Timer,

@@ -6,9 +6,9 @@
 
 use std::path::Path;
 
-use profile_core::build::Profiles;
 use profile_core::golden::{Body, Golden};
 use profile_core::player::{Player, Ramp};
+use profile_core::profiles::Profiles;
 use profile_core::{Curve, Generated, Sigmoid, Spec, Timer, runs};
 use stepper_profiles::period_table;
 

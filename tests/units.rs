@@ -2,7 +2,7 @@
 //! plain number it stands for, bit for bit.
 
 use profile_core::Generated;
-use profile_core::build::Profiles;
+use profile_core::profiles::Profiles;
 use stepper_profiles::period_table;
 
 static SIGMOID_UNITS: [u16; 1000] = period_table!(

@@ -4,8 +4,8 @@
 use std::path::Path;
 
 use plotters::style::{BLACK, RGBColor};
-use profile_core::build::Profiles;
 use profile_core::emit::Profile;
+use profile_core::profiles::Profiles;
 use profile_core::{Discretization, Generated, Spec, Table};
 
 use crate::plots::{self, Line, Series};

@@ -4,10 +4,10 @@
 
 use std::fmt::Write as _;
 
-use profile_core::build::Profiles;
 use profile_core::emit::{Profile, start_note};
 use profile_core::motor::{Drive, Motor};
 use profile_core::player::{Player, Ramp};
+use profile_core::profiles::Profiles;
 use profile_core::schema::{describe, describe_motor};
 use profile_core::simulate::{self, SimOptions, SimResult};
 use profile_core::{Compact, Generated};

@@ -53,7 +53,7 @@ use std::vec::Vec;
 
 use crate::base::error::Fixed;
 use crate::base::key::Key;
-use crate::build::Profiles;
+use crate::profiles::Profiles;
 use crate::schema::describe;
 use crate::table::owned::{Compact, Generated, expand};
 

@@ -31,8 +31,6 @@
 extern crate std;
 
 mod base;
-#[cfg(feature = "codegen")]
-pub mod build;
 mod curves;
 #[cfg(feature = "codegen")]
 pub mod emit;
@@ -42,6 +40,8 @@ pub mod motor;
 #[cfg(feature = "codegen")]
 pub mod pipeline;
 pub mod player;
+#[cfg(feature = "codegen")]
+pub mod profiles;
 #[cfg(feature = "codegen")]
 pub mod schema;
 mod table;

@@ -25,7 +25,7 @@
 //!
 //! ```no_run
 //! // build.rs, in `fn main`:
-//! if let Some(profiles) = profile_core::build::build_script("profiles.toml") {
+//! if let Some(profiles) = profile_core::profiles::build_script("profiles.toml") {
 //!     // Optional: a C header too, under OUT_DIR.
 //!     profiles.write_c_header("profiles.h").expect("OUT_DIR is writable");
 //! }
