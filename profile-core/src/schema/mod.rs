@@ -17,14 +17,14 @@ use crate::base::key::Key;
 use crate::curves::{ROOMS, Room};
 
 mod describe;
-mod read;
-mod reader;
+mod request;
 mod suggest;
 pub mod units;
+mod values;
 
 pub use describe::{describe, describe_motor, locate, locate_motor};
-pub(crate) use read::value_problems;
-pub use read::{Request, read};
+pub(crate) use request::value_problems;
+pub use request::{Request, read};
 pub use suggest::{Hint, did_you_mean, suggest};
 
 /// A value as written by the user.

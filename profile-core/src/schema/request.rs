@@ -5,8 +5,8 @@ use std::format;
 use std::string::ToString;
 use std::vec::Vec;
 
-use super::reader::{Collector, motor};
 use super::suggest::{Hint, did_you_mean, suggest};
+use super::values::{Collector, motor};
 use super::{Arg, Diagnostic, Layout, Value, curve_names, keys_for, listed, quoted};
 use crate::base::MAX_LEN;
 use crate::base::key::Key;
