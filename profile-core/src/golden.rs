@@ -55,7 +55,7 @@ use crate::base::error::Fixed;
 use crate::base::key::Key;
 use crate::profiles::Profiles;
 use crate::schema::describe;
-use crate::table::owned::{Compact, Generated, expand};
+use crate::table::computed::{Compact, Generated, expand};
 
 mod lines;
 mod render;

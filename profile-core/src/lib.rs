@@ -61,7 +61,7 @@ pub use motor::simulate;
 #[cfg(feature = "std")]
 pub use table::compress::{MAX_COMPRESS_TICKS, MIN_COMPRESS_TICKS, RunFigures, RunTable};
 #[cfg(feature = "std")]
-pub use table::owned::{Compact, Generated, SegmentTable, Table};
+pub use table::computed::{Compact, Generated, SegmentTable, Table};
 pub use table::quantize::{AccelWindows, Figures};
 pub use table::runs;
 pub use table::segments::SegmentFigures;

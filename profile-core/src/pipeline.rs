@@ -15,7 +15,7 @@ use crate::base::error::Error;
 use crate::base::key::Key;
 use crate::motor::{Motor, TorqueFigures};
 use crate::schema::{self, Arg, Diagnostic, Layout, locate, locate_motor};
-use crate::table::owned::Generated;
+use crate::table::computed::Generated;
 use crate::table::spec::CheckedSpec;
 
 /// Everything a front end needs to emit a table.

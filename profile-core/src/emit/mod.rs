@@ -20,7 +20,7 @@ use crate::base::modes::Discretization;
 use crate::motor::{Motor, TorqueFigures};
 use crate::pipeline::Compiled;
 use crate::schema::describe;
-use crate::table::owned::Generated;
+use crate::table::computed::Generated;
 
 pub mod c;
 pub mod print;

@@ -1,4 +1,5 @@
-//! Owned tables, for hosts: a table in its layout, with its spec and figures.
+//! Computed tables, for hosts: a table in its layout, held with its spec
+//! and figures (`Table`, `SegmentTable`, `RunTable` in `Generated`).
 
 use std::vec::Vec;
 
