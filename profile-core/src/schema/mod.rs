@@ -4,7 +4,7 @@
 //! location of the front end's choice (a `Span` in the macro, a byte range in
 //! TOML). [`read`] checks keys, kinds and names and says what the arguments
 //! ask for; every problem comes back as a [`Diagnostic`] at the location of
-//! the offending key or value. The keys a curve takes come from its room
+//! the offending key or value. The keys a curve takes come from its schema
 //! (`curves/`); this module knows the common keys, the motor's, and how to
 //! say what is wrong.
 
@@ -14,7 +14,7 @@ use std::vec::Vec;
 
 use crate::base::error::Num;
 use crate::base::key::Key;
-use crate::curves::{ROOMS, Room};
+use crate::curves::{CURVE_SCHEMAS, CurveSchema};
 
 mod describe;
 mod request;
@@ -129,13 +129,13 @@ pub struct Diagnostic<L> {
 
 /// The curves a spec can name, in documentation order.
 pub fn curve_names() -> impl Iterator<Item = &'static str> + Clone {
-    ROOMS.iter().map(|r| r.name)
+    CURVE_SCHEMAS.iter().map(|r| r.name)
 }
 
 /// Every key `curve` accepts, in documentation order: its own, the common
 /// ones, the motor's.
 pub fn keys_for(curve: &str) -> Vec<Key> {
-    let own = Room::named(curve).map_or(&[][..], |r| r.keys);
+    let own = CurveSchema::named(curve).map_or(&[][..], |r| r.keys);
     Key::all()
         .filter(|k| *k == Key::CURVE || own.contains(k) || Key::COMMON.contains(k) || k.is_motor())
         .collect()
@@ -185,7 +185,7 @@ pub fn unit(key: Key) -> &'static str {
         Key::INDUCTANCE => "H",
         Key::RATED_CURRENT => "A",
         Key::SUPPLY_VOLTAGE => "V",
-        _ => ROOMS
+        _ => CURVE_SCHEMAS
             .iter()
             .flat_map(|r| r.units)
             .find(|(k, _)| *k == key)
