@@ -51,9 +51,9 @@ pub(crate) struct Modes {
 }
 
 impl Modes {
-    /// Ticks per second of step period.
+    /// [`Timer::frequency_scale`](crate::Timer::frequency_scale).
     pub(crate) fn scale(&self) -> f64 {
-        self.timer.ticks_per_second()
+        self.timer.frequency_scale()
     }
 }
 

@@ -133,7 +133,7 @@ impl SimOptions {
     /// The natural angular frequency is `sqrt(T_peak(0) · (π/2) / θ_fullstep / J)`:
     /// the rotor's small oscillations about a held position.
     pub fn suggested(motor: &Motor, spec: &Spec, periods: &[u32]) -> Self {
-        let per_second = ticks_per_second(spec);
+        let per_second = spec.timer.frequency_scale();
         let shortest = periods
             .iter()
             .filter(|&&p| p > 0)
@@ -273,10 +273,6 @@ impl From<MotorError> for SimError {
     fn from(e: MotorError) -> Self {
         SimError::Motor(e)
     }
-}
-
-fn ticks_per_second(spec: &Spec) -> f64 {
-    spec.timer.timer_hz as f64 / spec.timer.ticks_per_step as f64
 }
 
 /// The rotor's natural period at holding torque, `2π / sqrt(K / J)` in s
@@ -476,7 +472,7 @@ pub fn run(
     if !(dt_s.is_finite() && dt_s > 0.0 && settle_s.is_finite() && settle_s >= 0.0) {
         return Err(SimError::Options { dt_s, settle_s });
     }
-    let per_second = ticks_per_second(spec);
+    let per_second = spec.timer.frequency_scale();
     let poles = motor.poles();
     let max_dt_s = stable_step(motor);
     if dt_s > max_dt_s {

@@ -475,7 +475,7 @@ impl CheckedSpec {
     /// ([`RunTable::stored_runs`] adds the offset).
     pub fn run_table(&self, tolerance: f64) -> Result<RunTable, Error> {
         self.check_compress(tolerance)?;
-        let scale = self.spec().timer.ticks_per_second();
+        let scale = self.spec().timer.frequency_scale();
         let mut exact = Vec::with_capacity(self.len() as usize);
         self.for_each_period_and_edge(|_, _, t| exact.push(t * scale))?;
         let repeat = f64::from(self.spec().timer.ticks_per_step);

@@ -251,7 +251,7 @@ impl Quantizer {
             rounding: spec.rounding,
             timer: spec.timer,
             offset: spec.reload_offset,
-            scale: spec.timer.ticks_per_second(),
+            scale: spec.timer.frequency_scale(),
             exact_edge: 0.0,
             emitted: 0,
             windowed: AccelWindows::new(f64::INFINITY),

@@ -106,7 +106,7 @@ impl CheckedSpec {
         self.check_segments(segments)?;
         let spec = self.spec();
         let len = self.len();
-        let scale = spec.timer.ticks_per_second();
+        let scale = spec.timer.frequency_scale();
         let repeat = f64::from(spec.timer.ticks_per_step);
         let word = spec.timer.word;
         let model = spec.curve.time_model();
