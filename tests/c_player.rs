@@ -35,7 +35,7 @@ use profile_core::Generated;
 use profile_core::TableWord;
 use profile_core::player::{Layout, Player, Ramp};
 use profile_core::profiles::{CStyle, Profiles};
-use profile_core::runs::Run;
+use profile_core::runs::LinearRun;
 
 /// A table the players play.
 #[derive(Clone, Debug)]
@@ -150,7 +150,7 @@ fn runs(rng: &mut Lcg) -> Vec<[u16; 5]> {
             } else {
                 0
             };
-            Run {
+            LinearRun {
                 count,
                 interval,
                 add,

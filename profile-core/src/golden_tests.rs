@@ -181,7 +181,7 @@ fn an_offset_table_pins_its_periods() {
         arr.header,
         std::vec![("reload_offset".to_string(), "-1".to_string())]
     );
-    let runs = [crate::runs::Run {
+    let runs = [crate::runs::LinearRun {
         count: 3,
         interval: 700 << 16,
         add: -(50 << 16),

@@ -195,7 +195,7 @@ pub fn unit(key: Key) -> &'static str {
 
 /// A table's layout: one entry per step, equal-time segments, or runs.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Layout {
+pub enum TableLayout {
     /// One period per step: `[u16; len]`.
     Steps,
     /// `n` equal-time segments of (period, step count): `[(u16, u16); n]`.

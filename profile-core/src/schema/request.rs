@@ -7,7 +7,7 @@ use std::vec::Vec;
 
 use super::suggest::{Hint, did_you_mean, suggest};
 use super::values::{Collector, motor};
-use super::{Arg, Diagnostic, Layout, Value, curve_names, keys_for, listed, quoted};
+use super::{Arg, Diagnostic, TableLayout, Value, curve_names, keys_for, listed, quoted};
 use crate::base::MAX_LEN;
 use crate::base::key::Key;
 use crate::base::modes::{Arithmetic, Discretization, Rounding};
@@ -22,7 +22,7 @@ pub struct Request {
     /// The table's spec.
     pub spec: Spec,
     /// Its layout.
-    pub layout: Layout,
+    pub layout: TableLayout,
     /// The motor it drives, when described.
     pub motor: Option<Motor>,
 }
@@ -99,9 +99,9 @@ pub fn read<L: Clone>(
             reload_offset: reload_offset.unwrap_or(0),
         },
         layout: match (segments, compress) {
-            (Some(n), _) => Layout::Segments(n),
-            (None, Some(e)) => Layout::Runs(e),
-            (None, None) => Layout::Steps,
+            (Some(n), _) => TableLayout::Segments(n),
+            (None, Some(e)) => TableLayout::Runs(e),
+            (None, None) => TableLayout::Steps,
         },
         motor,
     })
