@@ -256,6 +256,7 @@ fn cases(cases: u32, profiles: &Profiles) -> Vec<Case> {
             },
             Generated::Runs(t) => Table::Runs(t.runs.clone()),
             Generated::Segments(_) => unreachable!("no segment table here"),
+            _ => panic!("a layout this test does not know"),
         })
         .collect();
     for table in &real {

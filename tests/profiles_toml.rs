@@ -349,6 +349,7 @@ fn specs_come_from_the_file_and_its_defaults() {
         Generated::Steps(t) => t.spec,
         Generated::Segments(t) => t.spec,
         Generated::Runs(t) => t.spec,
+        _ => panic!("a layout this test does not know"),
     };
     let orange = Spec::new(
         Curve::Sigmoid(Sigmoid {

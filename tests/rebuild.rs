@@ -92,6 +92,7 @@ fn expected(source: &str) -> (u32, usize) {
     match &profiles.profiles()[0].table {
         Generated::Steps(t) => (t.periods[0], t.periods.len()),
         Generated::Segments(_) | Generated::Runs(_) => unreachable!(),
+        _ => panic!("a layout this test does not know"),
     }
 }
 

@@ -4,7 +4,7 @@
 use std::path::Path;
 
 use plotters::style::{BLACK, RGBColor};
-use profile_core::emit::Profile;
+use profile_core::profiles::Profile;
 use profile_core::profiles::Profiles;
 use profile_core::{Discretization, Generated, Spec, Table};
 

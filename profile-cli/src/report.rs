@@ -4,11 +4,11 @@
 
 use std::fmt::Write as _;
 
-use profile_core::emit::{Profile, start_note};
+use profile_core::__private::emit::start_note;
+use profile_core::__private::schema::{describe, describe_motor};
 use profile_core::motor::{Drive, Motor};
 use profile_core::player::{Player, Ramp};
-use profile_core::profiles::Profiles;
-use profile_core::schema::{describe, describe_motor};
+use profile_core::profiles::{Profile, Profiles};
 use profile_core::simulate::{self, SimOptions, SimResult};
 use profile_core::{Compact, Generated};
 use profile_core::{Discretization, Error, Rounding, Spec};
@@ -118,7 +118,8 @@ fn print_table(out: &mut String, profiles: &[Profile]) -> Result<(), Error> {
                     ],
                 );
             }
-            Generated::Runs(_) | Generated::Segments(_) => {
+            // Segments, runs and any layout to come: their compact figures.
+            _ => {
                 if let Some(c) = p.table.compact() {
                     compact_row(out, p, &c);
                 }

@@ -1,6 +1,10 @@
 //! The golden format: reading back what was written, and the differences.
 
 use super::*;
+use std::fs;
+
+use super::file::{compare_as, difference, parse};
+use super::render::render;
 
 #[test]
 fn a_file_shows_each_entry_with_its_edge() {

@@ -31,6 +31,9 @@
 
 mod check;
 mod chopper;
+// Public as `simulate`, at the crate root (one path per item); declared
+// here, beside the model it plays.
+#[doc(hidden)]
 pub mod simulate;
 mod start;
 mod stepped;
@@ -151,6 +154,7 @@ pub struct Motor {
 
 /// Where the motor has the least torque to spare over a ramp.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct TorqueFigures {
     /// Smallest available minus needed torque, in N·m.
     pub min_margin_nm: f64,

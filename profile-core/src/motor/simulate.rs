@@ -148,6 +148,7 @@ impl SimOptions {
 
 /// What the rotor did.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct SimResult {
     /// Table steps lost by the end, after settling: the rotor's final
     /// electrical lag rounded to whole electrical turns, each

@@ -43,8 +43,9 @@ use std::vec::Vec;
 
 use proc_macro2::TokenStream;
 
+use crate::emit;
+pub use crate::emit::Profile;
 pub use crate::emit::c::{CStyle, CStyleError, Split};
-use crate::emit::{self, Profile};
 use crate::pipeline::{self, Budget, Options};
 
 mod file;

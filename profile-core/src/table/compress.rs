@@ -42,6 +42,7 @@ pub const MAX_COMPRESS_TICKS: f64 = u16::MAX as f64;
 
 /// What a compressed table amounts to.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct RunFigures {
     /// Number of runs.
     pub runs: u32,
@@ -538,6 +539,7 @@ fn run_figures(
 
 /// A compressed table with its spec and figures.
 #[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct RunTable {
     /// What the table was computed from.
     pub spec: Spec,

@@ -10,6 +10,7 @@ use crate::table::spec::Spec;
 /// What a generated table amounts to. Times in seconds, frequencies in Hz
 /// (steps/s), acceleration in Hz/s, jerk in Hz/s².
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct Figures {
     /// Number of entries.
     pub len: u32,

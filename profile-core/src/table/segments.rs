@@ -15,6 +15,7 @@ use crate::table::spec::{CheckedSpec, Spec};
 
 /// What a segment table amounts to.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct SegmentFigures {
     /// Number of segments.
     pub segments: u32,

@@ -30,6 +30,7 @@ pub(crate) const INDEX_APPLIES: &str =
 /// assert!(table[0] > table[999]);
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct Spec {
     /// The curve and its parameters.
     pub curve: Curve,
