@@ -1,4 +1,4 @@
-//! `build::build_script` in a user's crate, as the README shows it: a
+//! `profiles::build_script` in a user's crate, as the README shows it: a
 //! scratch crate under `CARGO_TARGET_TMPDIR/build-script-user` depending on
 //! this package by path. A bad `profiles.toml` fails `cargo build` with
 //! cargo's own `error:` lines (location, source line, caret); a good one
@@ -28,7 +28,7 @@ profile-core = { path = "@ROOT@/profile-core", features = ["codegen"] }
 "#;
 
 const BUILD_RS: &str = r#"fn main() {
-    if let Some(profiles) = profile_core::build::build_script("profiles.toml") {
+    if let Some(profiles) = profile_core::profiles::build_script("profiles.toml") {
         profiles.write_c_header("profiles.h").expect("OUT_DIR is writable");
     }
 }
@@ -93,7 +93,8 @@ fn a_bad_file_fails_the_build_with_cargo_errors_and_a_good_one_builds() {
         String::from_utf8_lossy(&good.stderr)
     );
     // What the loader computes here, for the same file.
-    let loaded = profile_core::build::Profiles::parse("profiles.toml", &profiles("fmax")).unwrap();
+    let loaded =
+        profile_core::profiles::Profiles::parse("profiles.toml", &profiles("fmax")).unwrap();
     let first = loaded.profiles()[0].table.step_periods()[0];
     assert_eq!(
         String::from_utf8_lossy(&good.stdout).trim(),

@@ -15,7 +15,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use profile_core::Generated;
-use profile_core::build::{CStyle, Profiles};
+use profile_core::profiles::{CStyle, Profiles};
 
 const FLAGS: &[&str] = &["-Wall", "-Wextra", "-Werror", "-pedantic"];
 /// A storage word as a user's toolchain would define it (`__code` on SDCC);
@@ -130,6 +130,7 @@ fn expected(profiles: &Profiles) -> BTreeMap<String, BTreeMap<String, Figure>> {
                 m.insert("TOTAL_TICKS".into(), int(f.total_ticks));
                 m.insert("DURATION_S".into(), float(f.duration_s));
             }
+            _ => panic!("a layout this test does not know"),
         }
         if let Generated::Runs(t) = &p.table {
             let f = &t.figures;
@@ -318,6 +319,7 @@ fn program(profiles: &Profiles, defines: &BTreeMap<String, Vec<(String, bool)>>)
                      printf(\"{name} sum %llu\\n\", sum);"
                 );
             }
+            _ => panic!("a layout this test does not know"),
         }
         if let Generated::Runs(_) = &p.table {
             let t = format!("{up}_RUNS");
@@ -452,6 +454,7 @@ fn check_header(
             let pre = prefix(profiles);
             format!("{pre}_runs_first()")
         }
+        _ => panic!("a layout this test does not know"),
     };
     fs::write(dir.join("main.c"), program(profiles, &defines)).unwrap();
     // A second translation unit: including the header twice in one program

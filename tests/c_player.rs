@@ -33,9 +33,9 @@ use common::cc::CProgram;
 use common::lcg::Lcg;
 use profile_core::Generated;
 use profile_core::TableWord;
-use profile_core::build::{CStyle, Profiles};
 use profile_core::player::{Layout, Player, Ramp};
-use profile_core::runs::Run;
+use profile_core::profiles::{CStyle, Profiles};
+use profile_core::runs::LinearRun;
 
 /// A table the players play.
 #[derive(Clone, Debug)]
@@ -150,7 +150,7 @@ fn runs(rng: &mut Lcg) -> Vec<[u16; 5]> {
             } else {
                 0
             };
-            Run {
+            LinearRun {
                 count,
                 interval,
                 add,
@@ -256,6 +256,7 @@ fn cases(cases: u32, profiles: &Profiles) -> Vec<Case> {
             },
             Generated::Runs(t) => Table::Runs(t.runs.clone()),
             Generated::Segments(_) => unreachable!("no segment table here"),
+            _ => panic!("a layout this test does not know"),
         })
         .collect();
     for table in &real {

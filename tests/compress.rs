@@ -7,7 +7,7 @@
 mod common;
 
 use common::oracle;
-use profile_core::build::Profiles;
+use profile_core::profiles::Profiles;
 use stepper_profiles::{Curve, Generated, Linear, LinearExtent, Spec, Timer, Word};
 use stepper_profiles::{golden, period_table, runs};
 

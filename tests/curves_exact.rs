@@ -5,10 +5,10 @@
 //! (trapezoidal and triangular acceleration) curves, the default mode
 //! (`exact`, `diffuse`) promises every pulse edge within half a tick of the
 //! exact pulse time `t(k)`, the solution of `N(t) = ∫0^t f = k`, scaled to ticks
-//! by `timer_hz / ticks_per_step` (DESIGN.md section 1).
+//! by `timer_hz / ticks_per_step`.
 //!
 //! The exact times here owe nothing to `profile-core`: each `f(t)` is written
-//! out from DESIGN.md section 2 and the seeds (the jerk-limited ramp from its
+//! out from the articles (the jerk-limited ramp from its
 //! acceleration, which rises at `jerk`, holds and falls symmetrically), with
 //! `std`'s `exp` and `ln` rather than `libm`. Parameters that production
 //! solves for (`tau` from a step budget, `accel` from `len`) are solved here
@@ -241,8 +241,10 @@ fn linear_model(l: &Linear) -> Model {
     }
 }
 
-/// Zeng, Hu and Hu's three stages (seed 002, equation (5)), joints as in
-/// DESIGN.md section 2.
+/// Zeng, Hu and Hu's three stages (seed 002, equation (5)), value and slope
+/// continuous at the joints: `t1 = ln(1 + B (f1 - f0) / a) / B`,
+/// `t2 = t1 + (f2 - f1) / a`, `tc = t2 + 2 (fc - f2) / a` (the paper's
+/// `tc = t2 + a / 4b` breaks the slope's continuity; `a / 2b` keeps it).
 #[derive(Clone, Copy, Debug)]
 struct Zeng {
     f0: f64,

@@ -1,12 +1,14 @@
 //! Default-mode tables put every pulse edge within half a tick of the curve.
 //!
 //! With `discretization = exact` and `rounding = diffuse` (the defaults), the
-//! prefix sums of a table are the pulse edges as the timer plays them. DESIGN.md
-//! promises each edge within 0.5 tick of the exact pulse time `t(k)`, the
+//! prefix sums of a table are the pulse edges as the timer plays them. That
+//! mode promises each edge within 0.5 tick of the exact pulse time `t(k)`, the
 //! solution of `N(t) = ∫0^t f = k`, scaled to ticks by `timer_hz / ticks_per_step`.
 //!
 //! The exact times here are computed independently of `profile-core`: the
-//! time-domain sigmoid `f(t)` is written out from DESIGN.md, its integral `N`
+//! time-domain sigmoid, `f(t) = fmin + (fmax - fmin) / (1 + exp(-flexible (t -
+//! T/2) / (T/2)))` over `[0, T]` with `T = len / (fmin + (fmax - fmin) / 2)`
+//! so that `len` steps fit, is written out here, its integral `N`
 //! is taken numerically (composite 5-point Gauss-Legendre, summed with
 //! compensation), and each `t(k)` is found by safeguarded Newton iteration on
 //! that numeric `N` inside the panel that brackets `k`. The closed-form
@@ -123,7 +125,8 @@ const GAUSS_5: [(f64, f64); 5] = [
     (0.906_179_845_938_664, 0.236_926_885_056_189_08),
 ];
 
-/// The time-domain sigmoid of DESIGN.md section 2 and its numeric step count.
+/// The time-domain sigmoid (the article's S over the step index, stretched
+/// over `[0, T]` so that `len` steps fit) and its numeric step count.
 struct Reference {
     fmin: f64,
     fmax: f64,
@@ -441,7 +444,8 @@ fn truncation_drifts_about_500_ticks_on_the_orange_call() {
         .with_arithmetic(Arithmetic::F32)
         .table()
         .expect("the orange call in compatibility mode is valid");
-    // The unrounded index-domain periods, written out from DESIGN.md.
+    // The unrounded index-domain periods: the article's sigmoid at index `i`,
+    // `f = fmin + (fmax - fmin) / (1 + exp(-flexible (i - len/2) / (len/2)))`.
     let half = orange.len as f64 / 2.0;
     let exact: f64 = (0..orange.len)
         .map(|i| {

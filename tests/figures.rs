@@ -7,8 +7,8 @@
 mod common;
 
 use common::oracle::{self, Model};
-use stepper_profiles::build::Profiles;
 use stepper_profiles::period_table;
+use stepper_profiles::profiles::Profiles;
 use stepper_profiles::{
     Curve, Discretization, Generated, JerkLimited, Linear, LinearExtent, Rounding, Sigmoid, Spec,
     Timer, Word,

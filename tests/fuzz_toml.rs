@@ -8,7 +8,7 @@
 
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
-use profile_core::build::Profiles;
+use profile_core::profiles::Profiles;
 
 /// xorshift64*: deterministic, so a failure names a reproducible case.
 struct Rng(u64);

@@ -25,7 +25,7 @@ use std::path::PathBuf;
 
 use common::golden::checked_periods;
 use common::seeds::{SEED000_ORANGE_COMPAT, f32_compat, seed000};
-use stepper_profiles::golden::{self, Body};
+use profile_core::__private::golden::{self, Body};
 use stepper_profiles::{Figures, Generated, Spec, Table, period_table};
 
 /// The golden file `file`.
@@ -198,8 +198,8 @@ fn tables_match_golden_files() {
 }
 
 /// Guards the blessed orange compatibility file itself, so that a table
-/// blessed by mistake cannot become the reference. DESIGN.md: first 19183,
-/// last 156, about 0.412 s at 10 MHz.
+/// blessed by mistake cannot become the reference. The orange call's known
+/// figures: first 19183, last 156, about 0.412 s at 10 MHz.
 fn orange_compat_seed_facts() -> Vec<String> {
     let file = "seed000_orange_compat.txt";
     let (header, periods) = match golden::read(path(file)) {

@@ -37,7 +37,7 @@ use common::golden::checked_periods;
 use common::seeds::{
     self, SEED001_SEGMENTS, SEED004_INTEGER, integer_compat, jerk_limited, seed004, zeng,
 };
-use stepper_profiles::golden::{self, Body};
+use profile_core::__private::golden::{self, Body};
 use stepper_profiles::{Curve, Generated, Spec, Table, Timer, period_table};
 
 /// The golden file `file`.

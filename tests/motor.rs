@@ -12,9 +12,9 @@ mod common;
 
 use common::motors::CURVE;
 use profile_core::Generated;
-use profile_core::build::Profiles;
 use profile_core::motor::{MAX_CURVE_POINTS, Motor, MotorError, StartLimit, TorqueCurve};
 use profile_core::player::{Player, Ramp};
+use profile_core::profiles::Profiles;
 use profile_core::simulate::{self, MAX_STEPS, SimError, SimOptions, SimResult};
 use profile_core::{Curve, Key, Linear, LinearExtent, Spec, Timer};
 use stepper_profiles::period_table;

@@ -9,7 +9,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use profile_core::Generated;
-use profile_core::build::Profiles;
+use profile_core::profiles::Profiles;
 use profile_core::{
     Arithmetic, Curve, Discretization, Exponential, ExponentialExtent, Linear, LinearExtent,
     Rounding, Sigmoid, Spec, Timer,
@@ -349,6 +349,7 @@ fn specs_come_from_the_file_and_its_defaults() {
         Generated::Steps(t) => t.spec,
         Generated::Segments(t) => t.spec,
         Generated::Runs(t) => t.spec,
+        _ => panic!("a layout this test does not know"),
     };
     let orange = Spec::new(
         Curve::Sigmoid(Sigmoid {

@@ -19,7 +19,7 @@ use std::time::{Duration, Instant, SystemTime};
 use common::scratch::{ScratchCrate, target_dir};
 
 use profile_core::Generated;
-use profile_core::build::Profiles;
+use profile_core::profiles::Profiles;
 
 /// The macro path: no build script, so only the macro's `include_bytes!`
 /// can make Cargo notice an edit.
@@ -62,7 +62,7 @@ profile-core = { path = "@ROOT@/profile-core", features = ["codegen"] }
 
 const BUILD_RS: &str = r#"fn main() -> Result<(), Box<dyn std::error::Error>> {
     let out_dir = std::env::var("OUT_DIR")?;
-    profile_core::build::Profiles::load("profiles.toml")?.write_rust(out_dir)?;
+    profile_core::profiles::Profiles::load("profiles.toml")?.write_rust(out_dir)?;
     Ok(())
 }
 "#;
@@ -92,6 +92,7 @@ fn expected(source: &str) -> (u32, usize) {
     match &profiles.profiles()[0].table {
         Generated::Steps(t) => (t.periods[0], t.periods.len()),
         Generated::Segments(_) | Generated::Runs(_) => unreachable!(),
+        _ => panic!("a layout this test does not know"),
     }
 }
 

@@ -6,9 +6,10 @@
 
 use std::path::Path;
 
-use profile_core::build::Profiles;
-use profile_core::golden::{Body, Golden};
+use profile_core::__private::golden::Body;
+use profile_core::golden::Golden;
 use profile_core::player::{Player, Ramp};
+use profile_core::profiles::Profiles;
 use profile_core::{Curve, Generated, Sigmoid, Spec, Timer, runs};
 use stepper_profiles::period_table;
 

@@ -316,8 +316,11 @@ fn seed_example_calls_match_c() {
 
 #[test]
 fn orange_seed_facts_hold_in_c() {
-    // The article's orange call, checked against the figures DESIGN.md quotes,
-    // so that the C side of the comparison is known to be the seed's.
+    // The article's orange call (len 1000, fmax 64000, fmin 500, flexible 8,
+    // 10 MHz, truncated) has known figures: first period 19183, last 156, 0.412
+    // s in all (the article's "about 20000" and "about 1 s" are wrong: the curve
+    // never reaches fmin, f[0] = 521.29 Hz). Checked so that the C side of the
+    // comparison is known to be the seed's.
     let c = run_c(&SEED_CALLS[1].1);
     assert_eq!(
         (c[0].period, c[999].period),

@@ -2,7 +2,7 @@
 //! plain number it stands for, bit for bit.
 
 use profile_core::Generated;
-use profile_core::build::Profiles;
+use profile_core::profiles::Profiles;
 use stepper_profiles::period_table;
 
 static SIGMOID_UNITS: [u16; 1000] = period_table!(
@@ -56,7 +56,7 @@ fn periods(file: &str) -> Vec<u32> {
     let profiles = Profiles::parse("profiles.toml", file).unwrap_or_else(|e| panic!("{e}"));
     match &profiles.profiles()[0].table {
         Generated::Steps(t) => t.periods.clone(),
-        Generated::Segments(_) | Generated::Runs(_) => panic!("a per-step profile"),
+        _ => panic!("a per-step profile"),
     }
 }
 
@@ -128,7 +128,7 @@ fn motor_and_table(file: &str) -> (profile_core::motor::Motor, Vec<u32>) {
     let profile = &profiles.profiles()[0];
     match &profile.table {
         Generated::Steps(t) => (profile.motor.expect("a motor"), t.periods.clone()),
-        Generated::Segments(_) | Generated::Runs(_) => panic!("a per-step profile"),
+        _ => panic!("a per-step profile"),
     }
 }
 

@@ -4,8 +4,8 @@
 use std::path::Path;
 
 use plotters::style::{BLACK, RGBColor};
-use profile_core::build::Profiles;
-use profile_core::emit::Profile;
+use profile_core::profiles::Profile;
+use profile_core::profiles::Profiles;
 use profile_core::{Discretization, Generated, Spec, Table};
 
 use crate::plots::{self, Line, Series};
@@ -97,7 +97,7 @@ fn pull_out_curves(
 
 /// Each step edge of `periods` against the curve's, in timer ticks, by step.
 pub fn edge_errors(spec: &Spec, periods: &[u32]) -> Result<Vec<(f64, f64)>, profile_core::Error> {
-    let scale = spec.timer.ticks_per_second();
+    let scale = spec.timer.frequency_scale();
     // Each entry is played `ticks_per_step` times: step edges in timer ticks.
     let repeat = f64::from(spec.timer.ticks_per_step);
     let mut played = 0u64;
@@ -130,13 +130,7 @@ fn write_compact_plot(
         .windows(2)
         .map(|w| (w[0], 1.0 / (w[1] - w[0])))
         .collect();
-    let played = Series::new(
-        &layout,
-        color,
-        &compact,
-        spec.timer.ticks_per_second(),
-        spec,
-    );
+    let played = Series::new(&layout, color, &compact, spec.timer.frequency_scale(), spec);
     let line = |label: &str, color: RGBColor, points: Vec<(f64, f64)>| Line {
         label: label.to_string(),
         color,

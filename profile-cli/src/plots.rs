@@ -67,18 +67,18 @@ fn windowed_accel(periods: &[f64], w: usize) -> Vec<(f64, f64)> {
 }
 
 impl Series {
-    /// From periods in ticks on a timer of `ticks_per_second` (per step),
+    /// From periods in ticks on a timer of `frequency_scale` ([`Timer::frequency_scale`](profile_core::Timer::frequency_scale)),
     /// a table of `spec`.
     pub fn new(
         label: &str,
         color: RGBColor,
         periods: &[u32],
-        ticks_per_second: f64,
+        frequency_scale: f64,
         spec: &Spec,
     ) -> Self {
         let seconds: Vec<f64> = periods
             .iter()
-            .map(|&p| p as f64 / ticks_per_second)
+            .map(|&p| p as f64 / frequency_scale)
             .collect();
         let mut t = 0.0;
         let mut steps = Vec::with_capacity(periods.len());
@@ -96,7 +96,7 @@ impl Series {
             label: label.to_string(),
             color,
             steps,
-            accel: table_accel(&seconds, &exact, ticks_per_second),
+            accel: table_accel(&seconds, &exact, frequency_scale),
             curve_accel: windowed_accel(&exact, 1),
         }
     }

@@ -4,11 +4,11 @@
 
 use std::fmt::Write as _;
 
-use profile_core::build::Profiles;
-use profile_core::emit::{Profile, start_note};
+use profile_core::__private::emit::start_note;
+use profile_core::__private::schema::{describe, describe_motor};
 use profile_core::motor::{Drive, Motor};
 use profile_core::player::{Player, Ramp};
-use profile_core::schema::{describe, describe_motor};
+use profile_core::profiles::{Profile, Profiles};
 use profile_core::simulate::{self, SimOptions, SimResult};
 use profile_core::{Compact, Generated};
 use profile_core::{Discretization, Error, Rounding, Spec};
@@ -118,7 +118,8 @@ fn print_table(out: &mut String, profiles: &[Profile]) -> Result<(), Error> {
                     ],
                 );
             }
-            Generated::Runs(_) | Generated::Segments(_) => {
+            // Segments, runs and any layout to come: their compact figures.
+            _ => {
                 if let Some(c) = p.table.compact() {
                     compact_row(out, p, &c);
                 }
@@ -187,7 +188,7 @@ fn table_row(out: &mut String, c: [&str; 13]) {
 fn compact_row(out: &mut String, p: &Profile, c: &Compact) {
     let s = p.table.spec();
     let periods = p.table.step_periods();
-    let hz = |ticks: Option<&u32>| s.timer.ticks_per_second() / f64::from(*ticks.unwrap_or(&1));
+    let hz = |ticks: Option<&u32>| s.timer.frequency_scale() / f64::from(*ticks.unwrap_or(&1));
     let top = periods.iter().copied().max().unwrap_or(0);
     table_row(
         out,
@@ -198,7 +199,7 @@ fn compact_row(out: &mut String, p: &Profile, c: &Compact) {
             &c.steps.to_string(),
             &format!("{:.1}", hz(periods.first())),
             &format!("{:.1}", hz(periods.last())),
-            &format!("{:.4}", c.total_ticks as f64 / s.timer.ticks_per_second()),
+            &format!("{:.4}", c.total_ticks as f64 / s.timer.frequency_scale()),
             &c.flash_bytes.to_string(),
             "-",
             "-",
@@ -349,7 +350,7 @@ fn print_pull_out(out: &mut String, bound: &[&Profile]) {
             .table
             .step_periods()
             .iter()
-            .map(|&t| p.table.spec().timer.ticks_per_second() / t as f64)
+            .map(|&t| p.table.spec().timer.frequency_scale() / t as f64)
             .fold(motor.torque_curve.map_or(0.0, |c| c.top()), f64::max);
         let points: Vec<f64> = (0..=4).map(|k| top * k as f64 / 4.0).collect();
         let row = |f: &dyn Fn(f64) -> Option<f64>| -> String {

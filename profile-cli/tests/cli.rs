@@ -5,7 +5,7 @@ use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 
-use profile_core::build::{CStyle, Profiles};
+use profile_core::profiles::{CStyle, Profiles};
 
 const BIN: &str = env!("CARGO_BIN_EXE_stepper-profiles");
 

@@ -1,6 +1,10 @@
 //! The golden format: reading back what was written, and the differences.
 
 use super::*;
+use std::fs;
+
+use super::file::{compare_as, difference, parse};
+use super::render::render;
 
 #[test]
 fn a_file_shows_each_entry_with_its_edge() {
@@ -181,7 +185,7 @@ fn an_offset_table_pins_its_periods() {
         arr.header,
         std::vec![("reload_offset".to_string(), "-1".to_string())]
     );
-    let runs = [crate::runs::Run {
+    let runs = [crate::runs::LinearRun {
         count: 3,
         interval: 700 << 16,
         add: -(50 << 16),

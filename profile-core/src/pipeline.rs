@@ -14,8 +14,8 @@ use std::vec::Vec;
 use crate::base::error::Error;
 use crate::base::key::Key;
 use crate::motor::{Motor, TorqueFigures};
-use crate::schema::{self, Arg, Diagnostic, Layout, locate, locate_motor};
-use crate::table::owned::Generated;
+use crate::schema::{self, Arg, Diagnostic, TableLayout, locate, locate_motor};
+use crate::table::computed::Generated;
 use crate::table::spec::CheckedSpec;
 
 /// Everything a front end needs to emit a table.
@@ -78,9 +78,9 @@ pub fn compile<L: Clone>(
     };
     let spec = request.spec.check().map_err(at)?;
     match request.layout {
-        Layout::Segments(n) => spec.check_segments(n).map_err(at)?,
-        Layout::Runs(e) => spec.check_compress(e).map_err(at)?,
-        Layout::Steps => {}
+        TableLayout::Segments(n) => spec.check_segments(n).map_err(at)?,
+        TableLayout::Runs(e) => spec.check_compress(e).map_err(at)?,
+        TableLayout::Steps => {}
     }
     // A motor that cannot follow the table: which profile, when a file's.
     let motor_at = |e| {
@@ -110,9 +110,9 @@ pub fn compile<L: Clone>(
         budget.used = total;
     }
     let table = match request.layout {
-        Layout::Steps => spec.table().map(Generated::Steps),
-        Layout::Segments(n) => spec.segment_table(n).map(Generated::Segments),
-        Layout::Runs(e) => spec.run_table(e).map(Generated::Runs),
+        TableLayout::Steps => spec.table().map(Generated::Steps),
+        TableLayout::Segments(n) => spec.segment_table(n).map(Generated::Segments),
+        TableLayout::Runs(e) => spec.run_table(e).map(Generated::Runs),
     }
     .map_err(at)?;
     let torque = match &request.motor {

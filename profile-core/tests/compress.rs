@@ -2,7 +2,7 @@
 //! the goals name, and the runs' expansion against the per-step arithmetic.
 //! (Every edge against an independent oracle: `tests/oracle.rs`.)
 
-use profile_core::runs::{Expand, Run};
+use profile_core::runs::{Expand, LinearRun};
 use profile_core::{Curve, Linear, LinearExtent, Sigmoid, Spec, Timer, Word};
 
 fn timer(timer_hz: u32) -> Timer {
@@ -121,7 +121,7 @@ fn expansion_is_the_documented_recurrence() {
     let mut frac: u64 = 1 << 15;
     let mut by_hand = Vec::new();
     for words in &t.runs {
-        let run = Run::decode(words);
+        let run = LinearRun::decode(words);
         let mut interval = i64::from(run.interval);
         for _ in 0..run.count {
             let x = frac + interval as u64;

@@ -9,7 +9,7 @@
 
 use profile_core::TableWord;
 use profile_core::player::{Axis, Compressed, Player, Ramp};
-use profile_core::runs::Run as RunWords;
+use profile_core::runs::LinearRun as RunWords;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestCaseError, TestRunner};
 

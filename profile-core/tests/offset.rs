@@ -8,7 +8,7 @@
 //! times 4 here).
 
 use profile_core::player::{Compressed, Player, Ramp};
-use profile_core::runs::{Expand, Run as RunWords, with_offset};
+use profile_core::runs::{Expand, LinearRun as RunWords, with_offset};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestCaseError, TestRunner};
 

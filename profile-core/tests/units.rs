@@ -4,7 +4,7 @@
 //! route (the float parser on `number e exponent`).
 #![cfg(feature = "codegen")]
 
-use profile_core::schema::{self, Arg, Value};
+use profile_core::__private::schema::{self, Arg, Value};
 
 /// A valid argument list of `curve`, as `(key, value)`.
 fn base(curve: &str) -> Vec<(&'static str, Value)> {

@@ -1,9 +1,9 @@
 //! `period_table!`: arguments through `profile-core`'s pipeline and emitter.
 
 use proc_macro2::TokenStream;
-use profile_core::emit;
-use profile_core::pipeline::{self, Options};
-use profile_core::schema::Diagnostic;
+use profile_core::__private::emit;
+use profile_core::__private::pipeline::{self, Options};
+use profile_core::__private::schema::Diagnostic;
 
 use crate::args::Loc;
 

@@ -5,7 +5,7 @@
 use std::fs;
 use std::path::Path;
 
-use stepper_profiles::golden::blessing;
+use profile_core::__private::golden::blessing;
 use stepper_profiles::{Figures, Spec};
 
 /// Writes a golden file, its folder created: beside, then renamed, so that

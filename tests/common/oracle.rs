@@ -2,7 +2,7 @@
 //! `profile-core`'s path from a curve to its edges.
 //!
 //! Each curve is written out here as its frequency `f(t)` only, from the
-//! articles' definitions (DESIGN.md section 2), with `std`'s `exp`, `exp_m1`
+//! articles' definitions, with `std`'s `exp`, `exp_m1`
 //! and `ln_1p` rather than `libm`. No closed-form step count `N(t)` appears:
 //! `N` is integrated numerically (adaptive Gauss-Kronrod 7-15, split at every
 //! joint of the curve), and parameters that production solves for in closed

@@ -33,8 +33,8 @@ use std::process::{Command, ExitCode};
 use std::time::Duration;
 
 use profile_core::Generated;
-use profile_core::build::{CStyle, Profiles};
 use profile_core::player::{Layout, Player, Ramp};
+use profile_core::profiles::{CStyle, Profiles};
 use profile_core::runs::Expand;
 
 use cycles::{Isr, Stats};

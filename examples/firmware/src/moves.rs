@@ -722,7 +722,7 @@ fn check_edges(log: &[u16], report: &mut Report) {
         spec.timer.timer_hz.into(),
         microstep_runs::TIMER_HZ.into(),
     );
-    let scale = spec.timer.ticks_per_second();
+    let scale = spec.timer.frequency_scale();
     let (mut played, mut worst, mut edges) = (0u64, 0.0f64, 0u32);
     let result = spec.for_each_exact_edge(|k, t| {
         if let Some(&p) = log.get(k as usize - 1) {

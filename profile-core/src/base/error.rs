@@ -3,9 +3,9 @@
 use core::fmt;
 
 use super::key::Key;
+use super::messages::*;
 use super::modes::Discretization;
-use super::numbers::Hundredths;
-pub(crate) use super::numbers::{Fixed, Num, Significant};
+pub(crate) use super::numbers::{Fixed, Num};
 use super::timer::Word;
 
 /// Why a spec cannot become a table.
@@ -273,154 +273,58 @@ impl Error {
 }
 
 impl fmt::Display for Error {
+    /// Every variant by name, without a wildcard: a new variant does not
+    /// compile until it has a message. The longer messages are written in
+    /// `messages.rs`, by theme: a parameter's value, the ramp's length and
+    /// layouts, the table's entries and words.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match *self {
             Error::NotFinite { key, value } => {
                 write!(f, "`{key}` must be a finite number (got {})", Num(value))
             }
-            Error::NotPositive { key, value } if value > 0.0 => write!(
-                f,
-                "`{key}` must be at least 2.2250738585072014e-308, the smallest normal float \
-                 (got {})",
-                Num(value)
-            ),
-            Error::NotPositive { key, value } => {
-                write!(f, "`{key}` must be greater than 0 (got {})", Num(value))
-            }
+            Error::NotPositive { key, value } => not_positive(f, key, value),
             Error::TooLarge { key, value, max } => {
-                write!(
-                    f,
-                    "`{key}` must be at most {} (got {})",
-                    Num(max),
-                    Num(value)
-                )
+                let (max, value) = (Num(max), Num(value));
+                write!(f, "`{key}` must be at most {max} (got {value})")
             }
             Error::NotGreater {
                 key,
                 value,
                 other,
                 other_value,
-            } => write!(
-                f,
-                "`{key}` must be greater than `{other}` (got {} <= {})",
-                Num(value),
-                Num(other_value)
-            ),
+            } => compared(f, (key, value), "greater than", "<=", (other, other_value)),
+            Error::NotAtLeast {
+                key,
+                value,
+                other,
+                other_value,
+            } => compared(f, (key, value), "at least", "<", (other, other_value)),
             Error::Zero { key } => write!(f, "`{key}` must not be 0"),
             Error::TooSmall {
                 key,
                 value,
                 min,
                 why,
-            } => write!(
-                f,
-                "`{key}` must be greater than {}{why} (got {})",
-                Significant(min),
-                Num(value)
-            ),
-            Error::NotAtLeast {
-                key,
-                value,
-                other,
-                other_value,
-            } => write!(
-                f,
-                "`{key}` must be at least `{other}` (got {} < {})",
-                Num(value),
-                Num(other_value)
-            ),
-            Error::NotWhole { key, value } => write!(
-                f,
-                "`{key}` must be a whole number with `arithmetic = integer` (got {})",
-                Num(value)
-            ),
+            } => too_small(f, key, value, min, why),
+            Error::NotWhole { key, value } => not_whole(f, key, value),
             Error::IntegerOverflow {
                 key,
                 expression,
                 value,
                 max,
-            } => write!(
-                f,
-                "`{key}` overflows the integer `pulse()` code: `{expression}` is {value}, more than {max}"
-            ),
-            _ => self.fmt_table(f),
-        }
-    }
-}
-
-/// [`Error::RampTooLong`]'s message: the length in exponent form beyond
-/// 1e16 steps, and said so where it is no length at all.
-fn ramp_too_long(f: &mut fmt::Formatter<'_>, key: Key, steps: f64, max: u32) -> fmt::Result {
-    if steps == f64::INFINITY {
-        write!(
-            f,
-            "`{key}` makes the ramp longer than a float counts (1.8e308 steps); at most {max} \
-             are allowed"
-        )
-    } else if steps.is_nan() || steps <= 0.0 {
-        write!(
-            f,
-            "`{key}` gives the ramp no length in steps (got {steps}); from 1 to {max} are allowed"
-        )
-    } else {
-        write!(
-            f,
-            "`{key}` makes the ramp {} steps long; at most {max} are allowed",
-            Num(libm::round(steps))
-        )
-    }
-}
-
-impl Error {
-    /// The messages of the errors about lengths, layouts, the timer and the
-    /// table itself.
-    fn fmt_table(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match *self {
+            } => integer_overflow(f, key, expression, value, max),
             Error::RampTooLong { key, steps, max } => ramp_too_long(f, key, steps, max),
-            Error::EmptySegment { index, steps } => write!(
-                f,
-                "segment {index} holds no step of the {steps}-step ramp; use fewer `segments`"
-            ),
-            Error::SegmentTooLong { index, count, word } => write!(
-                f,
-                "segment {index} holds {count} steps, more than a `word = {}` count holds ({}); \
-                 use more `segments`",
-                word.name(),
-                word.max()
-            ),
+            Error::EmptySegment { index, steps } => empty_segment(f, index, steps),
+            Error::SegmentTooLong { index, count, word } => segment_too_long(f, index, count, word),
             Error::CompressTooSmall {
                 value,
-                ticks_per_step: 2,
-            } => write!(
-                f,
-                "`compress` is the largest step-edge error allowed, in timer ticks, and must be \
-                 at least 1 with `ticks_per_step = 2`: each entry is played twice, so step edges \
-                 fall on every other tick (got {})",
-                Num(value)
-            ),
-            Error::CompressTooSmall { value, .. } => write!(
-                f,
-                "`compress` is the largest pulse-edge error allowed, in ticks, and must be at \
-                 least 0.5: a whole tick cannot land nearer to every edge (got {})",
-                Num(value)
-            ),
-            Error::CompressTooLarge { value } => write!(
-                f,
-                "`compress` is the largest pulse-edge error allowed, in ticks, and must be at \
-                 most 65535, the longest period a run's 16-bit word holds (got {})",
-                Num(value)
-            ),
-            Error::CompressUnreachable { step, tolerance } => write!(
-                f,
-                "no run of 16-bit periods keeps pulse edge {step} within {} ticks of the \
-                 curve; raise `compress`",
-                Num(tolerance)
-            ),
-            Error::SegmentsNeedTime { discretization } => write!(
-                f,
-                "`segments` cuts the curve into equal-time pieces and needs `discretization = exact` (got `{}`)",
-                discretization.name()
-            ),
+                ticks_per_step,
+            } => compress_too_small(f, value, ticks_per_step),
+            Error::CompressTooLarge { value } => compress_too_large(f, value),
+            Error::CompressUnreachable { step, tolerance } => {
+                compress_unreachable(f, step, tolerance)
+            }
+            Error::SegmentsNeedTime { discretization } => segments_need_time(f, discretization),
             Error::LenZero => f.write_str("`len` must be at least 1 (got 0)"),
             Error::LenTooLarge { len, max } => {
                 write!(f, "`len` must be at most {max} (got {len})")
@@ -429,7 +333,14 @@ impl Error {
             Error::TicksPerStep { value } => {
                 write!(f, "`ticks_per_step` must be 1 or 2 (got {value})")
             }
-            Error::ReloadOffsetRange { .. } | Error::ReloadOffset { .. } => self.fmt_offset(f),
+            Error::ReloadOffsetRange { offset, word } => reload_offset_range(f, offset, word),
+            Error::ReloadOffset {
+                what,
+                index,
+                ticks,
+                offset,
+                word,
+            } => reload_offset(f, (what, index, ticks), offset, word),
             Error::Unsupported {
                 key,
                 value,
@@ -441,68 +352,14 @@ impl Error {
                 word,
                 timer_hz,
                 lowest_hz,
-            } => write!(
-                f,
-                "entry {index} is {} ticks, more than `word = {}` holds ({}); \
-                 at `timer_hz = {timer_hz}` the lowest step frequency that fits is {} Hz",
-                Num(libm::round(ticks)),
-                word.name(),
-                word.max(),
-                Hundredths(lowest_hz),
-            ),
-            Error::PeriodZero { index, highest_hz } => write!(
-                f,
-                "entry {index} rounds to 0 ticks; the timer resolves step frequencies up to {} Hz",
-                Fixed(highest_hz, 0)
-            ),
+            } => period_overflow(f, (index, ticks), word, timer_hz, lowest_hz),
+            Error::PeriodZero { index, highest_hz } => period_zero(f, index, highest_hz),
             Error::BufferLength { expected, got } => write!(
                 f,
                 "the buffer holds {got} entries but the table has `len = {expected}`"
             ),
-            Error::WordMismatch { expected, got } => write!(
-                f,
-                "the buffer holds `{}` entries but the spec has `word = {}`",
-                got.name(),
-                expected.name()
-            ),
-            Error::NoConvergence { index, iterations } => write!(
-                f,
-                "the pulse time of step {index} did not converge within {iterations} iterations: \
-                 the curve's step count is not a finite number there"
-            ),
-            // Written by `fmt`; every variant's message is pinned in the tests.
-            _ => Ok(()),
-        }
-    }
-
-    /// The messages of `reload_offset`: its range, and a stored value it
-    /// takes out of the word.
-    fn fmt_offset(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match *self {
-            Error::ReloadOffsetRange { offset, word } => write!(
-                f,
-                "`reload_offset` must be from -{max} to {max} with `word = {}`: a period of 1 to \
-             {} ticks plus the offset must fit the word (got {offset})",
-                word.name(),
-                word.max(),
-                max = word.max() - 1,
-            ),
-            Error::ReloadOffset {
-                what,
-                index,
-                ticks,
-                offset,
-                word,
-            } => write!(
-                f,
-                "`reload_offset = {offset}` makes {what} {index} ({ticks} tick{}) {}: a stored \
-             value, the period plus the offset, must be from 1 to {} (`word = {}`)",
-                if ticks == 1 { "" } else { "s" },
-                i64::from(ticks) + i64::from(offset),
-                word.max(),
-                word.name()
-            ),
-            _ => Ok(()),
+            Error::WordMismatch { expected, got } => word_mismatch(f, expected, got),
+            Error::NoConvergence { index, iterations } => no_convergence(f, index, iterations),
         }
     }
 }

@@ -5,6 +5,7 @@
 pub(crate) mod error;
 pub(crate) mod key;
 pub(crate) mod math;
+mod messages;
 pub(crate) mod modes;
 pub(crate) mod numbers;
 pub(crate) mod solve;

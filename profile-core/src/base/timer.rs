@@ -57,14 +57,27 @@ impl Timer {
         }
     }
 
-    /// Ticks per second of step period: `timer_hz / ticks_per_step`.
-    pub fn ticks_per_second(&self) -> f64 {
+    /// What turns an entry into its step's frequency and period:
+    /// `timer_hz / ticks_per_step`, in Hz. A step whose entry is `p` ticks
+    /// is a step at `frequency_scale() / p` Hz, lasting
+    /// `p / frequency_scale()` s (with `ticks_per_step = 2` the timer plays
+    /// each entry twice).
+    ///
+    /// ```
+    /// use profile_core::Timer;
+    ///
+    /// let timer = Timer { ticks_per_step: 2, ..Timer::new(1_000_000) };
+    /// assert_eq!(timer.frequency_scale(), 500_000.0);
+    /// // An entry of 500 ticks: a step at 1 kHz.
+    /// assert_eq!(timer.frequency_scale() / 500.0, 1000.0);
+    /// ```
+    pub fn frequency_scale(&self) -> f64 {
         self.timer_hz as f64 / self.ticks_per_step as f64
     }
 
     /// The lowest step frequency whose period still fits the word, in Hz.
     pub fn lowest_frequency(&self) -> f64 {
-        self.ticks_per_second() / self.word.max() as f64
+        self.frequency_scale() / self.word.max() as f64
     }
 }
 

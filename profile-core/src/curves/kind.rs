@@ -51,9 +51,9 @@ pub(crate) struct Modes {
 }
 
 impl Modes {
-    /// Ticks per second of step period.
+    /// [`Timer::frequency_scale`](crate::Timer::frequency_scale).
     pub(crate) fn scale(&self) -> f64 {
-        self.timer.ticks_per_second()
+        self.timer.frequency_scale()
     }
 }
 
@@ -141,7 +141,7 @@ pub(crate) trait CurveKind: Copy {
 
 /// A curve as the schema sees it: its name, keys and how to read it.
 #[cfg_attr(not(feature = "codegen"), allow(dead_code))]
-pub(crate) struct Room {
+pub(crate) struct CurveSchema {
     pub(crate) name: &'static str,
     pub(crate) keys: &'static [Key],
     pub(crate) required: &'static [Key],

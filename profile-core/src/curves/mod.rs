@@ -4,8 +4,8 @@
 //!
 //! The list at the end of this file names every curve once; the macro that
 //! reads it makes the public [`Curve`] enum, the dispatch over it, and the
-//! table of [`Room`]s the schema reads keys from. Adding a curve is one new
-//! file and one line in that list (ARCHITECTURE.md).
+//! table of [`CurveSchema`]s the schema reads keys from. Adding a curve is one new
+//! file, its `mod` line and one line in that list (ARCHITECTURE.md).
 
 use crate::base::error::Error;
 use crate::base::key::Key;
@@ -14,12 +14,20 @@ use crate::base::solve::TimeCurve;
 pub(crate) mod check;
 mod kind;
 
-pub(crate) use kind::{CurveKind, IndexEntry, Length, Modes, Param, Reader, Room};
+// The curves, one module each, declared here rather than by `curves!` so that
+// `cargo fmt` reaches them (rustfmt does not follow modules a macro declares).
+mod exponential;
+mod jerk_limited;
+mod linear;
+mod sigmoid;
+mod three_stage;
 
-impl Room {
-    /// The room of the curve named `name`.
-    pub(crate) fn named(name: &str) -> Option<&'static Room> {
-        ROOMS.iter().find(|r| r.name == name)
+pub(crate) use kind::{CurveKind, CurveSchema, IndexEntry, Length, Modes, Param, Reader};
+
+impl CurveSchema {
+    /// The schema of the curve named `name`.
+    pub(crate) fn named(name: &str) -> Option<&'static CurveSchema> {
+        CURVE_SCHEMAS.iter().find(|r| r.name == name)
     }
 }
 
@@ -32,11 +40,12 @@ impl Key {
     /// curve's own keys (in the order of the curves), the common keys, the
     /// motor's.
     pub fn all() -> impl Iterator<Item = Key> {
-        let own = ROOMS.iter().enumerate().flat_map(|(i, room)| {
-            room.keys
+        let own = CURVE_SCHEMAS.iter().enumerate().flat_map(|(i, schema)| {
+            schema
+                .keys
                 .iter()
                 .copied()
-                .filter(move |k| !ROOMS[..i].iter().any(|r| r.keys.contains(k)))
+                .filter(move |k| !CURVE_SCHEMAS[..i].iter().any(|r| r.keys.contains(k)))
         });
         core::iter::once(Key::CURVE)
             .chain(own)
@@ -52,7 +61,6 @@ impl Key {
 
 macro_rules! curves {
     ($( $(#[$doc:meta])* $module:ident :: $Curve:ident, )+) => {
-        $( mod $module; )+
         $( pub use $module::$Curve; )+
 
         /// What the curves make public: the enum, each curve's parameters and
@@ -77,10 +85,10 @@ macro_rules! curves {
             }
         )+
 
-        /// Every curve's room, in the order of the list.
-        pub(crate) const ROOMS: &[Room] = &[
+        /// Every curve's schema, in the order of the list.
+        pub(crate) const CURVE_SCHEMAS: &[CurveSchema] = &[
             $(
-                Room {
+                CurveSchema {
                     name: <$Curve as CurveKind>::NAME,
                     keys: <$Curve as CurveKind>::KEYS,
                     required: <$Curve as CurveKind>::REQUIRED,
@@ -108,17 +116,17 @@ macro_rules! curves {
         }
 
         impl Curve {
-            /// The curve's room.
-            pub(crate) fn room(&self) -> &'static Room {
+            /// The curve's schema.
+            pub(crate) fn schema(&self) -> &'static CurveSchema {
                 let name = match self {
                     $( Curve::$Curve(_) => <$Curve as CurveKind>::NAME, )+
                 };
-                Room::named(name).unwrap_or(&ROOMS[0])
+                CurveSchema::named(name).unwrap_or(&CURVE_SCHEMAS[0])
             }
 
             /// The name used in macro arguments and TOML.
             pub fn name(&self) -> &'static str {
-                self.room().name
+                self.schema().name
             }
 
             /// The start and end frequencies, in Hz.

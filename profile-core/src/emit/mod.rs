@@ -1,5 +1,14 @@
-//! The one emitter: what a table becomes in Rust (tokens, for the macros
-//! and for build-script files alike) and in C.
+//! The one emitter: what a compiled table becomes in Rust and in C.
+//!
+//! This module holds what both languages share: [`Profile`], a table under
+//! its name with its motor and torque figures; the figures every output
+//! carries (the constants of a profile module, the `#define`s of a header);
+//! [`doc_lines`], the lines that describe a table in docs and comments; and
+//! [`start_note`], the remark on a table that starts far above `fmin`. Its
+//! modules write the languages: [`rust`], tokens for the macros and for
+//! build-script files alike; [`print`], those tokens as source text; [`c`],
+//! a header (or a header and a source file) with the tables and the move
+//! players.
 
 use std::format;
 use std::string::{String, ToString};
@@ -11,7 +20,7 @@ use crate::base::modes::Discretization;
 use crate::motor::{Motor, TorqueFigures};
 use crate::pipeline::Compiled;
 use crate::schema::describe;
-use crate::table::owned::Generated;
+use crate::table::computed::Generated;
 
 pub mod c;
 pub mod print;

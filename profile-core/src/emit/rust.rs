@@ -13,7 +13,7 @@ use std::vec::Vec;
 use super::{Constant, Number, Profile, constants, doc_lines};
 use crate::base::error::Fixed;
 use crate::base::timer::Word;
-use crate::table::owned::Generated;
+use crate::table::computed::Generated;
 
 /// A period as a literal: the first of an array carries the word's suffix,
 /// which gives the array its type.

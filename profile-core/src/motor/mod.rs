@@ -31,6 +31,9 @@
 
 mod check;
 mod chopper;
+// Public as `simulate`, at the crate root (one path per item); declared
+// here, beside the model it plays.
+#[doc(hidden)]
 pub mod simulate;
 mod start;
 mod stepped;
@@ -151,6 +154,7 @@ pub struct Motor {
 
 /// Where the motor has the least torque to spare over a ramp.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct TorqueFigures {
     /// Smallest available minus needed torque, in N·m.
     pub min_margin_nm: f64,
@@ -312,35 +316,13 @@ impl fmt::Display for MotorError {
                 available_nm,
                 beyond_curve,
                 from_windings,
-            } => {
-                let hz = Fixed(hz, 1);
-                if step == 0 {
-                    write!(f, "the motor cannot start at {hz} Hz")?;
-                } else {
-                    write!(f, "the motor cannot follow step {step} at {hz} Hz")?;
-                }
-                write!(
-                    f,
-                    ": it needs {} N·m but gives {} N·m after the safety factor, short by {} N·m",
-                    Fixed(needed_nm, 4),
-                    Fixed(available_nm, 4),
-                    Fixed(needed_nm - available_nm, 4)
-                )?;
-                if beyond_curve {
-                    f.write_str(" (the frequency is beyond the last point of `torque_curve`)")?;
-                }
-                match from_windings {
-                    Some(Drive::HalfStep) => f.write_str(
-                        " (the pull-out torque derived from the windings, in half steps)",
-                    )?,
-                    Some(Drive::FullStep) => f.write_str(
-                        " (the pull-out torque derived from the windings, in full steps)",
-                    )?,
-                    Some(_) => f.write_str(" (the pull-out torque derived from the windings)")?,
-                    None => {}
-                }
-                Ok(())
-            }
+            } => torque(
+                f,
+                (step, hz),
+                (needed_nm, available_nm),
+                beyond_curve,
+                from_windings,
+            ),
             MotorError::NotFinite { step, what } => write!(
                 f,
                 "the torque {what} at step {step} is not a finite number: the motor's inertia, \
@@ -352,10 +334,56 @@ impl fmt::Display for MotorError {
                  `resistance`, `inductance`, `rated_current`, `holding_torque` and \
                  `supply_voltage`",
             ),
-            MotorError::PullIn { .. } | MotorError::ShortMove { .. } | MotorError::Start { .. } => {
-                start::describe(self, f)
-            }
+            MotorError::PullIn {
+                pulse,
+                hz,
+                remedies,
+            } => start::pull_in(f, pulse, hz, remedies),
+            MotorError::ShortMove {
+                hz,
+                pulse,
+                steps,
+                remedies,
+            } => start::short_move(f, hz, (pulse, steps), remedies),
+            MotorError::Start { hz, limit } => start::start(f, hz, limit),
         }
+    }
+}
+
+/// [`MotorError::Torque`]'s message: step `step` at `hz`, the torque
+/// needed and available.
+fn torque(
+    f: &mut fmt::Formatter<'_>,
+    (step, hz): (u32, f64),
+    (needed_nm, available_nm): (f64, f64),
+    beyond_curve: bool,
+    from_windings: Option<Drive>,
+) -> fmt::Result {
+    let hz = Fixed(hz, 1);
+    if step == 0 {
+        write!(f, "the motor cannot start at {hz} Hz")?;
+    } else {
+        write!(f, "the motor cannot follow step {step} at {hz} Hz")?;
+    }
+    write!(
+        f,
+        ": it needs {} N·m but gives {} N·m after the safety factor, short by {} N·m",
+        Fixed(needed_nm, 4),
+        Fixed(available_nm, 4),
+        Fixed(needed_nm - available_nm, 4)
+    )?;
+    if beyond_curve {
+        f.write_str(" (the frequency is beyond the last point of `torque_curve`)")?;
+    }
+    match from_windings {
+        Some(Drive::HalfStep) => {
+            f.write_str(" (the pull-out torque derived from the windings, in half steps)")
+        }
+        Some(Drive::FullStep) => {
+            f.write_str(" (the pull-out torque derived from the windings, in full steps)")
+        }
+        Some(_) => f.write_str(" (the pull-out torque derived from the windings)"),
+        None => Ok(()),
     }
 }
 

@@ -25,24 +25,32 @@
 //!   torque is largest at a lag of one full step and changes sign beyond two,
 //!   where the rotor falls into the next stable position, four full steps
 //!   away. That is a slip: four full steps (`4 · microsteps` table steps) lost.
-//! - `T_peak(f)` is the pull-out torque curve at the commanded step frequency
-//!   `f`, [`TorqueCurve::torque`](crate::motor::TorqueCurve::torque). This is
-//!   a modelling choice: at 0 Hz the curve gives about the holding torque, the
-//!   amplitude of the static torque-angle curve; at speed the winding current
-//!   no longer reaches its set value (inductance, back EMF) and the torque the
-//!   motor can develop falls as the curve says, so the curve scales the whole
-//!   sine. With this choice the largest torque the model gives at a steady `f`
-//!   is the pull-out torque there, as measured. Beyond the curve's last point
-//!   the motor is not characterised and gives no torque, as in the check. The
-//!   safety factor is not applied: the simulation predicts what the motor
-//!   does, the check keeps a margin.
+//! - `T_peak(f)` is the motor's pull-out torque at the commanded step
+//!   frequency `f`, [`Motor::pull_out`]: the measured `torque_curve` when
+//!   given ([`TorqueCurve::torque`](crate::motor::TorqueCurve::torque)),
+//!   else the torque the windings give behind the chopper at the steady
+//!   speed `f` ([`Windings`](crate::motor::Windings): the driver's current
+//!   regulation in its steady state at that speed, the current falling
+//!   behind under the full supply). This is a modelling choice: at 0 Hz
+//!   `T_peak` is about the holding torque, the amplitude of the static
+//!   torque-angle curve; at speed the winding current no longer reaches its
+//!   set value (inductance, back EMF) and the torque the motor can develop
+//!   falls as the curve says, so it scales the whole sine. With this choice
+//!   the largest torque the model gives at a steady `f` is the pull-out
+//!   torque there, as measured. Beyond the curve's last point the motor is
+//!   not characterised and gives no torque, as in the check. The safety
+//!   factor is not applied: the simulation predicts what the motor does, the
+//!   check keeps a margin.
+//! - `ω_cmd` is the field's commanded speed, one table step
+//!   ([`Motor::step_radians`]) per period: `step_radians / period_k` rad/s
+//!   while entry `k` elapses (`period_k` in seconds), 0 while the motor holds.
 //! - `θ_cmd` advances by one table step ([`Motor::step_radians`]) at each
 //!   pulse edge. The timer starts at `t = 0` and entry `k` elapses before
 //!   pulse `k + 1`, as a step interrupt plays a table: pulse `k` (from 1) is
 //!   at `t_k = (periods[0] + ... + periods[k-1]) / (timer_hz / ticks_per_step)`.
 //!   While entry `k` elapses the commanded frequency is `1 / period_k`; after
-//!   the last pulse it is 0 (the motor holds) and `θ_cmd` stays fixed for
-//!   [`SimOptions::settle_s`].
+//!   the last pulse it is 0 (the motor holds, `T_peak(0)`) and `θ_cmd` stays
+//!   fixed for [`SimOptions::settle_s`].
 //!
 //! The integrator is semi-implicit (symplectic) Euler, the damping terms
 //! taken on the new speed (implicit, so no damping makes it unstable), with
@@ -51,8 +59,11 @@
 //! impulse that can stop the rotor but never reverse it within a step. Halve
 //! `dt_s` to check that it is small enough: the results should not change.
 //!
-//! Not modelled: detent torque, mid-band resonance, the driver's current
-//! regulation, the electrical time constant within a step.
+//! Not modelled: the phase currents' transients (the torque's amplitude is
+//! the steady state's at the commanded rate, reached at once when the rate
+//! changes: no electrical time constant within a step), the detent torque as
+//! a torque on the rotor (the windings' pull-out torque is reduced by it, the
+//! equation above has no term for it), mid-band resonance.
 //!
 //! ```
 //! use profile_core::motor::{Motor, TorqueCurve};
@@ -122,7 +133,7 @@ impl SimOptions {
     /// The natural angular frequency is `sqrt(T_peak(0) · (π/2) / θ_fullstep / J)`:
     /// the rotor's small oscillations about a held position.
     pub fn suggested(motor: &Motor, spec: &Spec, periods: &[u32]) -> Self {
-        let per_second = ticks_per_second(spec);
+        let per_second = spec.timer.frequency_scale();
         let shortest = periods
             .iter()
             .filter(|&&p| p > 0)
@@ -137,6 +148,7 @@ impl SimOptions {
 
 /// What the rotor did.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct SimResult {
     /// Table steps lost by the end, after settling: the rotor's final
     /// electrical lag rounded to whole electrical turns, each
@@ -262,10 +274,6 @@ impl From<MotorError> for SimError {
     fn from(e: MotorError) -> Self {
         SimError::Motor(e)
     }
-}
-
-fn ticks_per_second(spec: &Spec) -> f64 {
-    spec.timer.timer_hz as f64 / spec.timer.ticks_per_step as f64
 }
 
 /// The rotor's natural period at holding torque, `2π / sqrt(K / J)` in s
@@ -465,7 +473,7 @@ pub fn run(
     if !(dt_s.is_finite() && dt_s > 0.0 && settle_s.is_finite() && settle_s >= 0.0) {
         return Err(SimError::Options { dt_s, settle_s });
     }
-    let per_second = ticks_per_second(spec);
+    let per_second = spec.timer.frequency_scale();
     let poles = motor.poles();
     let max_dt_s = stable_step(motor);
     if dt_s > max_dt_s {

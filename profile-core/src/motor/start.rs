@@ -357,75 +357,75 @@ fn advise(remedies: Remedies, f: &mut fmt::Formatter<'_>) -> fmt::Result {
     }
 }
 
-/// The message of an error about the ends of a move.
-pub(super) fn describe(error: &MotorError, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-    match *error {
-        MotorError::PullIn {
-            pulse,
-            hz,
-            remedies,
-        } => {
-            write!(
-                f,
-                "the motor cannot start on this ramp with its load: from rest at {hz} Hz the \
-                 model's rotor slips before pulse {pulse}, before it reaches the field's speed",
-                hz = Fixed(hz, 1)
-            )?;
-            advise(remedies, f)
-        }
-        MotorError::ShortMove {
-            hz,
-            pulse,
-            steps,
-            remedies,
-        } => {
-            write!(
-                f,
-                "the motor cannot make the shortest move on this ramp, from rest up its first {} \
-                 steps and down again: ",
-                steps / 2
-            )?;
-            if pulse <= steps {
-                write!(f, "the model's rotor slips before pulse {pulse} of {steps}")?;
-            } else {
-                write!(
-                    f,
-                    "when the field stops at {hz} Hz the model's rotor runs past it by half \
-                     an electrical turn",
-                    hz = Fixed(hz, 1)
-                )?;
-            }
-            advise(remedies, f)
-        }
-        MotorError::Start { hz, limit } => {
-            let hz = Fixed(hz, 1);
-            write!(
-                f,
-                "the motor cannot start at {hz} Hz with its load: it starts at {} Hz at most, ",
-                Fixed(limit.hz(), 1)
-            )?;
-            match limit {
-                StartLimit::Corrected {
-                    max_start_hz,
-                    factor,
-                    ..
-                } => write!(
-                    f,
-                    "`max_start_hz = {}` (without load) over \
-                     sqrt(1 + load_inertia / rotor_inertia) = {}",
-                    Num(max_start_hz),
-                    Fixed(factor, 3)
-                ),
-                StartLimit::Model { .. } => write!(
-                    f,
-                    "the fastest rate found (by bisection below {hz} Hz) that the model's \
-                     rotor pulls in to from rest: it reaches the field's speed before lagging \
-                     180° electrical (torque over the safety factor; give `max_start_hz` \
-                     from the datasheet to use it instead)"
-                ),
-            }
-        }
-        _ => Ok(()),
+/// [`MotorError::PullIn`]'s message.
+pub(super) fn pull_in(
+    f: &mut fmt::Formatter<'_>,
+    pulse: u32,
+    hz: f64,
+    remedies: Remedies,
+) -> fmt::Result {
+    write!(
+        f,
+        "the motor cannot start on this ramp with its load: from rest at {hz} Hz the \
+         model's rotor slips before pulse {pulse}, before it reaches the field's speed",
+        hz = Fixed(hz, 1)
+    )?;
+    advise(remedies, f)
+}
+
+/// [`MotorError::ShortMove`]'s message.
+pub(super) fn short_move(
+    f: &mut fmt::Formatter<'_>,
+    hz: f64,
+    (pulse, steps): (u32, u32),
+    remedies: Remedies,
+) -> fmt::Result {
+    write!(
+        f,
+        "the motor cannot make the shortest move on this ramp, from rest up its first {} \
+         steps and down again: ",
+        steps / 2
+    )?;
+    if pulse <= steps {
+        write!(f, "the model's rotor slips before pulse {pulse} of {steps}")?;
+    } else {
+        write!(
+            f,
+            "when the field stops at {hz} Hz the model's rotor runs past it by half \
+             an electrical turn",
+            hz = Fixed(hz, 1)
+        )?;
+    }
+    advise(remedies, f)
+}
+
+/// [`MotorError::Start`]'s message.
+pub(super) fn start(f: &mut fmt::Formatter<'_>, hz: f64, limit: StartLimit) -> fmt::Result {
+    let hz = Fixed(hz, 1);
+    write!(
+        f,
+        "the motor cannot start at {hz} Hz with its load: it starts at {} Hz at most, ",
+        Fixed(limit.hz(), 1)
+    )?;
+    match limit {
+        StartLimit::Corrected {
+            max_start_hz,
+            factor,
+            ..
+        } => write!(
+            f,
+            "`max_start_hz = {}` (without load) over \
+             sqrt(1 + load_inertia / rotor_inertia) = {}",
+            Num(max_start_hz),
+            Fixed(factor, 3)
+        ),
+        StartLimit::Model { .. } => write!(
+            f,
+            "the fastest rate found (by bisection below {hz} Hz) that the model's \
+             rotor pulls in to from rest: it reaches the field's speed before lagging \
+             180° electrical (torque over the safety factor; give `max_start_hz` \
+             from the datasheet to use it instead)"
+        ),
     }
 }
 

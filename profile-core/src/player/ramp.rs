@@ -1,11 +1,11 @@
 //! A ramp to play, and positions along it.
 
 use crate::base::timer::TableWord;
-use crate::table::runs::{Expand, FRACTION_MASK, RUN_FRACTION_BITS, RUN_START_FRACTION, Run};
+use crate::table::runs::{Expand, FRACTION_MASK, LinearRun, RUN_FRACTION_BITS, RUN_START_FRACTION};
 
 /// Run `index` of `runs`, decoded.
-fn run_at(runs: &[[u16; 5]], index: u32) -> Option<Run> {
-    runs.get(index as usize).map(Run::decode)
+fn run_at(runs: &[[u16; 5]], index: u32) -> Option<LinearRun> {
+    runs.get(index as usize).map(LinearRun::decode)
 }
 
 /// `n (n - 1) / 2`, exact for any `n` up to 65 536 (a run's count is at
@@ -247,7 +247,7 @@ impl Cursor {
                 // The remainder carried through every run before.
                 let (mut start, mut frac) = (0u32, RUN_START_FRACTION);
                 for (i, words) in runs.iter().enumerate() {
-                    let run = Run::decode(words);
+                    let run = LinearRun::decode(words);
                     let count = u32::from(run.count);
                     if pos - start < count {
                         let within = pos - start;

@@ -4,7 +4,7 @@
 //! location of the front end's choice (a `Span` in the macro, a byte range in
 //! TOML). [`read`] checks keys, kinds and names and says what the arguments
 //! ask for; every problem comes back as a [`Diagnostic`] at the location of
-//! the offending key or value. The keys a curve takes come from its room
+//! the offending key or value. The keys a curve takes come from its schema
 //! (`curves/`); this module knows the common keys, the motor's, and how to
 //! say what is wrong.
 
@@ -14,17 +14,17 @@ use std::vec::Vec;
 
 use crate::base::error::Num;
 use crate::base::key::Key;
-use crate::curves::{ROOMS, Room};
+use crate::curves::{CURVE_SCHEMAS, CurveSchema};
 
 mod describe;
-mod read;
-mod reader;
+mod request;
 mod suggest;
 pub mod units;
+mod values;
 
 pub use describe::{describe, describe_motor, locate, locate_motor};
-pub(crate) use read::value_problems;
-pub use read::{Request, read};
+pub(crate) use request::value_problems;
+pub use request::{Request, read};
 pub use suggest::{Hint, did_you_mean, suggest};
 
 /// A value as written by the user.
@@ -129,13 +129,13 @@ pub struct Diagnostic<L> {
 
 /// The curves a spec can name, in documentation order.
 pub fn curve_names() -> impl Iterator<Item = &'static str> + Clone {
-    ROOMS.iter().map(|r| r.name)
+    CURVE_SCHEMAS.iter().map(|r| r.name)
 }
 
 /// Every key `curve` accepts, in documentation order: its own, the common
 /// ones, the motor's.
 pub fn keys_for(curve: &str) -> Vec<Key> {
-    let own = Room::named(curve).map_or(&[][..], |r| r.keys);
+    let own = CurveSchema::named(curve).map_or(&[][..], |r| r.keys);
     Key::all()
         .filter(|k| *k == Key::CURVE || own.contains(k) || Key::COMMON.contains(k) || k.is_motor())
         .collect()
@@ -185,7 +185,7 @@ pub fn unit(key: Key) -> &'static str {
         Key::INDUCTANCE => "H",
         Key::RATED_CURRENT => "A",
         Key::SUPPLY_VOLTAGE => "V",
-        _ => ROOMS
+        _ => CURVE_SCHEMAS
             .iter()
             .flat_map(|r| r.units)
             .find(|(k, _)| *k == key)
@@ -195,7 +195,7 @@ pub fn unit(key: Key) -> &'static str {
 
 /// A table's layout: one entry per step, equal-time segments, or runs.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Layout {
+pub enum TableLayout {
     /// One period per step: `[u16; len]`.
     Steps,
     /// `n` equal-time segments of (period, step count): `[(u16, u16); n]`.

@@ -26,7 +26,7 @@ use crate::base::key::Key;
 use crate::base::modes::{Discretization, Rounding};
 use crate::base::timer::Word;
 use crate::table::quantize::stored;
-use crate::table::runs::{RUN_FRACTION_BITS, RUN_START_FRACTION, Run};
+use crate::table::runs::{LinearRun, RUN_FRACTION_BITS, RUN_START_FRACTION};
 use crate::table::spec::{CheckedSpec, Spec};
 
 /// The smallest `compress` allowed with one reload per step: an integer edge
@@ -42,6 +42,7 @@ pub const MAX_COMPRESS_TICKS: f64 = u16::MAX as f64;
 
 /// What a compressed table amounts to.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct RunFigures {
     /// Number of runs.
     pub runs: u32,
@@ -355,14 +356,14 @@ impl<'a> Fit<'a> {
 
     /// Runs of `len` steps from `at` inside `poly` that keep every edge:
     /// the one ending nearest its exact edge.
-    fn runs_of(&self, at: At, len: usize, poly: &Polygon) -> Vec<(Run, i64)> {
+    fn runs_of(&self, at: At, len: usize, poly: &Polygon) -> Vec<(LinearRun, i64)> {
         let target = (self.exact[at.done + len - 1] + 0.5) * ONE;
         let (j, c) = (len as f64, (len * (len - 1) / 2) as f64);
         let aim = |add: f64| (target - at.pos as f64 - c * add) / j;
-        let mut found: Vec<(Run, i64)> = candidates(poly, aim)
+        let mut found: Vec<(LinearRun, i64)> = candidates(poly, aim)
             .into_iter()
             .filter_map(|(interval, add)| {
-                let run = Run {
+                let run = LinearRun {
                     count: len as u16,
                     interval: u32::try_from(interval).ok()?,
                     add: i32::try_from(add).ok()?,
@@ -379,10 +380,10 @@ impl<'a> Fit<'a> {
 
     /// The next run from `at`: of the longest runs and a few shorter ones,
     /// the one that takes this run and the next furthest.
-    fn next_run(&self, at: At) -> Result<(Run, i64), Error> {
+    fn next_run(&self, at: At) -> Result<(LinearRun, i64), Error> {
         let kept = self.polygons(at, BACKTRACK, MAX_RUN_STEPS);
         let longest = kept.back().map_or(0, |(len, _)| *len);
-        let mut best: Option<(usize, Run, i64)> = None;
+        let mut best: Option<(usize, LinearRun, i64)> = None;
         let mut tried = 0;
         for (len, poly) in kept.iter().rev() {
             if !SHORTER.contains(&(longest - len)) && tried > 0 {
@@ -407,7 +408,7 @@ impl<'a> Fit<'a> {
         let (lo, hi) = self.band(at.done);
         let target = ((lo + hi) / 2 - at.pos).max(self.shortest << RUN_FRACTION_BITS);
         if let (Some(end), Ok(interval)) = (self.play(at, target, 0, 1), u32::try_from(target)) {
-            let run = Run {
+            let run = LinearRun {
                 count: 1,
                 interval,
                 add: 0,
@@ -475,7 +476,7 @@ impl CheckedSpec {
     /// ([`RunTable::stored_runs`] adds the offset).
     pub fn run_table(&self, tolerance: f64) -> Result<RunTable, Error> {
         self.check_compress(tolerance)?;
-        let scale = self.spec().timer.ticks_per_second();
+        let scale = self.spec().timer.frequency_scale();
         let mut exact = Vec::with_capacity(self.len() as usize);
         self.for_each_period_and_edge(|_, _, t| exact.push(t * scale))?;
         let repeat = f64::from(self.spec().timer.ticks_per_step);
@@ -538,10 +539,11 @@ fn run_figures(
 
 /// A compressed table with its spec and figures.
 #[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct RunTable {
     /// What the table was computed from.
     pub spec: Spec,
-    /// The runs of the periods, five words each (see [`Run`]), without
+    /// The runs of the periods, five words each (see [`LinearRun`]), without
     /// `reload_offset`.
     pub runs: Vec<[u16; 5]>,
     /// What the table amounts to.

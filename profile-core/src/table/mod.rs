@@ -3,9 +3,9 @@
 
 #[cfg(feature = "std")]
 pub(crate) mod compress;
-pub(crate) mod generate;
 #[cfg(feature = "std")]
-pub(crate) mod owned;
+pub(crate) mod computed;
+pub(crate) mod generate;
 pub(crate) mod quantize;
 pub mod runs;
 pub(crate) mod segments;

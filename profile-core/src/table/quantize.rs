@@ -10,6 +10,7 @@ use crate::table::spec::Spec;
 /// What a generated table amounts to. Times in seconds, frequencies in Hz
 /// (steps/s), acceleration in Hz/s, jerk in Hz/s².
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct Figures {
     /// Number of entries.
     pub len: u32,
@@ -251,7 +252,7 @@ impl Quantizer {
             rounding: spec.rounding,
             timer: spec.timer,
             offset: spec.reload_offset,
-            scale: spec.timer.ticks_per_second(),
+            scale: spec.timer.frequency_scale(),
             exact_edge: 0.0,
             emitted: 0,
             windowed: AccelWindows::new(f64::INFINITY),

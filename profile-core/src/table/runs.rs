@@ -24,10 +24,11 @@ pub const RUN_START_FRACTION: u32 = 1 << (RUN_FRACTION_BITS - 1);
 
 pub(crate) const FRACTION_MASK: u32 = (1 << RUN_FRACTION_BITS) - 1;
 
-/// One run, decoded: steps, first period and per-step change, in ticks
+/// One run, decoded: steps whose period changes by the same amount each
+/// step (linearly); its step count, first period and per-step change, in ticks
 /// scaled by `2^RUN_FRACTION_BITS`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Run {
+pub struct LinearRun {
     /// Steps in the run, at least 1.
     pub count: u16,
     /// The first step's period, in 1/65 536 ticks.
@@ -36,7 +37,7 @@ pub struct Run {
     pub add: i32,
 }
 
-impl Run {
+impl LinearRun {
     /// The run's five words, as tables store them.
     pub const fn encode(&self) -> [u16; 5] {
         let add = self.add as u32;
@@ -51,7 +52,7 @@ impl Run {
 
     /// The run stored as `words`.
     pub const fn decode(words: &[u16; 5]) -> Self {
-        Run {
+        LinearRun {
             count: words[0],
             interval: ((words[1] as u32) << 16) | words[2] as u32,
             add: (((words[3] as u32) << 16) | words[4] as u32) as i32,
@@ -92,7 +93,7 @@ impl Iterator for Expand<'_> {
     fn next(&mut self) -> Option<u32> {
         while self.left == 0 {
             let (first, rest) = self.runs.split_first()?;
-            let run = Run::decode(first);
+            let run = LinearRun::decode(first);
             self.runs = rest;
             self.left = run.count;
             self.interval = run.interval;
@@ -119,8 +120,8 @@ impl Iterator for Expand<'_> {
 /// ramp) and the C player then play each period plus `offset`, where every
 /// such value is from 1 to 65 535 (checked when a table is made).
 pub const fn with_offset(words: &[u16; 5], offset: i32) -> [u16; 5] {
-    let run = Run::decode(words);
-    Run {
+    let run = LinearRun::decode(words);
+    LinearRun {
         interval: run
             .interval
             .wrapping_add((offset as u32) << RUN_FRACTION_BITS),
@@ -140,25 +141,25 @@ mod tests {
 
     #[test]
     fn a_run_encodes_and_decodes() {
-        let run = Run {
+        let run = LinearRun {
             count: 300,
             interval: 0x1234_5678,
             add: -70_000,
         };
-        assert_eq!(Run::decode(&run.encode()), run);
+        assert_eq!(LinearRun::decode(&run.encode()), run);
     }
 
     #[test]
     fn runs_play_a_quadratic_with_the_remainder_carried() {
         // 2.5 ticks, then 2.75, 3.0: edges at 0.5 + 2.5, + 2.75, + 3.0.
         let runs = [
-            Run {
+            LinearRun {
                 count: 3,
                 interval: 5 << 15,
                 add: 1 << 14,
             }
             .encode(),
-            Run {
+            LinearRun {
                 count: 2,
                 interval: 1 << 16,
                 add: 0,

@@ -15,6 +15,7 @@ use crate::table::spec::{CheckedSpec, Spec};
 
 /// What a segment table amounts to.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct SegmentFigures {
     /// Number of segments.
     pub segments: u32,
@@ -106,7 +107,7 @@ impl CheckedSpec {
         self.check_segments(segments)?;
         let spec = self.spec();
         let len = self.len();
-        let scale = spec.timer.ticks_per_second();
+        let scale = spec.timer.frequency_scale();
         let repeat = f64::from(spec.timer.ticks_per_step);
         let word = spec.timer.word;
         let model = spec.curve.time_model();

@@ -5,10 +5,10 @@ use crate::base::error::Error;
 use crate::base::key::Key;
 use crate::base::modes::{Arithmetic, Discretization, Rounding};
 use crate::base::timer::{Timer, Word};
-use crate::curves::{Curve, Length, Modes, ROOMS};
+use crate::curves::{CURVE_SCHEMAS, Curve, Length, Modes};
 
 /// What `discretization = index` applies to, as messages say it: the curves
-/// whose room says `INDEX` (a test keeps the two in step).
+/// whose schema says `INDEX` (a test keeps the two in step).
 pub(crate) const INDEX_APPLIES: &str =
     "to `curve = sigmoid` and `curve = linear`, which are defined over the step index";
 
@@ -30,6 +30,7 @@ pub(crate) const INDEX_APPLIES: &str =
 /// assert!(table[0] > table[999]);
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct Spec {
     /// The curve and its parameters.
     pub curve: Curve,
@@ -173,8 +174,8 @@ impl Spec {
                 word: self.timer.word,
             });
         }
-        let room = self.curve.room();
-        if index && !room.index {
+        let schema = self.curve.schema();
+        if index && !schema.index {
             return Err(Error::Unsupported {
                 key: Key::DISCRETIZATION,
                 value: "index",
@@ -182,9 +183,9 @@ impl Spec {
             });
         }
         if self.arithmetic != Arithmetic::F64
-            && !room.arithmetic.iter().any(|(a, _)| *a == self.arithmetic)
+            && !schema.arithmetic.iter().any(|(a, _)| *a == self.arithmetic)
         {
-            let owner = ROOMS
+            let owner = CURVE_SCHEMAS
                 .iter()
                 .flat_map(|r| r.arithmetic)
                 .find(|(a, _)| *a == self.arithmetic);
@@ -245,11 +246,11 @@ mod tests {
     extern crate std;
     use super::*;
 
-    /// The message for `discretization = index` names the curves whose room
+    /// The message for `discretization = index` names the curves whose schema
     /// is defined over the index.
     #[test]
     fn index_message_names_the_index_curves() {
-        let named: std::vec::Vec<_> = ROOMS
+        let named: std::vec::Vec<_> = CURVE_SCHEMAS
             .iter()
             .filter(|r| r.index)
             .map(|r| std::format!("`curve = {}`", r.name))

@@ -15,7 +15,7 @@ use std::vec::Vec;
 use super::{Constant, Number, Profile, constants};
 use crate::base::timer::Word;
 use crate::schema::describe;
-use crate::table::owned::Generated;
+use crate::table::computed::Generated;
 
 mod player;
 mod style;

@@ -20,7 +20,7 @@ use std::vec::Vec;
 use super::{CStyle, Names, progmem, storage_word};
 use crate::base::timer::Word;
 use crate::emit::Profile;
-use crate::table::owned::Generated;
+use crate::table::computed::Generated;
 
 mod plan;
 mod runs;

@@ -11,7 +11,7 @@ use serde::Deserialize;
 use toml::Spanned;
 
 use crate::base::key::Key;
-use crate::curves::Room;
+use crate::curves::CurveSchema;
 use crate::schema::units::{self, Quantity};
 use crate::schema::{self, Arg, Diagnostic, Hint, Value, did_you_mean};
 
@@ -475,15 +475,15 @@ fn profile(
             }
         }
     }
-    let room = args
+    let curve = args
         .iter()
         .chain(defaults)
         .find(|a| a.key == Key::CURVE.name())
         .and_then(|a| match &a.value {
-            Value::Name(n) => Room::named(n),
+            Value::Name(n) => CurveSchema::named(n),
             _ => None,
         });
-    let curve_keys = room.map(|r| schema::keys_for(r.name));
+    let curve_keys = curve.map(|r| schema::keys_for(r.name));
     let has_motor = named.is_some()
         || args
             .iter()
@@ -495,9 +495,9 @@ fn profile(
             Some(k) if k.is_motor() => has_motor,
             Some(k) => {
                 curve_keys.as_ref().is_none_or(|keys| keys.contains(&k))
-                    && !displaced(k, room).any(given)
+                    && !displaced(k, curve).any(given)
             }
-            None => room.is_none(),
+            None => curve.is_none(),
         };
         if applies && !own.contains(&d.key) {
             args.push(d.clone());
@@ -509,8 +509,8 @@ fn profile(
 /// The keys that, given in a profile, displace a default `key`: the other
 /// of the curve's pair that sets the ramp's length (`len` or `accel`, `len`
 /// or `tau`), the other layout (`segments` or `compress`).
-fn displaced(key: Key, room: Option<&Room>) -> impl Iterator<Item = Key> {
-    let pairs = room
+fn displaced(key: Key, curve: Option<&CurveSchema>) -> impl Iterator<Item = Key> {
+    let pairs = curve
         .and_then(|r| r.one_of)
         .into_iter()
         .chain([[Key::SEGMENTS, Key::COMPRESS]]);

@@ -5,14 +5,14 @@ use std::format;
 use std::string::ToString;
 use std::vec::Vec;
 
-use super::reader::{Collector, motor};
 use super::suggest::{Hint, did_you_mean, suggest};
-use super::{Arg, Diagnostic, Layout, Value, curve_names, keys_for, listed, quoted};
+use super::values::{Collector, motor};
+use super::{Arg, Diagnostic, TableLayout, Value, curve_names, keys_for, listed, quoted};
 use crate::base::MAX_LEN;
 use crate::base::key::Key;
 use crate::base::modes::{Arithmetic, Discretization, Rounding};
 use crate::base::timer::{Timer, Word};
-use crate::curves::Room;
+use crate::curves::CurveSchema;
 use crate::motor::Motor;
 use crate::table::spec::Spec;
 
@@ -22,7 +22,7 @@ pub struct Request {
     /// The table's spec.
     pub spec: Spec,
     /// Its layout.
-    pub layout: Layout,
+    pub layout: TableLayout,
     /// The motor it drives, when described.
     pub motor: Option<Motor>,
 }
@@ -43,17 +43,17 @@ pub fn read<L: Clone>(
         whole,
         diagnostics: Vec::new(),
     };
-    let room = curve(&mut c);
-    let valid = match room {
+    let schema = curve(&mut c);
+    let valid = match schema {
         Some(r) => keys_for(r.name),
         None => Key::all().collect(),
     };
     let mut suggested = assumed.to_vec();
-    check_keys(&mut c, room, &valid, &mut suggested);
-    let Some(room) = room else {
+    check_keys(&mut c, schema, &valid, &mut suggested);
+    let Some(schema) = schema else {
         return Err(c.finish());
     };
-    let complete = check_required(&mut c, room, &suggested);
+    let complete = check_required(&mut c, schema, &suggested);
     let timer = timer(&mut c);
     let reload_offset = c.ranged(Key::RELOAD_OFFSET, "an integer number of ticks", |v| {
         i32::try_from(v).map_err(|_| {
@@ -82,7 +82,7 @@ pub fn read<L: Clone>(
             "`compress` and `segments` are two layouts of the table: give one".to_string(),
         );
     }
-    let curve = (room.read)(&mut c);
+    let curve = (schema.read)(&mut c);
     let motor = motor(&mut c, &suggested);
     let (Some(curve), Some(timer), true, true) = (curve, timer, complete, c.diagnostics.is_empty())
     else {
@@ -99,9 +99,9 @@ pub fn read<L: Clone>(
             reload_offset: reload_offset.unwrap_or(0),
         },
         layout: match (segments, compress) {
-            (Some(n), _) => Layout::Segments(n),
-            (None, Some(e)) => Layout::Runs(e),
-            (None, None) => Layout::Steps,
+            (Some(n), _) => TableLayout::Segments(n),
+            (None, Some(e)) => TableLayout::Runs(e),
+            (None, None) => TableLayout::Steps,
         },
         motor,
     })
@@ -144,7 +144,7 @@ pub(crate) fn value_problems<L: Clone + PartialEq>(
 }
 
 /// The curve the arguments name, so that its keys are known.
-fn curve<L: Clone>(c: &mut Collector<'_, L>) -> Option<&'static Room> {
+fn curve<L: Clone>(c: &mut Collector<'_, L>) -> Option<&'static CurveSchema> {
     let names = curve_names();
     let Some((i, arg)) = c.find(Key::CURVE) else {
         c.at_whole(format!(
@@ -154,8 +154,8 @@ fn curve<L: Clone>(c: &mut Collector<'_, L>) -> Option<&'static Room> {
         return None;
     };
     let message = match &arg.value {
-        Value::Name(n) => match Room::named(n) {
-            Some(room) => return Some(room),
+        Value::Name(n) => match CurveSchema::named(n) {
+            Some(schema) => return Some(schema),
             None => format!(
                 "`curve` must be one of {} (got `{n}`){}",
                 quoted(names.clone()),
@@ -176,7 +176,7 @@ fn curve<L: Clone>(c: &mut Collector<'_, L>) -> Option<&'static Room> {
 /// to `suggested`: it is not missing too.
 fn check_keys<L: Clone>(
     c: &mut Collector<'_, L>,
-    room: Option<&Room>,
+    schema: Option<&CurveSchema>,
     valid: &[Key],
     suggested: &mut Vec<Key>,
 ) {
@@ -194,11 +194,11 @@ fn check_keys<L: Clone>(
                 c.at_arg(i, true, message);
             }
             Some(key) => {
-                if let Some(room) = room {
+                if let Some(schema) = schema {
                     if !valid.contains(&key) {
                         let message = format!(
                             "`{key}` does not apply to `curve = {}`, which takes {}",
-                            room.name,
+                            schema.name,
                             quoted(listed(valid))
                         );
                         c.at_arg(i, true, message);
@@ -215,8 +215,12 @@ fn check_keys<L: Clone>(
 /// Missing keys, and the curve's pair of which exactly one is given. Whether
 /// every required key is there (a near miss covered elsewhere is still
 /// absent: the spec cannot be built, whatever else is right).
-fn check_required<L: Clone>(c: &mut Collector<'_, L>, room: &Room, suggested: &[Key]) -> bool {
-    let mut required = room.required.to_vec();
+fn check_required<L: Clone>(
+    c: &mut Collector<'_, L>,
+    schema: &CurveSchema,
+    suggested: &[Key],
+) -> bool {
+    let mut required = schema.required.to_vec();
     required.push(Key::TIMER_HZ);
     let missing: Vec<Key> = required
         .iter()
@@ -229,11 +233,11 @@ fn check_required<L: Clone>(c: &mut Collector<'_, L>, room: &Room, suggested: &[
         c.at_whole(format!(
             "missing {plural} {}: `curve = {}` needs {}",
             quoted(missing.iter().map(|k| k.name())),
-            room.name,
+            schema.name,
             quoted(required.iter().map(|k| k.name()))
         ));
     }
-    if let Some([a, b]) = room.one_of {
+    if let Some([a, b]) = schema.one_of {
         match (c.find(a).map(|(i, _)| i), c.find(b).map(|(i, _)| i)) {
             (Some(i), Some(j)) => c.at_arg(
                 i.max(j),
@@ -243,7 +247,7 @@ fn check_required<L: Clone>(c: &mut Collector<'_, L>, room: &Room, suggested: &[
             (None, None) if !suggested.contains(&a) && !suggested.contains(&b) => {
                 c.at_whole(format!(
                     "missing key: `curve = {}` needs one of `{a}` and `{b}`",
-                    room.name
+                    schema.name
                 ))
             }
             _ => {}

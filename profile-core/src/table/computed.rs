@@ -1,4 +1,5 @@
-//! Owned tables, for hosts: a table in its layout, with its spec and figures.
+//! Computed tables, for hosts: a table in its layout, held with its spec
+//! and figures (`Table`, `SegmentTable`, `RunTable` in `Generated`).
 
 use std::vec::Vec;
 
@@ -31,6 +32,7 @@ impl Table {
 /// A generated segment table (the exponential-ramp article's layout) with
 /// its spec and figures.
 #[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct SegmentTable {
     /// What the table was computed from.
     pub spec: Spec,
@@ -54,6 +56,7 @@ impl SegmentTable {
 
 /// A generated table in one of its layouts.
 #[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
 pub enum Generated {
     /// One period per step.
     Steps(Table),
@@ -65,6 +68,7 @@ pub enum Generated {
 
 /// What a compact layout (segments or runs) amounts to, whichever it is.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct Compact {
     /// The layout: `"segments"` or `"runs"`.
     pub kind: &'static str,

@@ -25,7 +25,7 @@
 //!
 //! ```no_run
 //! // build.rs, in `fn main`:
-//! if let Some(profiles) = profile_core::build::build_script("profiles.toml") {
+//! if let Some(profiles) = profile_core::profiles::build_script("profiles.toml") {
 //!     // Optional: a C header too, under OUT_DIR.
 //!     profiles.write_c_header("profiles.h").expect("OUT_DIR is writable");
 //! }
@@ -43,8 +43,9 @@ use std::vec::Vec;
 
 use proc_macro2::TokenStream;
 
+use crate::emit;
+pub use crate::emit::Profile;
 pub use crate::emit::c::{CStyle, CStyleError, Split};
-use crate::emit::{self, Profile};
 use crate::pipeline::{self, Budget, Options};
 
 mod file;
