@@ -117,7 +117,7 @@ pub struct Player<'a, W, L = AnyLayout> {
     /// The first acceleration step faster than `decel_fastest`.
     cap: u32,
     cruise: u32,
-    /// The ramps' slack added ([`Ramp::slack`]): how far from ordered
+    /// The ramps' slack added ([`search::slack`]): how far from ordered
     /// slow to fast they are, for planning's searches.
     slack: u32,
     /// The acceleration ramp's alone.
@@ -194,9 +194,9 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             decel_fastest,
             cap: accel.first_faster_than(decel_fastest),
             cruise: accel_last,
-            slack: accel.slack().saturating_add(decel.slack()),
-            accel_slack: accel.slack(),
-            decel_slack: decel.slack(),
+            slack: search::slack(&accel).saturating_add(search::slack(&decel)),
+            accel_slack: search::slack(&accel),
+            decel_slack: search::slack(&decel),
             tops: [
                 Cursor::at(&accel, accel_last),
                 Cursor::at(&decel, decel.len_steps().saturating_sub(1)),

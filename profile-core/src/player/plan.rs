@@ -167,7 +167,7 @@ pub(crate) struct Sides<'a, W> {
     /// The first acceleration step faster than `decel_fastest`.
     pub(crate) cap: u32,
     pub(crate) cruise: u32,
-    /// The two ramps' slack ([`Ramp::slack`]) added: a deceleration step
+    /// The two ramps' slack ([`search::slack`]) added: a deceleration step
     /// that far faster than the acceleration side has every step before it
     /// faster too.
     pub(crate) slack: u32,

@@ -140,34 +140,6 @@ impl<'a, W: TableWord> Ramp<'a, W> {
         .unwrap_or(0)
     }
 
-    /// The most a step's period exceeds the shortest period before it, in
-    /// ticks: 0 for a ramp ordered slow to fast, a tick or so for a table
-    /// rounded by diffusion (neighbours may differ by a tick either way).
-    /// With it a search along the ramp by period is exact: no step after
-    /// one whose period is more than `slack` ticks below a value reaches
-    /// that value ([`search`](super::search)).
-    pub(crate) fn slack(&self) -> u32 {
-        fn rise(periods: impl Iterator<Item = u32>) -> u32 {
-            let mut fastest = u32::MAX;
-            let mut rise = 0u32;
-            for p in periods {
-                rise = rise.max(p.saturating_sub(fastest));
-                fastest = fastest.min(p);
-            }
-            rise
-        }
-        match *self {
-            Ramp::Steps { periods, .. } => rise(periods.iter().map(|p| p.into_ticks())),
-            Ramp::Segments(pairs) => rise(
-                pairs
-                    .iter()
-                    .filter(|p| p.1.into_ticks() > 0)
-                    .map(|p| p.0.into_ticks()),
-            ),
-            Ramp::Runs(runs) => rise(Expand::new(runs)),
-        }
-    }
-
     /// The first step whose period is shorter than `ticks`, or `u32::MAX`.
     pub(crate) fn first_faster_than(&self, ticks: u32) -> u32 {
         let Some(mut c) = Cursor::at(self, 0) else {

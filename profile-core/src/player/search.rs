@@ -15,6 +15,10 @@
 //! reads are the bisection's and the steps within the slack of the
 //! boundary.
 
+use super::ramp::Ramp;
+use crate::base::timer::TableWord;
+use crate::table::runs::Expand;
+
 /// A step just past the steps that `before` rules out: bisects `lo..hi`
 /// for a step `j` such that `before(j - 1)` holds (or `j == lo`) and
 /// `before(j)` does not (or `j == hi`). `before(j)` must say that step `j`
@@ -30,6 +34,34 @@ pub(crate) fn past(mut lo: u32, mut hi: u32, before: &mut impl FnMut(u32) -> boo
         }
     }
     lo
+}
+
+/// The most a step's period exceeds the shortest period before it, in
+/// ticks: 0 for a ramp ordered slow to fast, a tick or so for a table
+/// rounded by diffusion (neighbours may differ by a tick either way).
+/// With it a search along the ramp by period is exact: no step after
+/// one whose period is more than `slack` ticks below a value reaches
+/// that value ([`past`]).
+pub(crate) fn slack<W: TableWord>(ramp: &Ramp<'_, W>) -> u32 {
+    fn rise(periods: impl Iterator<Item = u32>) -> u32 {
+        let mut fastest = u32::MAX;
+        let mut rise = 0u32;
+        for p in periods {
+            rise = rise.max(p.saturating_sub(fastest));
+            fastest = fastest.min(p);
+        }
+        rise
+    }
+    match *ramp {
+        Ramp::Steps { periods, .. } => rise(periods.iter().map(|p| p.into_ticks())),
+        Ramp::Segments(pairs) => rise(
+            pairs
+                .iter()
+                .filter(|p| p.1.into_ticks() > 0)
+                .map(|p| p.0.into_ticks()),
+        ),
+        Ramp::Runs(runs) => rise(Expand::new(runs)),
+    }
 }
 
 #[cfg(test)]
