@@ -254,3 +254,39 @@ fn a_target_behind_reverses_at_rest() {
     );
     assert_eq!(axis.position(), 2);
 }
+
+/// Through [`Buffered`](profile_core::player::Buffered), one period ahead
+/// of the pin: at every step taken, the pin's position moves by one in the
+/// direction the stepper says for that step, across a reversal too, and
+/// ends at the target.
+#[test]
+fn buffered_axes_say_the_pins_direction_at_a_reversal() {
+    use profile_core::player::Buffered;
+    static RAMP: [u16; 4] = [4000, 3000, 2000, 1500];
+    for turn_at in 0..12 {
+        for target in [-3i64, 2, 5, 40] {
+            let mut stepper = Buffered::new(Axis::new(Player::new(Ramp::steps(&RAMP)), 0));
+            let (dir, first, _) = stepper.move_to(30);
+            assert_eq!((dir, first.is_some()), (Direction::Forward, true));
+            // The first step is taken at the start.
+            let mut pin = 1i64;
+            assert_eq!(stepper.position(), 1);
+            for k in 0..200 {
+                if k == turn_at {
+                    stepper.move_to(target);
+                }
+                if !stepper.step(|_| {}) {
+                    break;
+                }
+                pin += stepper.direction().sign();
+                assert_eq!(
+                    stepper.position(),
+                    pin,
+                    "turn at {turn_at}, to {target}, step {k}"
+                );
+            }
+            assert_eq!(pin, target, "turn at {turn_at}");
+            assert!(stepper.is_done());
+        }
+    }
+}
