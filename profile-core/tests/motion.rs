@@ -260,7 +260,7 @@ fn a_target_behind_reverses_at_rest() {
 /// direction the stepper says for that step, across a reversal too, and
 /// ends at the target.
 #[test]
-fn buffered_axes_say_the_pins_direction_at_a_reversal() {
+fn through_buffered_the_pins_direction_follows_a_reversal() {
     use profile_core::player::Buffered;
     static RAMP: [u16; 4] = [4000, 3000, 2000, 1500];
     for turn_at in 0..12 {
