@@ -4,3 +4,5 @@
 
 pub use profile_core::*;
 pub use profile_macros::{include_profiles, period_table};
+
+pub mod guide;

@@ -1,0 +1,10 @@
+//! The guide: what the front page leaves out, one page per subject, each
+//! example compiled and run by `cargo test --doc`.
+//!
+//! These modules hold no items, only their pages. The measurements (the
+//! player's instructions per step on Cortex-M, generation on the host, build
+//! cost) are in the repository's
+//! [`docs/performance.md`](https://github.com/stepper-profiles/stepper-profiles/blob/main/docs/performance.md).
+
+#[doc = include_str!("guide/motor.md")]
+pub mod motor {}
