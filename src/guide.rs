@@ -8,3 +8,6 @@
 
 #[doc = include_str!("guide/motor.md")]
 pub mod motor {}
+
+#[doc = include_str!("guide/firmware.md")]
+pub mod firmware {}
