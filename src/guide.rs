@@ -11,3 +11,9 @@ pub mod motor {}
 
 #[doc = include_str!("guide/firmware.md")]
 pub mod firmware {}
+
+#[doc = include_str!("guide/command_line.md")]
+pub mod command_line {}
+
+#[doc = include_str!("guide/c_output.md")]
+pub mod c_output {}
