@@ -6,6 +6,9 @@
 //! cost) are in the repository's
 //! [`docs/performance.md`](https://github.com/stepper-profiles/stepper-profiles/blob/main/docs/performance.md).
 
+#[doc = include_str!("guide/compression.md")]
+pub mod compression {}
+
 #[doc = include_str!("guide/motor.md")]
 pub mod motor {}
 
