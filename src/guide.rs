@@ -9,6 +9,9 @@
 #[doc = include_str!("guide/compression.md")]
 pub mod compression {}
 
+#[doc = include_str!("guide/golden_tests.md")]
+pub mod golden_tests {}
+
 #[doc = include_str!("guide/motor.md")]
 pub mod motor {}
 
