@@ -6,6 +6,9 @@
 //! cost) are in the repository's
 //! [`docs/performance.md`](https://github.com/stepper-profiles/stepper-profiles/blob/main/docs/performance.md).
 
+#[doc = include_str!("guide/tables.md")]
+pub mod tables {}
+
 #[doc = include_str!("guide/profiles_file.md")]
 pub mod profiles_file {}
 
