@@ -40,3 +40,5 @@ pub use profile_core::profiles;
 pub use profile_core::golden;
 
 pub use profile_macros::{include_profiles, period_table};
+
+pub mod guide;

@@ -1,4 +1,4 @@
-//! `profiles::build_script` in a user's crate, as the README shows it: a
+//! `profiles::build_script` in a user's crate, as the README and the guide show it: a
 //! scratch crate under `CARGO_TARGET_TMPDIR/build-script-user` depending on
 //! this package by path. A bad `profiles.toml` fails `cargo build` with
 //! cargo's own `error:` lines (location, source line, caret); a good one

@@ -194,7 +194,7 @@ fn prefix(profiles: &Profiles) -> String {
         .unwrap()
         .to_string_lossy()
         .to_lowercase();
-    // Stems that are no C identifier, as the README names their prefixes.
+    // Stems that are no C identifier, as the C output page names their prefixes.
     match stem.as_str() {
         "3d_printer" => "profiles_3d_printer".to_string(),
         "é" | "__" => "profiles".to_string(),

@@ -923,7 +923,7 @@ fn electromagnetic_damping_calms_the_swing_the_check_cannot_see() {
     let d = 2.0 * 0.1 * (k * (5.4e-6f64 + 2.0e-5)).sqrt();
     assert!((damped.field_damping() - d).abs() < 1e-15);
     assert!((damped.stiffness() - k).abs() < 1e-9);
-    // What the check says of these moves undamped (the README's figures).
+    // What the check says of these moves undamped (the motor page's figures).
     for accel in [
         100_000.0, 120_000.0, 140_000.0, 160_000.0, 180_000.0, 200_000.0,
     ] {
@@ -981,7 +981,7 @@ fn verdict(source: &str) -> Result<(), String> {
         .map_err(|e| e.to_string())
 }
 
-/// The README's 17HS-like windings, undamped unless `extra` says otherwise.
+/// The motor page's 17HS-like windings, undamped unless `extra` says otherwise.
 fn windings_17hs(extra: &str) -> String {
     format!(
         "step_angle = 1.8\nrotor_inertia = 5.4e-6\nresistance = 1.65\ninductance = 2.8e-3\n\

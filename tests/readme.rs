@@ -1,5 +1,8 @@
-//! The README's examples that cannot run on the host are files CI builds:
-//! the README shows them as they are.
+//! The README and the guide's pages (`src/guide/*.md`, rendered as
+//! `stepper_profiles::guide`; their Rust examples are doc tests): the
+//! examples that cannot run on the host are files CI builds, shown as they
+//! are, every page is a module of the guide, and every link to one names a
+//! page that exists.
 
 use std::fs;
 use std::path::Path;
@@ -8,35 +11,60 @@ fn root() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
 }
 
-/// The step-interrupt firmware in the README is
+/// The step-interrupt firmware in the guide's firmware page is
 /// `examples/firmware/examples/step_interrupt.rs`, which CI builds for a
 /// Cortex-M3.
 #[test]
 fn the_step_interrupt_example_is_the_file_ci_builds() {
-    let readme = fs::read_to_string(root().join("README.md")).unwrap();
+    let readme = read("src/guide/firmware.md");
     let file =
         fs::read_to_string(root().join("examples/firmware/examples/step_interrupt.rs")).unwrap();
     let block = readme
         .split("```rust,ignore\n")
         .find(|b| b.contains("fn SysTick()"))
         .and_then(|b| b.split("\n```").next())
-        .expect("a `rust,ignore` block with the SysTick handler in the README");
+        .expect("a `rust,ignore` block with the SysTick handler in src/guide/firmware.md");
     assert_eq!(
         block.trim_end(),
         file.trim_end(),
-        "the README's step interrupt differs from examples/firmware/examples/step_interrupt.rs"
+        "the guide's step interrupt differs from examples/firmware/examples/step_interrupt.rs"
     );
 }
 
-/// Every figure the README shows is in `docs/` (the README links them by
-/// their address on the main branch), and every figure there is shown.
+/// The README and the pages it sends readers to: the guide's pages, which
+/// rustdoc renders as `stepper_profiles::guide`, and the notes in `docs/`.
+fn pages() -> Vec<(String, String)> {
+    let mut pages = vec![("README.md".to_string(), read("README.md"))];
+    for dir in ["src/guide", "docs"] {
+        let mut names: Vec<String> = fs::read_dir(root().join(dir))
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .filter(|name| name.ends_with(".md"))
+            .collect();
+        names.sort_unstable();
+        for name in names {
+            let path = format!("{dir}/{name}");
+            let text = read(&path);
+            pages.push((path, text));
+        }
+    }
+    pages
+}
+
+fn read(path: &str) -> String {
+    fs::read_to_string(root().join(path)).unwrap_or_else(|e| panic!("{path}: {e}"))
+}
+
+/// Every figure the README and its pages show is in `docs/` (they link them
+/// by their address on the main branch, which renders on GitHub and on
+/// docs.rs alike), and every figure there is shown.
 #[test]
-fn the_readme_figures_are_in_docs() {
-    let readme = fs::read_to_string(root().join("README.md")).unwrap();
+fn the_documented_figures_are_in_docs() {
     let prefix = "https://raw.githubusercontent.com/stepper-profiles/stepper-profiles/main/docs/";
-    let mut shown: Vec<&str> = readme
-        .split(prefix)
-        .skip(1)
+    let pages = pages();
+    let mut shown: Vec<&str> = pages
+        .iter()
+        .flat_map(|(_, text)| text.split(prefix).skip(1))
         .map(|rest| rest.split(')').next().unwrap())
         .collect();
     shown.sort_unstable();
@@ -44,7 +72,60 @@ fn the_readme_figures_are_in_docs() {
     let mut files: Vec<String> = fs::read_dir(root().join("docs"))
         .unwrap()
         .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|name| !name.ends_with(".md"))
         .collect();
     files.sort_unstable();
     assert_eq!(shown, files);
+}
+
+/// The names of the guide's pages, `src/guide/NAME.md`, sorted.
+fn guide_pages() -> Vec<String> {
+    pages()
+        .into_iter()
+        .filter_map(|(path, _)| {
+            let name = path.strip_prefix("src/guide/")?.strip_suffix(".md")?;
+            Some(name.to_string())
+        })
+        .collect()
+}
+
+/// Every page in `src/guide` is a module of `src/guide.rs`, so that rustdoc
+/// renders it and runs its examples; every module there is a page.
+#[test]
+fn every_guide_page_is_a_module() {
+    let modules = read("src/guide.rs");
+    let mut included: Vec<String> = modules
+        .split("include_str!(\"guide/")
+        .skip(1)
+        .map(|rest| rest.split(".md\")").next().unwrap().to_string())
+        .collect();
+    included.sort_unstable();
+    let pages = guide_pages();
+    assert_eq!(included, pages);
+    for page in &pages {
+        assert!(
+            modules.contains(&format!(
+                "include_str!(\"guide/{page}.md\")]\npub mod {page} {{}}"
+            )),
+            "src/guide/{page}.md is not the page of `pub mod {page}`"
+        );
+    }
+}
+
+/// The README links each page by its address on docs.rs (which works on
+/// GitHub, crates.io and docs.rs alike); every such link names a page of
+/// the guide, and every page of the guide is linked from the README.
+#[test]
+fn the_readme_links_every_guide_page() {
+    let readme = read("README.md");
+    let prefix = "https://docs.rs/stepper-profiles/latest/stepper_profiles/guide/";
+    let mut linked: Vec<&str> = readme
+        .split(prefix)
+        .skip(1)
+        .map(|rest| rest.split("/index.html").next().unwrap())
+        .collect();
+    linked.sort_unstable();
+    linked.dedup();
+    let pages = guide_pages();
+    assert_eq!(linked, pages, "the guide's pages linked from README.md");
 }

@@ -1,5 +1,5 @@
 //! The files behind the plots: an SVG and a CSV per profile, the torque of
-//! each motor-bound profile, an overview; and the README's figures.
+//! each motor-bound profile, an overview; and the figures the README and the guide show.
 
 use std::path::Path;
 
@@ -197,7 +197,7 @@ pub fn write_plots(
     Ok(())
 }
 
-/// The README's figures: the S-curve article's four example calls, three
+/// The figures the README and the guide show (`docs/`): the S-curve article's four example calls, three
 /// discretizations of one curve, the motor check of the worked example and
 /// the compressed microstep ramp over its curve.
 pub fn write_docs(
@@ -254,7 +254,7 @@ pub fn write_docs(
         "One sigmoid (500 -> 64000 Hz, 1000 steps, flexible 8), three discretizations",
         &sides,
     )?;
-    // The README's worked example: a real motor on the jerk-limited ramp.
+    // The motor page's worked example: a real motor on the jerk-limited ramp.
     let Some(worked) = profiles
         .profiles()
         .iter()

@@ -50,7 +50,7 @@ enum Command {
         /// Also write the plots, a CSV per profile and `profiles.h` into DIR
         #[arg(short, long, value_name = "DIR")]
         out: Option<PathBuf>,
-        /// Regenerate the README's figures into DIR (needs the shipped file)
+        /// Regenerate the guide's figures (docs/) into DIR (needs the shipped file)
         #[arg(long, value_name = "DIR", hide = true)]
         docs: Option<PathBuf>,
     },
@@ -160,10 +160,10 @@ fn run(command: Command) -> Result<(), Failure> {
             if let Some(docs) = docs {
                 let mut files = Staging::new(&docs)?;
                 files::write_docs(&profiles, &mut files)
-                    .map_err(|e| format!("cannot write the README's figures: {e}"))?;
+                    .map_err(|e| format!("cannot write the guide's figures: {e}"))?;
                 files.commit()?;
                 stdout(&format!(
-                    "wrote the README's figures to {}\n",
+                    "wrote the guide's figures to {}\n",
                     docs.display()
                 ))?;
             }

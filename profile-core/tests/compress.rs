@@ -62,7 +62,7 @@ fn short_sigmoid() -> Spec {
     )
 }
 
-/// The README's table: `cargo test -p profile-core --features std --test
+/// The table of the guide's compression page: `cargo test -p profile-core --features std --test
 /// compress -- --nocapture` prints it.
 #[test]
 fn the_goals_flash_ratios_hold() {

@@ -1,7 +1,7 @@
 //! The header's C player on an ATmega328P, in simavr, checked at the pin.
 //!
 //! Writes `ramps.h` from `ramps.toml` with `PROGMEM` tables, checks that it
-//! and the README's AVR example compile as C89 with avr-gcc, builds
+//! and the guide's AVR example compile as C89 with avr-gcc, builds
 //! `client.c` twice (the per-step
 //! table with `ramps_player_*`, the compressed ramp with
 //! `ramps_runs_player_*`) and the harness `sim.c` against libsimavr, and runs
@@ -180,16 +180,17 @@ fn run() -> Result<bool, String> {
     Ok(pass)
 }
 
-/// The README's AVR example (the C block with `ramps_player_step`) compiles
-/// against the same header, as C89.
+/// The guide's AVR example (`src/guide/c_output.md`, the C block with
+/// `ramps_player_step`) compiles against the same header, as C89.
 fn readme_example(manifest: &Path, dir: &Path) -> Result<(), String> {
-    let readme = fs::read_to_string(manifest.join("../../README.md")).map_err(|e| e.to_string())?;
+    let readme = fs::read_to_string(manifest.join("../../src/guide/c_output.md"))
+        .map_err(|e| e.to_string())?;
     let example = readme
         .split("```c\n")
         .skip(1)
         .filter_map(|block| block.split("```").next())
         .find(|block| block.contains("ISR(TIMER1_COMPA_vect)"))
-        .ok_or("the README has no C block with the step interrupt")?;
+        .ok_or("src/guide/c_output.md has no C block with the step interrupt")?;
     fs::write(dir.join("readme.c"), example).map_err(|e| e.to_string())?;
     tools::run(
         Command::new("avr-gcc").args([
@@ -205,7 +206,7 @@ fn readme_example(manifest: &Path, dir: &Path) -> Result<(), String> {
             "readme.c",
         ]),
         dir,
-        "avr-gcc on the README's example",
+        "avr-gcc on the guide's example",
     )?;
     Ok(())
 }

@@ -1,4 +1,4 @@
-//! The figures of the README's performance table, on the core this is built
+//! The figures of `docs/performance.md`'s table, on the core this is built
 //! for: instructions per step of a step interrupt's work, counted in QEMU's
 //! instruction trace between two marker functions (`measure.sh`).
 //!
