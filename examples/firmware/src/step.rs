@@ -26,7 +26,7 @@ use cortex_m::peripheral::SYST;
 use cortex_m::peripheral::syst::SystClkSource;
 use cortex_m_rt::exception;
 use critical_section::Mutex;
-use stepper_profiles::player::{Buffered, Compressed, Player};
+use stepper_profiles::player::{Axis, Buffered, Compressed, Direction, Player};
 
 use crate::moves::Event;
 
@@ -49,10 +49,12 @@ pub const CLOCK_PER_TICK: u32 = 1;
 pub static STAMPS: Mutex<RefCell<[u32; MAX_STEPS]>> = Mutex::new(RefCell::new([0; MAX_STEPS]));
 
 /// The player the interrupt plays from, for SysTick's buffered reload: of
-/// any layout, or of compressed tables only.
+/// any layout, or of compressed tables only, or an axis with the position
+/// its move goes to.
 pub enum Players {
     Any(Buffered<Player<'static, u16>>),
     Compressed(Buffered<Player<'static, u16, Compressed>>),
+    Axis(Buffered<Axis<'static, u16>>, i64),
 }
 
 /// `$body` on whichever player `$players` holds, bound to `$p`.
@@ -61,14 +63,31 @@ macro_rules! with_player {
         match $players {
             Players::Any($p) => $body,
             Players::Compressed($p) => $body,
+            Players::Axis($p, _) => $body,
         }
     };
 }
 
 impl Players {
-    /// Starts a move: the first two periods.
+    /// Starts a move: the first two periods. An axis moves to its target
+    /// (`steps` is the model's).
     pub fn start(&mut self, steps: u32) -> (Option<u16>, Option<u16>) {
-        with_player!(self, p => p.start(steps))
+        match self {
+            Players::Any(p) => p.start(steps),
+            Players::Compressed(p) => p.start(steps),
+            Players::Axis(p, target) => match p.move_to(*target) {
+                Ok((_, first, next)) => (first, next),
+                Err(_) => (None, None),
+            },
+        }
+    }
+
+    /// An axis's position at the pin and direction.
+    pub fn axis(&self) -> Option<(i64, Direction)> {
+        match self {
+            Players::Axis(p, _) => Some((p.position(), p.inner().direction())),
+            _ => None,
+        }
     }
 
     /// Periods of the move not yet loaded: what the model counts.
