@@ -1,5 +1,6 @@
 //! The step interrupt itself, measured from SysTick's vector to its
-//! exception return: the pattern of the README's step interrupt.
+//! exception return: the README's step interrupt (its handler compiles to
+//! the same instructions).
 //!
 //! `main` hands the stepper (the [`Buffered`] player and SysTick) to the
 //! handler by enabling SysTick's interrupt, and takes it back once the
@@ -63,6 +64,7 @@ impl<T> Handover<T> {
 }
 
 /// What the step interrupt owns while a move plays.
+///
 /// The registers' addresses are held with the player, the reload
 /// register's just before it: the handler loads it with the player's first
 /// word in one `ldrd`, and the pin's register and bit in another, where
@@ -89,8 +91,9 @@ static MOVING: AtomicBool = AtomicBool::new(false);
 
 /// Stands for the step pin's toggle register (a SAM's `OUTTGL`, a Kinetis
 /// `PTOR`, the RP2040's `GPIO_OUT_XOR`): one store of the pin's bit toggles
-/// it. Here a word of the LM3S6965's and the MPS2's address space that
-/// takes the store and does nothing.
+/// it. Here an address whose store changes nothing the measurement reads:
+/// the LM3S6965's GPIO port B direction register, a word the MPS2's UART 1
+/// ignores.
 const STEP_PIN_TOGGLE: *mut u32 = 0x4000_5400 as *mut u32;
 
 #[exception]
