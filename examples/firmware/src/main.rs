@@ -3,9 +3,9 @@
 //!
 //! The moves play from a real step interrupt: SysTick's exception handler
 //! (`step.rs`) takes each period from a [`Buffered`](stepper_profiles::player::Buffered)
-//! player (SysTick's reload register takes effect at the next wrap) held in
-//! a `critical_section::Mutex`, loads it and toggles the step pin; the main
-//! program starts each move and waits. Every step is stamped by a clock the
+//! player (SysTick's reload register takes effect at the next wrap) handed
+//! to it for each move, loads it and toggles the step pin; the main program
+//! starts each move and waits in a poll loop. Every step is stamped by a clock the
 //! player does not drive (the MPS2's CMSDK timer 0, on SysTick's 25 MHz
 //! clock), and each step's time from the move's start must be the sum of
 //! the periods loaded before it, to the tick. The moves cover a trapezoid,

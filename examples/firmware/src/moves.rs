@@ -4,7 +4,7 @@
 
 use cortex_m::peripheral::SYST;
 use cortex_m_semihosting::hprintln;
-use stepper_profiles::player::{Buffered, Player, Ramp};
+use stepper_profiles::player::{Axis, Buffered, Direction, Player, Ramp};
 
 use crate::profiles::{exponential_segments, microstep_runs, sigmoid_exact, sigmoid_orange};
 use crate::step::{self, Players, Stepper};
@@ -218,6 +218,9 @@ pub struct Move<'a> {
     /// Played by `Player::compressed` (both ramps are runs), else by
     /// `Player::with_decel`.
     pub compressed: bool,
+    /// Played by a `Buffered<Axis>` at the first position, moved to the
+    /// second (`steps` apart).
+    pub axis: Option<(i64, i64)>,
 }
 
 /// What a move amounted to.
@@ -247,6 +250,11 @@ pub fn play(
     report: &mut Report,
 ) -> (Played, SYST, &'static mut [u16; step::MAX_STEPS]) {
     let player = match (m.compressed, m.accel, m.decel) {
+        _ if m.axis.is_some() => {
+            let (from, to) = m.axis.unwrap_or_default();
+            let player = Player::with_decel(m.accel.ramp(), m.decel.ramp());
+            Players::Axis(Buffered::new(Axis::new(player, from)), to)
+        }
         (true, Table::Runs(a), Table::Runs(d)) => {
             Players::Compressed(Buffered::new(Player::compressed_with_decel(a, d)))
         }
@@ -318,6 +326,7 @@ pub fn play(
         u64::from(s.toggles),
         u64::from(out.steps),
     );
+    check_axis(m, &s.player, out.steps, report);
     check_pin(
         m.name,
         &s.log[..s.steps.min(step::MAX_STEPS)],
@@ -333,6 +342,22 @@ pub fn play(
         out.last
     );
     (out, s.timer, s.log)
+}
+
+/// An axis's move: at its target after the move, having turned the way
+/// from its start to the target, one position per step.
+fn check_axis(m: &Move<'static>, player: &Players, steps: u32, report: &mut Report) {
+    let (Some((from, to)), Some((position, direction))) = (m.axis, player.axis()) else {
+        return;
+    };
+    let want = if to < from {
+        Direction::Backward
+    } else {
+        Direction::Forward
+    };
+    report.equal("axis position after the move", position as u64, to as u64);
+    report.equal("axis direction", (direction == want).into(), 1);
+    report.equal("axis steps", steps.into(), from.abs_diff(to));
 }
 
 /// Every step, timed at the pin by the clock the player does not drive: step
@@ -410,7 +435,7 @@ impl Expect {
 /// trapezoid, a triangle, stops, a held ramp, the diffused default table,
 /// an asymmetric move, cruise changes, a segment table and compressed runs
 /// played by both players.
-fn scenarios() -> [Scenario<'static>; 15] {
+fn scenarios() -> [Scenario<'static>; 17] {
     // Monotone tables first: the C-compatible orange S-curve (truncated, so
     // its periods never rise).
     let o: &'static [u16] = &sigmoid_orange::PERIODS;
@@ -427,6 +452,7 @@ fn scenarios() -> [Scenario<'static>; 15] {
         steps,
         events,
         compressed: false,
+        axis: None,
     };
     // The default mode: diffused rounding keeps every pulse edge within half
     // a tick, so the table is not monotone near the top (156, 157, 156, ...);
@@ -628,6 +654,22 @@ fn scenarios() -> [Scenario<'static>; 15] {
                 &[(1500, Event::Cruise(500)), (3000, Event::Cruise(999))],
             ),
             expect: Expect::exact(steps, cruises, a_rest),
+        },
+        // An axis through `Buffered`: to 2500 from 0 (forward), then from
+        // there to -1500 (backward).
+        Scenario {
+            play: Move {
+                axis: Some((0, 2500)),
+                ..mv("axis forward (0 -> 2500)", exact, exact, 2500, &[])
+            },
+            expect: Expect::exact(2500, 2 * a_ticks + 500 * u64::from(a_top), a_rest),
+        },
+        Scenario {
+            play: Move {
+                axis: Some((2500, -1500)),
+                ..mv("axis backward (2500 -> -1500)", exact, exact, 4000, &[])
+            },
+            expect: Expect::exact(4000, 2 * a_ticks + 2000 * u64::from(a_top), a_rest),
         },
         Scenario {
             play: mv(

@@ -3,10 +3,11 @@
 //!
 //! SysTick's reload register takes effect at the next wrap, so the player is
 //! wrapped in [`Buffered`]: the first two periods are loaded at the start,
-//! and each interrupt loads the period after the interval now starting. The
-//! player and the timer live in a `critical_section::Mutex`, shared by the
-//! main program (which starts moves and waits) and the handler (which loads
-//! each period and toggles the step pin). For the checks the handler also
+//! and each interrupt loads the period after the interval now starting. As
+//! in the README's step interrupt, the main program hands the stepper (the
+//! player and the timer) to the handler for a move ([`Handover`]) and waits
+//! for the move's end in a poll loop; the handler loads each period and
+//! toggles the step pin, with no lock. For the checks the handler also
 //! records every period it loads and applies the move's events (a stop, a
 //! cruise change) before given periods.
 //!
@@ -19,14 +20,16 @@
 //! events they time, so each step's stamp is its time from the start, in
 //! ticks, exactly.
 
-use core::cell::RefCell;
+use core::cell::{RefCell, UnsafeCell};
+use core::mem::MaybeUninit;
 use core::ptr;
+use core::sync::atomic::{AtomicBool, Ordering};
 
 use cortex_m::peripheral::SYST;
 use cortex_m::peripheral::syst::SystClkSource;
 use cortex_m_rt::exception;
 use critical_section::Mutex;
-use stepper_profiles::player::{Axes, Buffered, Compressed, Player};
+use stepper_profiles::player::{Axes, Axis, Buffered, Compressed, Direction, Player};
 
 use crate::moves::Event;
 
@@ -54,12 +57,15 @@ pub static STAMPS: Mutex<RefCell<[u32; MAX_STEPS]>> = Mutex::new(RefCell::new([0
 pub static PINS: Mutex<RefCell<[u8; MAX_STEPS]>> = Mutex::new(RefCell::new([0; MAX_STEPS]));
 
 /// The player the interrupt plays from, for SysTick's buffered reload: of
-/// any layout, or of compressed tables only.
+/// any layout, or of compressed tables only, or an axis with the position
+/// its move goes to.
 pub enum Players {
     Any(Buffered<Player<'static, u16>>),
     Compressed(Buffered<Player<'static, u16, Compressed>>),
     /// Three axes and the move they make (steps on each).
     Axes(Buffered<Axes<'static, u16, 3>>, [i64; 3]),
+    /// An axis and the position its move goes to.
+    Axis(Buffered<Axis<'static, u16>>, i64),
 }
 
 /// `$body` on whichever player `$players` holds, bound to `$p`.
@@ -69,6 +75,7 @@ macro_rules! with_player {
             Players::Any($p) => $body,
             Players::Compressed($p) => $body,
             Players::Axes($p, _) => $body,
+            Players::Axis($p, _) => $body,
         }
     };
 }
@@ -84,6 +91,10 @@ impl Players {
                 let s = p.move_by(*delta);
                 return (s.first, s.next, s.mask);
             }
+            Players::Axis(p, target) => {
+                let (_, first, next) = p.move_to(*target);
+                (first, next)
+            }
         };
         (first, next, u32::from(first.is_some()))
     }
@@ -95,6 +106,15 @@ impl Players {
             Players::Any(p) => u32::from(p.step(load)),
             Players::Compressed(p) => u32::from(p.step(load)),
             Players::Axes(p, _) => p.step(load),
+            Players::Axis(p, _) => u32::from(p.step(load)),
+        }
+    }
+
+    /// An axis's position at the pin and direction.
+    pub fn axis(&self) -> Option<(i64, Direction)> {
+        match self {
+            Players::Axis(p, _) => Some((p.position(), p.direction())),
+            _ => None,
         }
     }
 
@@ -135,8 +155,48 @@ pub struct Stepper {
     pub finished: bool,
 }
 
-/// Shared by the main program and the step interrupt.
-pub static STEPPER: Mutex<RefCell<Option<Stepper>>> = Mutex::new(RefCell::new(None));
+/// A value the main program lends to the step interrupt: the main program
+/// uses it only while SysTick's interrupt is disabled, the handler only
+/// while it is enabled.
+pub struct Handover<T>(UnsafeCell<MaybeUninit<T>>);
+
+// SAFETY: one context at a time uses the value (the contracts below).
+unsafe impl<T: Send> Sync for Handover<T> {}
+
+impl<T> Handover<T> {
+    /// # Safety
+    /// From the main program while the interrupt is disabled, after `take`
+    /// (or before any `put`).
+    unsafe fn put(&self, value: T) {
+        unsafe { (*self.0.get()).write(value) };
+    }
+
+    /// # Safety
+    /// After `put`, from the handler while its interrupt is enabled; one
+    /// reference at a time.
+    #[allow(clippy::mut_from_ref)]
+    unsafe fn get(&self) -> &mut T {
+        unsafe { (*self.0.get()).assume_init_mut() }
+    }
+
+    /// # Safety
+    /// After `put`, from the main program while the interrupt is disabled;
+    /// the value is moved out (`put` again before the next `get`).
+    unsafe fn take(&self) -> T {
+        unsafe { (*self.0.get()).assume_init_read() }
+    }
+}
+
+// SAFETY: SysTick and the log are the program's, used by one context at a
+// time.
+unsafe impl Send for Stepper {}
+
+/// The stepper while a move plays: the step interrupt's.
+static STEPPER: Handover<Stepper> = Handover(UnsafeCell::new(MaybeUninit::uninit()));
+
+/// Set by the main program to start a move, cleared by the handler when it
+/// has disabled its interrupt at the move's end.
+static MOVING: AtomicBool = AtomicBool::new(false);
 
 /// Starts the free-running clock that stamps the steps.
 pub fn init_clock() {
@@ -176,11 +236,16 @@ pub fn step_pins() -> u32 {
 fn SysTick() {
     // First, at a fixed distance from the wrap: the time of this step.
     let now = clock();
-    critical_section::with(|cs| {
-        let mut stepper = STEPPER.borrow_ref_mut(cs);
-        let Some(s) = stepper.as_mut() else {
-            return;
-        };
+    // The interrupt is enabled before the stepper is handed over (to start
+    // SysTick at a tick of the clock): nothing to do until then. The first
+    // interval is far longer than the handover; a step missed would show
+    // at the pin.
+    if !MOVING.load(Ordering::Acquire) {
+        return;
+    }
+    // SAFETY: `MOVING` is set: the stepper is the handler's.
+    let s = unsafe { STEPPER.get() };
+    {
         let k = s.steps as u32;
         for (i, &(at, event)) in s.events.iter().enumerate() {
             if at == k {
@@ -206,20 +271,24 @@ fn SysTick() {
         let pins = s.player.step(load);
         if pins != 0 {
             toggle_step_pins(pins);
-            if let Some(stamp) = STAMPS.borrow_ref_mut(cs).get_mut(s.taken) {
-                *stamp = now;
-            }
-            if let Some(slot) = PINS.borrow_ref_mut(cs).get_mut(s.taken) {
-                *slot = pins as u8;
-            }
+            critical_section::with(|cs| {
+                if let Some(stamp) = STAMPS.borrow_ref_mut(cs).get_mut(s.taken) {
+                    *stamp = now;
+                }
+                if let Some(slot) = PINS.borrow_ref_mut(cs).get_mut(s.taken) {
+                    *slot = pins as u8;
+                }
+            });
             s.taken += 1;
             s.toggles += 1;
         } else {
             timer.disable_interrupt();
             timer.disable_counter();
             s.finished = true;
+            // The stepper is the main program's again.
+            MOVING.store(false, Ordering::Release);
         }
-    });
+    }
 }
 
 /// Plays a move the stepper's player has not started: starts it, loads the
@@ -260,12 +329,19 @@ pub fn run(mut stepper: Stepper, steps: u32) -> Stepper {
     });
     stepper.taken = 1;
     stepper.toggles = 1;
-    critical_section::with(|cs| STEPPER.borrow(cs).replace(Some(stepper)));
-    // Spin: under `-icount`, `wfi` would let the clock run past interrupts.
-    while !critical_section::with(|cs| STEPPER.borrow_ref(cs).as_ref().is_none_or(|s| s.finished)) {
+    // Hand the stepper to the interrupt.
+    // SAFETY: the handler returns at once while `MOVING` is clear, so the
+    // main program owns the stepper.
+    unsafe { STEPPER.put(stepper) };
+    MOVING.store(true, Ordering::Release);
+    // Spin: under `-icount`, `wfi` would let the clock run past interrupts
+    // (and QEMU leaves its loop at every `yield` of a spin loop hint).
+    while MOVING.load(Ordering::Acquire) {
+        cortex_m::asm::nop();
     }
-    // The handler has stopped the timer; take the stepper back.
-    critical_section::with(|cs| STEPPER.borrow(cs).replace(None)).expect("the stepper was set")
+    // SAFETY: the handler has disabled its interrupt and given the stepper
+    // back.
+    unsafe { STEPPER.take() }
 }
 
 /// Each step's time from the move's start, in ticks of the stamping clock:

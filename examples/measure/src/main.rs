@@ -15,18 +15,20 @@ use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprintln};
 use panic_semihosting as _;
 use stepgen::Stepgen;
-use stepper_profiles::player::{Axes, Axis, Compressed, Direction, Layout, Player, Ramp};
+use stepper_profiles::player::{Axes, Axis, Buffered, Compressed, Direction, Layout, Player, Ramp};
 
 /// The tables of the root `profiles.toml`.
 mod profiles {
     stepper_profiles::include_profiles!("../../profiles.toml");
 }
 
+mod handler;
+
 use profiles::{exponential_segments, microstep_runs, sigmoid_exact, sigmoid_orange};
 
 /// Steps of the measured move: up the ramp, cruise, down the ramp.
-const UP: u32 = sigmoid_exact::LEN as u32;
-const CRUISE: u32 = 3000;
+pub const UP: u32 = sigmoid_exact::LEN as u32;
+pub const CRUISE: u32 = 3000;
 
 /// Marks the start of a measured stretch in the instruction trace.
 #[inline(never)]
@@ -109,6 +111,67 @@ pub fn player_fill(player: &mut Player<'_, u16>, buf: &mut [u16]) -> usize {
 #[unsafe(no_mangle)]
 pub fn player_runs_fill(player: &mut Player<'_, u16, Compressed>, buf: &mut [u16]) -> usize {
     player.fill(buf)
+}
+
+// Buffered: the step functions of a player for a reload register that
+// takes effect at the next wrap (SysTick's), and their moves.
+
+/// For a buffered reload register: the period after the interval now
+/// starting into the reload register.
+#[inline(never)]
+#[unsafe(no_mangle)]
+pub fn buffered_step(player: &mut Buffered<Player<'_, u16>>, timer: &mut SYST) {
+    player.step(|period| timer.set_reload(u32::from(period)));
+}
+
+/// The same for a player of compressed tables.
+#[inline(never)]
+#[unsafe(no_mangle)]
+pub fn buffered_runs_step(player: &mut Buffered<Player<'_, u16, Compressed>>, timer: &mut SYST) {
+    player.step(|period| timer.set_reload(u32::from(period)));
+}
+
+/// The same for an axis.
+#[inline(never)]
+#[unsafe(no_mangle)]
+pub fn buffered_axis_step(axis: &mut Buffered<Axis<'_, u16>>, timer: &mut SYST) {
+    axis.step(|period| timer.set_reload(u32::from(period)));
+}
+
+/// The moves of the player, the compressed player and the axis, each
+/// wrapped in [`Buffered`]: two periods at the start, then one from each
+/// interrupt, the last two interrupts without.
+fn buffered_moves(timer: &mut SYST) {
+    let mut buffered = Buffered::new(Player::new(Ramp::steps(&sigmoid_exact::PERIODS)));
+    let _ = buffered.start(2 * UP + CRUISE);
+    phases(
+        "Buffered, per-step table (sigmoid_exact)",
+        (UP, CRUISE),
+        || buffered_step(&mut buffered, timer),
+    );
+    check(buffered.is_done(), "buffered player");
+    let up = microstep_runs::LEN as u32;
+    let mut buffered = Buffered::new(Player::compressed(&microstep_runs::RUNS));
+    let _ = buffered.start(2 * up + 1000);
+    phases(
+        "Buffered Player::compressed (microstep, compress = 1)",
+        (up, 1000),
+        || buffered_runs_step(&mut buffered, timer),
+    );
+    check(buffered.is_done(), "buffered compressed player");
+    let axis = Axis::new(Player::new(Ramp::steps(&sigmoid_exact::PERIODS)), 0);
+    let mut buffered = Buffered::new(axis);
+    let moved = buffered.move_by(-i64::from(2 * UP + CRUISE));
+    check(moved.0 == Direction::Backward, "buffered axis move");
+    phases(
+        "Buffered axis, per-step table (sigmoid_exact)",
+        (UP, CRUISE),
+        || buffered_axis_step(&mut buffered, timer),
+    );
+    check(
+        buffered.is_done() && buffered.position() == -i64::from(2 * UP + CRUISE),
+        "buffered axis position",
+    );
 }
 
 /// The peer: stepgen computes each delay (16.8 fixed point, rounded).
@@ -278,7 +341,7 @@ fn steps(label: &str, phase: &str, n: u32, mut step: impl FnMut()) {
 
 /// A move's three phases, `up` steps accelerating, `cruise` cruising and
 /// `up` decelerating, each measured on its own.
-fn phases(label: &str, (up, cruise): (u32, u32), mut step: impl FnMut()) {
+pub fn phases(label: &str, (up, cruise): (u32, u32), mut step: impl FnMut()) {
     for (phase, n) in [
         ("accelerating", up),
         ("cruising", cruise),
@@ -296,19 +359,39 @@ fn player_move(label: &str, ramp: Ramp<'_, u16>, (up, cruise): (u32, u32), timer
     check(player.is_done(), label);
 }
 
+/// A DMA buffer of `B` periods (`B` even) at a word's boundary, and one
+/// half a word past it.
+#[repr(C, align(4))]
+struct Buffers<const B: usize> {
+    word: [u16; B],
+    pad: u16,
+    half: [u16; B],
+}
+
 /// Periods of DMA buffers (ping-pong halves) filled per phase of a move of
 /// `up`, `cruise`, `up` steps, `B` periods a call; each phase a whole
-/// number of buffers. The buffer is read back, so that the writes count.
+/// number of buffers. The buffer is read back, so that the writes count;
+/// it starts at a word's boundary, or half a word past it (`half`).
 // Not inlined, so that the trace sees the loop (the buffer's sum included)
 // as the caller's own lines, not counted.
 #[inline(never)]
 fn fill_phases<const B: usize>(
     label: &str,
     (up, cruise): (u32, u32),
+    half: bool,
     mut fill: impl FnMut(&mut [u16]) -> usize,
 ) -> u32 {
-    let mut buf = [0u16; B];
-    let mut sum = 0u32;
+    let mut buffers = Buffers {
+        word: [0u16; B],
+        pad: 0,
+        half: [0u16; B],
+    };
+    let buf = if half {
+        &mut buffers.half
+    } else {
+        &mut buffers.word
+    };
+    let mut sum = u32::from(buffers.pad);
     for (phase, n) in [
         ("accelerating", up),
         ("cruising", cruise),
@@ -318,7 +401,7 @@ fn fill_phases<const B: usize>(
         hprintln!("measure: {} {}: {} periods", label, phase, n);
         measure_begin();
         for _ in 0..n / B as u32 {
-            let filled = fill(&mut buf);
+            let filled = fill(buf);
             for &p in &buf[..filled] {
                 sum = sum.wrapping_add(u32::from(p));
             }
@@ -343,7 +426,7 @@ fn last_run(runs: &[[u16; 5]]) -> u32 {
         .unwrap_or(0)
 }
 
-fn check(ok: bool, what: &str) {
+pub fn check(ok: bool, what: &str) {
     if !ok {
         hprintln!("FAIL {}", what);
         debug::exit(debug::EXIT_FAILURE);
@@ -402,6 +485,8 @@ fn main() -> ! {
         timer,
     );
 
+    buffered_moves(timer);
+
     // The same moves into DMA buffers: 40 periods a fill on the per-step
     // table, 62 on the runs (whole buffers in every phase), each filled
     // sum checked against the move's.
@@ -410,6 +495,7 @@ fn main() -> ! {
     let sum = fill_phases::<40>(
         "Player::fill, per-step table (sigmoid_exact)",
         (UP, CRUISE),
+        false,
         |b| player_fill(&mut player, b),
     );
     let whole = 2 * sigmoid_exact::TOTAL_TICKS as u32 + CRUISE * sigmoid_exact::LAST_TICKS;
@@ -417,6 +503,17 @@ fn main() -> ! {
         player.is_done() && sum == whole,
         "fill of the per-step table",
     );
+    // The same with the buffer half a word further: the copy does not
+    // depend on how the table and the buffer are aligned.
+    let mut player = Player::new(Ramp::steps(&sigmoid_exact::PERIODS));
+    player.start(2 * UP + CRUISE);
+    let sum = fill_phases::<40>(
+        "Player::fill, per-step table, the buffer half a word on",
+        (UP, CRUISE),
+        true,
+        |b| player_fill(&mut player, b),
+    );
+    check(player.is_done() && sum == whole, "fill half a word on");
     let (up, cruise) = (microstep_runs::LEN as u32, 992);
     let whole = 2 * microstep_runs::TOTAL_TICKS as u32 + cruise * last_run(&microstep_runs::RUNS);
     let mut player = Player::compressed(&microstep_runs::RUNS);
@@ -424,6 +521,7 @@ fn main() -> ! {
     let sum = fill_phases::<62>(
         "Player::fill, compressed (microstep, compress = 1)",
         (up, cruise),
+        false,
         |b| player_runs_fill(&mut player, b),
     );
     check(
@@ -435,6 +533,7 @@ fn main() -> ! {
     let sum = fill_phases::<62>(
         "Player::fill, Ramp::runs (the same runs)",
         (up, cruise),
+        false,
         |b| player_fill(&mut player, b),
     );
     check(player.is_done() && sum == whole, "fill of Ramp::runs");
@@ -509,6 +608,8 @@ fn main() -> ! {
         player_runs_plan_retarget,
         player_runs_plan_stop
     );
+
+    handler::measure();
 
     hprintln!("ok");
     debug::exit(debug::EXIT_SUCCESS);

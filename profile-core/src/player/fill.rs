@@ -71,7 +71,19 @@ impl<W: TableWord, L: Layout> Player<'_, W, L> {
                 let from = periods.as_slice();
                 let n = from.len().min(out.len());
                 let (now, later) = from.split_at(n);
-                out[..n].copy_from_slice(now);
+                // Two at a time, not `copy_from_slice`: a `memcpy` copies
+                // word by word only where the table and the buffer are
+                // aligned alike, and a byte at a time where they are not.
+                let out = &mut out[..n];
+                let mut to = out.chunks_exact_mut(2);
+                let mut from = now.chunks_exact(2);
+                for (to, from) in (&mut to).zip(&mut from) {
+                    to[0] = from[0];
+                    to[1] = from[1];
+                }
+                if let ([to], [from]) = (to.into_remainder(), from.remainder()) {
+                    *to = *from;
+                }
                 *periods = later.iter();
                 n
             }

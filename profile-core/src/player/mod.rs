@@ -421,46 +421,64 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         if L::COMPRESSED {
             return self.step_runs(write);
         }
-        // `refill` hands the player back, so that the step path keeps no
+        // The run being played, with no call on the way: a step interrupt
+        // that inlines this keeps no register for the refill's call.
+        match self.play_run(write) {
+            Ok(()) => true,
+            Err(write) => self.step_refilled(write),
+        }
+    }
+
+    /// Plays the next step of the run being played, or hands `write` back
+    /// when the run is played.
+    #[inline(always)]
+    fn play_run<F: FnOnce(W)>(&mut self, write: F) -> Result<(), F> {
+        match &mut self.run {
+            Run::Down(periods) => {
+                if let Some(&p) = periods.next_back() {
+                    write(p);
+                    return Ok(());
+                }
+            }
+            Run::Hold(p, n) => {
+                if *n > 0 {
+                    *n -= 1;
+                    write(**p);
+                    return Ok(());
+                }
+            }
+            Run::Up(periods) => {
+                if let Some(&p) = periods.next() {
+                    write(p);
+                    return Ok(());
+                }
+            }
+        }
+        Err(write)
+    }
+
+    /// The step path past the end of a run: the plan's next runs until one
+    /// plays.
+    #[cold]
+    #[inline(never)]
+    fn step_refilled<F: FnOnce(W)>(&mut self, mut write: F) -> bool {
+        // `refill` hands the player back, so that the loop keeps no
         // register across its call.
         let mut this = self;
         loop {
-            match &mut this.run {
-                Run::Down(periods) => {
-                    if let Some(&p) = periods.next_back() {
-                        write(p);
-                        return true;
-                    }
-                    // A compressed ramp's run: an empty `Down` and the state.
-                    // `RunState::next` written out: through the call, the
-                    // per-step table's paths are laid out a branch longer.
-                    let r = &mut this.computed;
-                    if r.left > 0 {
-                        r.left -= 1;
-                        let x = r.frac.wrapping_add(r.interval);
-                        r.frac = x & 0xFFFF;
-                        r.interval = r.interval.wrapping_add(r.add);
-                        write(W::from_ticks(x >> 16));
-                        return true;
-                    }
-                }
-                Run::Hold(p, n) => {
-                    if *n > 0 {
-                        *n -= 1;
-                        write(**p);
-                        return true;
-                    }
-                }
-                Run::Up(periods) => {
-                    if let Some(&p) = periods.next() {
-                        write(p);
-                        return true;
-                    }
-                }
+            // A compressed ramp's run, behind an empty `Down`: here, so that
+            // the per-step table's paths are the step's only ones.
+            if let Some(ticks) = this.computed.next() {
+                write(W::from_ticks(ticks));
+                return true;
             }
             match this.refill() {
                 Some(player) => this = player,
                 None => return false,
+            }
+            match this.play_run(write) {
+                Ok(()) => return true,
+                Err(w) => write = w,
             }
         }
     }
