@@ -78,12 +78,13 @@ fn SysTick() {
         player,
     } = unsafe { STEPPER.get() };
     let reload = *reload;
-    // The interval now starting was loaded at the last wrap: load the one
-    // after it.
     // SAFETY (both writes): the registers `main` put in the stepper.
-    if player.step(|value| unsafe { reload.write_volatile(u32::from(value)) }) {
-        unsafe { pin.write_volatile(*bit) }; // a step now
-    } else {
+    // A step now: the pin first, at the same time after every wrap; then
+    // the interval after the one now starting (loaded at the last wrap).
+    if !player.pulse_and_step(
+        || unsafe { pin.write_volatile(*bit) },
+        |value| unsafe { reload.write_volatile(u32::from(value)) },
+    ) {
         // The last interval has elapsed: give the stepper back.
         // SAFETY: SysTick's control register, cleared: counter and
         // interrupt off.

@@ -101,7 +101,7 @@ impl Players {
 
     /// From the interrupt: the pins that step now (0: the move is over),
     /// the period after the interval now starting to `load`.
-    fn step(&mut self, load: impl FnOnce(u16)) -> u32 {
+    fn step(&mut self, load: impl FnMut(u16)) -> u32 {
         match self {
             Players::Any(p) => u32::from(p.step(load)),
             Players::Compressed(p) => u32::from(p.step(load)),

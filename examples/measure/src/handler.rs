@@ -109,10 +109,12 @@ fn SysTick() {
     // The reload register's address before the player's loads.
     let reload = *reload;
     // SAFETY (both writes): the registers `main` put in the stepper.
-    if player.step(|period| unsafe { reload.write_volatile(u32::from(period)) }) {
-        // A step now.
-        unsafe { pin.write_volatile(*bit) };
-    } else {
+    // A step now: the pin first, at the same time after every wrap; then
+    // the period after the interval now starting.
+    if !player.pulse_and_step(
+        || unsafe { pin.write_volatile(*bit) },
+        |period| unsafe { reload.write_volatile(u32::from(period)) },
+    ) {
         timer.disable_interrupt();
         MOVING.store(false, Ordering::Release);
     }

@@ -321,22 +321,14 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     /// more than the player on a Cortex-M3, 19 on an M4F and 29.2 on an M0
     /// (`examples/measure/measure.sh`).
     #[inline]
-    pub fn step(&mut self, write: impl FnOnce(W, u32)) -> bool {
+    pub fn step(&mut self, mut write: impl FnMut(W, u32)) -> bool {
         // The followers first, with the registers free: after the move's
         // last step the accumulators move on unread.
         let mask = self.edges.next();
-        let mut write = Some(write);
-        if self.player.step(|period| {
-            if let Some(w) = write.take() {
-                w(period, mask)
-            }
-        }) {
+        if self.player.step(|period| write(period, mask)) {
             return true;
         }
-        match write {
-            Some(w) => self.then_step(w),
-            None => false,
-        }
+        self.then_step(write)
     }
 
     /// The queued move, if any, and its first edge.

@@ -244,19 +244,11 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
     /// `false` when the move is done. Where the move ends and another
     /// follows (a reversal), the next's first step.
     #[inline]
-    pub fn step(&mut self, write: impl FnOnce(W)) -> bool {
-        let mut write = Some(write);
-        if self.player.step(|p| {
-            if let Some(w) = write.take() {
-                w(p)
-            }
-        }) {
+    pub fn step(&mut self, mut write: impl FnMut(W)) -> bool {
+        if self.player.step(&mut write) {
             return true;
         }
-        match write {
-            Some(w) => self.then_step(w),
-            None => false,
-        }
+        self.then_step(write)
     }
 
     /// The move after the one that ended, and its first step.

@@ -15,7 +15,7 @@ pub trait Steps {
     type Word;
     /// Hands the next step's period to `write` and returns `true`, or
     /// returns `false` when the move is done ([`Player::step`]).
-    fn step(&mut self, write: impl FnOnce(Self::Word)) -> bool;
+    fn step(&mut self, write: impl FnMut(Self::Word)) -> bool;
     /// The next step's period, or `None` when the move is done.
     fn next_period(&mut self) -> Option<Self::Word>;
     /// Steps left to hand out.
@@ -25,7 +25,7 @@ pub trait Steps {
 impl<W: TableWord, L: Layout> Steps for Player<'_, W, L> {
     type Word = W;
     #[inline]
-    fn step(&mut self, write: impl FnOnce(W)) -> bool {
+    fn step(&mut self, write: impl FnMut(W)) -> bool {
         Player::step(self, write)
     }
     #[inline]
@@ -40,7 +40,7 @@ impl<W: TableWord, L: Layout> Steps for Player<'_, W, L> {
 impl<W: TableWord, L: Layout> Steps for Axis<'_, W, L> {
     type Word = W;
     #[inline]
-    fn step(&mut self, write: impl FnOnce(W)) -> bool {
+    fn step(&mut self, write: impl FnMut(W)) -> bool {
         Axis::step(self, write)
     }
     #[inline]
@@ -144,7 +144,7 @@ impl<S: Steps> Buffered<S> {
     /// starting to `write` (not called near the move's end, where there is
     /// none); `false` when the interval that ended was the move's last.
     #[inline]
-    pub fn step(&mut self, write: impl FnOnce(S::Word)) -> bool {
+    pub fn step(&mut self, write: impl FnMut(S::Word)) -> bool {
         // While the player has periods, one is always in the register: the
         // player's own step path, and nothing else.
         if self.inner.step(write) {
@@ -153,6 +153,25 @@ impl<S: Steps> Buffered<S> {
         // The player is done: the period in the register, if any, is the
         // last interval, starting now.
         core::mem::replace(&mut self.ahead, 0) != 0
+    }
+
+    /// From the timer's interrupt, at the end of an interval: when a step
+    /// is taken now, calls `pulse` first (so that every edge comes the same
+    /// time after its wrap, whatever work the step then does: a refill at a
+    /// change of stretch takes longer than a load), then hands the period
+    /// after the interval now starting to `write`, and returns `true`;
+    /// `false` when the interval that ended was the move's last.
+    /// [`Buffered::step`] with the pin pulsed first.
+    #[inline]
+    pub fn pulse_and_step(&mut self, pulse: impl FnOnce(), write: impl FnMut(S::Word)) -> bool {
+        if self.ahead == 0 {
+            return false;
+        }
+        pulse();
+        if !self.inner.step(write) {
+            self.ahead = 0;
+        }
+        true
     }
 
     /// Steps not yet taken.
@@ -331,7 +350,7 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Buffered<Axes<'a, W, N, L>> {
     /// `write` (not called near the move's end, where there is none); 0
     /// when the interval that ended was the move's last.
     #[inline]
-    pub fn step(&mut self, write: impl FnOnce(W)) -> u32 {
+    pub fn step(&mut self, mut write: impl FnMut(W)) -> u32 {
         let now = self.ahead;
         let ahead = &mut self.ahead;
         if !self.inner.step(|period, mask| {
