@@ -92,6 +92,11 @@ pub enum Event {
     Cruise(u32),
     /// `Player::stop()`.
     Stop,
+    /// `Player::retarget(steps)`: the move ends `steps` periods later.
+    Retarget(u32),
+    /// `Player::run()`: the move goes on without an end, a lap of 2^31
+    /// steps at a time.
+    Run,
 }
 
 /// The move as the player's contract describes it, read off the tables with
@@ -137,6 +142,16 @@ impl<'a> Model<'a> {
             Event::Cruise(pos) => {
                 self.cruise = pos.min(self.accel.len_steps() - 1);
                 true
+            }
+            // On, cruising: the same walk, to a farther end (the
+            // scenarios retarget and run only before the deceleration).
+            Event::Retarget(steps) => {
+                self.remaining = steps;
+                chosen == steps
+            }
+            Event::Run => {
+                self.remaining = 1 << 31;
+                chosen == 1 << 31
             }
             Event::Stop if self.last == 0 => {
                 self.remaining = 0;
@@ -435,7 +450,7 @@ impl Expect {
 /// trapezoid, a triangle, stops, a held ramp, the diffused default table,
 /// an asymmetric move, cruise changes, a segment table and compressed runs
 /// played by both players.
-fn scenarios() -> [Scenario<'static>; 17] {
+fn scenarios() -> [Scenario<'static>; 19] {
     // Monotone tables first: the C-compatible orange S-curve (truncated, so
     // its periods never rise).
     let o: &'static [u16] = &sigmoid_orange::PERIODS;
@@ -654,6 +669,40 @@ fn scenarios() -> [Scenario<'static>; 17] {
                 &[(1500, Event::Cruise(500)), (3000, Event::Cruise(999))],
             ),
             expect: Expect::exact(steps, cruises, a_rest),
+        },
+        // A new end while cruising: 5000 steps, at step 2500 the move is
+        // to end 4000 steps later, 6500 in all.
+        Scenario {
+            play: mv(
+                "a farther end while cruising (5000 -> 6500)",
+                exact,
+                exact,
+                5000,
+                &[(2500, Event::Retarget(4000))],
+            ),
+            expect: Expect::exact(
+                6500,
+                2 * a_ticks + u64::from(6500 - 2 * a_len) * u64::from(a_top),
+                a_rest,
+            ),
+        },
+        // A jog: at step 1200 the move no longer ends; a stop at step 6000
+        // decelerates it to rest from the top.
+        Scenario {
+            play: mv(
+                "a run, then a stop (a jog)",
+                exact,
+                exact,
+                3000,
+                &[(1200, Event::Run), (6000, Event::Stop)],
+            ),
+            expect: Expect {
+                steps: (6001, 6000 + a_len),
+                ticks: None,
+                top: None,
+                end: a_rest,
+                stops: true,
+            },
         },
         // An axis through `Buffered`: to 2500 from 0 (forward), then from
         // there to -1500 (backward).

@@ -252,6 +252,16 @@ fn SysTick() {
                 match event {
                     Event::Cruise(pos) => with_player!(&mut s.player, p => p.set_cruise(pos)),
                     Event::Stop => with_player!(&mut s.player, p => p.stop()),
+                    Event::Retarget(steps) => match &mut s.player {
+                        Players::Any(p) => _ = p.retarget(steps),
+                        Players::Compressed(p) => _ = p.retarget(steps),
+                        _ => {}
+                    },
+                    Event::Run => match &mut s.player {
+                        Players::Any(p) => _ = p.run(),
+                        Players::Compressed(p) => _ = p.run(),
+                        _ => {}
+                    },
                 }
                 if let Some(slot) = s.after_events.get_mut(i) {
                     *slot = s.player.to_load();

@@ -206,6 +206,32 @@ impl<'a, W: TableWord, L: Layout> Buffered<Player<'a, W, L>> {
     pub fn set_cruise(&mut self, pos: u32) {
         self.inner.set_cruise(pos);
     }
+
+    /// Cruises at a period in ticks ([`Player::set_cruise_period`]), from
+    /// the first period not yet in the timer's hands.
+    pub fn set_cruise_period(&mut self, period: W) {
+        self.inner.set_cruise_period(period);
+    }
+
+    /// Ends the move `steps` periods after those already handed out (one
+    /// is in the timer's hands), if it can stop in that many
+    /// ([`Player::retarget`]); `false`, changing nothing, when it cannot.
+    pub fn retarget(&mut self, steps: u32) -> bool {
+        self.remaining() == 0 || self.inner.retarget(steps)
+    }
+
+    /// A move without an end ([`Player::run`]) until [`Buffered::stop`]:
+    /// from rest, its first two periods to load; while a move plays, it
+    /// goes on from the first period not yet in the timer's hands and
+    /// there is nothing to load, `(None, None)`.
+    pub fn run(&mut self) -> (Option<W>, Option<W>) {
+        if self.remaining() > 0 {
+            self.inner.run();
+            return (None, None);
+        }
+        self.inner.run();
+        self.begin()
+    }
 }
 
 impl<'a, W: TableWord, L: Layout> Buffered<Axis<'a, W, L>> {
