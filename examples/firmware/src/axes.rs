@@ -25,10 +25,12 @@ struct AxesMove {
     name: &'static str,
     /// Steps on each axis (negative: backward).
     delta: [i64; 3],
+    /// Events on the lead's steps; a new target (`Event::Target`) stops the
+    /// axes and moves them there in a straight line.
     events: &'static [(u32, Event)],
 }
 
-const MOVES: [AxesMove; 2] = [
+const MOVES: [AxesMove; 3] = [
     AxesMove {
         name: "3 axes (2500, -1234, 2999)",
         delta: [2500, -1234, 2999],
@@ -38,6 +40,11 @@ const MOVES: [AxesMove; 2] = [
         name: "3 axes, stop while cruising",
         delta: [-4000, 4000, 777],
         events: &[(1800, Event::Stop)],
+    },
+    AxesMove {
+        name: "3 axes, a new target while cruising",
+        delta: [3000, -2000, 1000],
+        events: &[(1500, Event::Target([-700, 900, 1400]))],
     },
 ];
 
@@ -52,6 +59,28 @@ pub fn run(
         (timer, log) = play(m, timer, log, report);
     }
     timer
+}
+
+/// One straight line of a move: its edges `first..end`, each axis's
+/// steps, and the events on its lead from its first edge.
+struct Line<'e> {
+    first: usize,
+    end: usize,
+    steps: [u64; 3],
+    events: &'e [(u32, Event)],
+}
+
+/// Where the rule has taken each axis of a line of `steps` after the
+/// lead's first `n` steps, signed.
+fn rule_positions(steps: &[u64; 3], signs: &[i64; 3], n: usize) -> [i64; 3] {
+    let lead = steps.iter().copied().max().unwrap_or(0);
+    [0, 1, 2].map(|i| {
+        let d = steps[i];
+        let taken = (1..=d)
+            .take_while(|&k| ((2 * k * lead + d) / (2 * d)) as usize <= n)
+            .count();
+        signs[i] * taken as i64
+    })
 }
 
 fn play(
@@ -78,15 +107,104 @@ fn play(
         0,
     );
     let loaded = &s.log[..s.steps.min(step::MAX_STEPS)];
-    // The lead: the axis with the most steps, the lowest of equals.
-    let steps = m.delta.map(|d| d.unsigned_abs());
-    let lead_steps = steps.iter().copied().max().unwrap_or(0);
-    // Its periods: the model's, with the events where the handler applied them.
+    let taken = s.taken.min(step::MAX_STEPS);
+    let (steps, signs) = (m.delta.map(|d| d.unsigned_abs()), m.delta.map(i64::signum));
+    // A new target: the first line ends where its stop ends (the periods
+    // loaded before it and the stop's), the second goes on from there.
+    let target = m
+        .events
+        .iter()
+        .enumerate()
+        .find_map(|(i, &(at, e))| match e {
+            Event::Target(t) => Some((i, at, t)),
+            _ => None,
+        });
+    let first_end = target.map_or(taken, |(i, at, _)| at as usize + s.after_events[i] as usize);
+    let first = Line {
+        first: 0,
+        end: first_end,
+        steps,
+        events: m.events,
+    };
+    let mut want = [0i64; 3];
+    let mut toggles = check_line(m.name, table, &first, loaded, &s.after_events, report);
+    if let Some((_, _, target)) = target {
+        let at_stop = rule_positions(&steps, &signs, first_end);
+        let delta = [0, 1, 2].map(|i| target[i] - at_stop[i]);
+        let second = Line {
+            first: first_end,
+            end: taken,
+            steps: delta.map(|d| d.unsigned_abs()),
+            events: &[],
+        };
+        let more = check_line(m.name, table, &second, loaded, &[], report);
+        for i in 0..3 {
+            toggles[i] += more[i];
+        }
+        want = target;
+    } else {
+        for i in 0..3 {
+            want[i] = signs[i] * i64::from(toggles[i]);
+        }
+    }
+    check_pin(m.name, loaded, s.taken, report);
+    let position = s.player.axes_position();
+    let pins_now = step::step_pins() ^ pins_before;
+    for i in 0..3 {
+        report.check(
+            position[i] == want[i],
+            "axis position at the pins",
+            position[i] as u64,
+            want[i] as u64,
+        );
+        report.equal(
+            "axis pin level",
+            u64::from(pins_now >> i & 1),
+            u64::from(toggles[i] & 1),
+        );
+    }
+    report.equal("player done after the move", s.player.is_done().into(), 1);
+    hprintln!(
+        "  {:<40} {:>6} edges, steps {} {} {}",
+        m.name,
+        taken,
+        toggles[0],
+        toggles[1],
+        toggles[2]
+    );
+    (s.timer, s.log)
+}
+
+/// Checks one line: the lead's periods against [`Model`], and every edge
+/// of every axis at the time of the lead's step the rule names. Returns
+/// each axis's steps.
+fn check_line(
+    name: &str,
+    table: Table<'static>,
+    line: &Line<'_>,
+    loaded: &[u16],
+    after_events: &[u32],
+    report: &mut Report,
+) -> [u32; 3] {
+    let lead_steps = line.steps.iter().copied().max().unwrap_or(0);
+    let periods = &loaded[line.first..line.end.min(loaded.len())];
+    // The lead's periods: the model's, with the events where the handler
+    // applied them (a new target is the model's stop).
     let mut model = Model::new(table, table, lead_steps as u32);
     let mut mismatches = 0u32;
-    for (k, &got) in loaded.iter().enumerate() {
-        for (i, &(_, event)) in m.events.iter().enumerate().filter(|(_, e)| e.0 == k as u32) {
-            report.equal(m.name, model.apply(event, s.after_events[i]).into(), 1);
+    for (k, &got) in periods.iter().enumerate() {
+        let here = line
+            .events
+            .iter()
+            .enumerate()
+            .filter(|(_, e)| e.0 == k as u32);
+        for (i, &(_, event)) in here {
+            let event = match event {
+                Event::Target(_) => Event::Stop,
+                e => e,
+            };
+            let chosen = after_events.get(i).copied().unwrap_or(0);
+            report.equal(name, model.apply(event, chosen).into(), 1);
         }
         if model.next() != Some(got) {
             mismatches += 1;
@@ -94,37 +212,34 @@ fn play(
     }
     mismatches += u32::from(model.next().is_some());
     report.equal("the lead's periods against the model", mismatches.into(), 0);
-    check_pin(m.name, loaded, s.taken, report);
-    // Each edge's time from the start, and the pins it toggled.
-    let taken = s.taken.min(step::MAX_STEPS);
-    let position = s.player.axes_position();
-    let pins_now = step::step_pins() ^ pins_before;
     let (mut off, mut toggles) = (0u32, [0u32; 3]);
     critical_section::with(|cs| {
         let stamps = step::STAMPS.borrow_ref(cs);
         let pins = step::PINS.borrow_ref(cs);
-        for (i, &d) in steps.iter().enumerate() {
+        for (i, &d) in line.steps.iter().enumerate() {
             // The rule, edge by edge: the k-th step on the lead's step s_k
-            // (numbered from 1), at the sum of the first s_k - 1 periods.
-            let mut edges = (0..taken).filter(|&e| pins[e] >> i & 1 == 1);
+            // (numbered from 1 in the line), at the sum of the periods
+            // before it from the move's first edge.
+            let mut edges = (line.first..line.end).filter(|&e| pins[e] >> i & 1 == 1);
             for k in 1..=d {
                 let s_k = ((2 * k * lead_steps + d) / (2 * d)) as usize;
-                if s_k > taken {
+                if line.first + s_k > line.end {
                     break;
                 }
-                let want: u64 = loaded[..s_k - 1].iter().map(|&p| u64::from(p)).sum();
+                let edge = line.first + s_k - 1;
+                let want: u64 = loaded[..edge].iter().map(|&p| u64::from(p)).sum();
                 let time = |e: usize| u64::from(stamps[0].wrapping_sub(stamps[e]));
                 match edges.next() {
-                    Some(e) if e == s_k - 1 && time(e) == want => {}
+                    Some(e) if e == edge && time(e) == want => {}
                     got => {
                         if off == 0 {
                             hprintln!(
                                 "FAIL {}: axis {} step {} on edge {:?}, the rule says edge {} at {} ticks",
-                                m.name,
+                                name,
                                 i,
                                 k,
                                 got.map(|e| (e, time(e))),
-                                s_k - 1,
+                                edge,
                                 want
                             );
                         }
@@ -137,29 +252,6 @@ fn play(
             off += edges.count() as u32;
         }
     });
-    for i in 0..3 {
-        let want = m.delta[i].signum() * i64::from(toggles[i]);
-        report.check(
-            position[i] == want,
-            "axis position at the pins",
-            position[i] as u64,
-            want as u64,
-        );
-        report.equal(
-            "axis pin level",
-            u64::from(pins_now >> i & 1),
-            u64::from(toggles[i] & 1),
-        );
-    }
     report.equal("axis edges off the rule or their time", off.into(), 0);
-    report.equal("player done after the move", s.player.is_done().into(), 1);
-    hprintln!(
-        "  {:<34} {:>6} edges, steps {} {} {}",
-        m.name,
-        taken,
-        toggles[0],
-        toggles[1],
-        toggles[2]
-    );
-    (s.timer, s.log)
+    toggles
 }

@@ -97,6 +97,9 @@ pub enum Event {
     /// `Player::run()`: the move goes on without an end, a lap of 2^31
     /// steps at a time.
     Run,
+    /// `Axes::move_to(target)` while moving: a stop, then a straight line
+    /// to `target`.
+    Target([i64; 3]),
 }
 
 /// The move as the player's contract describes it, read off the tables with
@@ -153,6 +156,8 @@ impl<'a> Model<'a> {
                 self.remaining = 1 << 31;
                 chosen == 1 << 31
             }
+            // The axes' new target: their player's stop, checked as a stop.
+            Event::Target(_) => self.apply(Event::Stop, chosen),
             Event::Stop if self.last == 0 => {
                 self.remaining = 0;
                 chosen == 0

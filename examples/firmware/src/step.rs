@@ -257,6 +257,11 @@ fn SysTick() {
                         Players::Compressed(p) => _ = p.retarget(steps),
                         _ => {}
                     },
+                    Event::Target(target) => {
+                        if let Players::Axes(p, _) = &mut s.player {
+                            p.move_to(target);
+                        }
+                    }
                     Event::Run => match &mut s.player {
                         Players::Any(p) => _ = p.run(),
                         Players::Compressed(p) => _ = p.run(),
