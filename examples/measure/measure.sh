@@ -107,7 +107,7 @@ while IFS='|' read -r label _; do
     echo
 done <"$out/M3.rows"
 echo
-printf "%-58s" "flash of both players (Player::new, ::compressed), bytes"
+printf "%-58s" "flash of the player module in this firmware (every type measured), bytes"
 for core in "${cores[@]}"; do printf " %20s" "$(cat "$out/$core.flash")"; done
 echo
 
