@@ -3,7 +3,7 @@
 //! `PROPTEST_CASES` sets the number of cases (default 256 per property here).
 
 use profile_core::player::{Compressed, Player, Ramp};
-use profile_core::runs::{Expand, LinearRun as RunWords};
+use profile_core::runs::Expand;
 use proptest::prelude::*;
 
 /// A non-increasing table (slow to fast), as generated tables are.
