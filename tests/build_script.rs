@@ -57,6 +57,7 @@ fn cargo(scratch: &ScratchCrate, args: &[&str]) -> Output {
 }
 
 #[test]
+#[ignore = "slow: builds a scratch crate with cargo; CI runs it with --ignored"]
 fn a_bad_file_fails_the_build_with_cargo_errors_and_a_good_one_builds() {
     let scratch = ScratchCrate::new(
         "build-script-user",

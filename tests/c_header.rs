@@ -593,6 +593,7 @@ fn check_header(
 }
 
 #[test]
+#[ignore = "slow: compiles C with the C compiler; CI runs it with --ignored"]
 fn the_c_header_compiles_and_matches_the_rust_tables() {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("profiles.toml");
     let profiles = Profiles::load(&path).unwrap_or_else(|e| panic!("{e}"));
@@ -619,6 +620,7 @@ fn the_c_header_compiles_and_matches_the_rust_tables() {
 
 /// 32-bit words: `uint32_t` tables with periods above 65 535.
 #[test]
+#[ignore = "slow: compiles C with the C compiler; CI runs it with --ignored"]
 fn u32_tables_in_c() {
     let source = r#"
 [defaults]
@@ -669,6 +671,7 @@ segments = 6
 /// The split layout: the header declares, one source file defines, in a
 /// storage and a linker section of the user's choice.
 #[test]
+#[ignore = "slow: compiles C with the C compiler; CI runs it with --ignored"]
 fn split_c_files_define_the_tables_once_where_the_user_places_them() {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("profiles.toml");
     let profiles = Profiles::load(&path).unwrap_or_else(|e| panic!("{e}"));
@@ -772,6 +775,7 @@ fn a_placement_that_would_break_the_c_is_refused() {
 /// and commas, or a macro taking an argument, after the name. In one
 /// header and split, C89 and C99, with the run player.
 #[test]
+#[ignore = "slow: compiles C with the C compiler; CI runs it with --ignored"]
 fn accepted_placements_compile() {
     let source = r#"
 [defaults]
@@ -840,6 +844,7 @@ fn axis(name: &str) -> String {
 /// the one whose tables are in program memory reads them with
 /// `pgm_read_word` (counted by a host's stand-in), the other with a load.
 #[test]
+#[ignore = "slow: compiles C with the C compiler; CI runs it with --ignored"]
 fn two_headers_in_one_translation_unit() {
     let x = Profiles::parse("a/profiles.toml", &axis("x")).unwrap_or_else(|e| panic!("{e}"));
     let y = Profiles::parse("b/profiles.toml", &axis("y")).unwrap_or_else(|e| panic!("{e}"));
@@ -978,6 +983,7 @@ fn split_files_are_written_both_or_neither() {
 /// them period for period as `runs::Expand` (compared through every
 /// period's sum and an order-sensitive checksum), as one header and split.
 #[test]
+#[ignore = "slow: compiles C with the C compiler; CI runs it with --ignored"]
 fn compressed_runs_play_in_c_as_in_rust() {
     let source = r#"
 [defaults]
@@ -1036,6 +1042,7 @@ len = 100
 /// identifiers C leaves to programs: no leading digit, no leading or double
 /// `_`; the C compiles and plays as with any other name.
 #[test]
+#[ignore = "slow: compiles C with the C compiler; CI runs it with --ignored"]
 fn run_players_of_files_named_like_no_identifier() {
     let source = r#"
 [profiles.ramp]
@@ -1089,6 +1096,7 @@ compress = 1
 /// `pgm_read_word`, unless the user defines `RAMPS_RUNS_READ` (this
 /// header's) or `STEPPER_RUNS_READ` (every header's) first.
 #[test]
+#[ignore = "slow: compiles C with the C compiler; CI runs it with --ignored"]
 fn progmem_tables_are_read_from_program_memory() {
     let source = "[profiles.ramp]\ncurve = \"linear\"\nfmin = 500\nfmax = 5000\n\
                   len = 100\ntimer_hz = 1_000_000\ncompress = 1\n";
@@ -1142,6 +1150,7 @@ fn progmem_tables_are_read_from_program_memory() {
 /// run player plays each period plus it), every figure is the periods',
 /// and the header says the offset; one header and split.
 #[test]
+#[ignore = "slow: compiles C with the C compiler; CI runs it with --ignored"]
 fn reload_offset_tables_hold_the_register_values() {
     let source = r#"
 [defaults]

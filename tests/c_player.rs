@@ -500,6 +500,7 @@ fn case_count() -> u32 {
 }
 
 #[test]
+#[ignore = "slow: compiles C with the C compiler; CI runs it with --ignored"]
 fn the_c_players_play_as_the_rust_player() {
     let profiles = Profiles::parse("players.toml", PROFILES).unwrap_or_else(|e| panic!("{e}"));
     let cases = cases(case_count(), &profiles);

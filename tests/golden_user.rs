@@ -103,6 +103,7 @@ fn text(output: &Output) -> String {
 }
 
 #[test]
+#[ignore = "slow: builds a scratch crate with cargo; CI runs it with --ignored"]
 fn a_user_crate_blesses_checks_and_reads_a_failure() {
     let scratch = Scratch::new();
 

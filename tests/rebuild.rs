@@ -204,6 +204,7 @@ fn expected_output(source: &str) -> String {
 }
 
 #[test]
+#[ignore = "slow: builds a scratch crate with cargo; CI runs it with --ignored"]
 fn editing_profiles_toml_rebuilds_both_paths() {
     let scratch = Scratch::new();
     let versions = [

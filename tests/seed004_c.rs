@@ -385,6 +385,7 @@ fn compare(call: &Call, word: Word) -> Result<Verdict, String> {
 }
 
 #[test]
+#[ignore = "slow: compiles C with the C compiler; CI runs it with --ignored"]
 fn seed_call_matches_c_through_the_macro() {
     let COutcome::Table { tdata0, entries } = run_c(&SEED) else {
         panic!("expected the seed's call to run in C without overflow");
@@ -432,6 +433,7 @@ const FITTING: [(Call, Word); 12] = [
 ];
 
 #[test]
+#[ignore = "slow: compiles C with the C compiler; CI runs it with --ignored"]
 fn corner_calls_match_c() {
     for (call, word) in FITTING {
         let verdict = compare(&call, word).unwrap_or_else(|problem| panic!("{problem}"));
@@ -443,6 +445,7 @@ fn corner_calls_match_c() {
 }
 
 #[test]
+#[ignore = "slow: compiles C with the C compiler; CI runs it with --ignored"]
 fn spread_of_calls_matches_c_or_is_rejected_like_c() {
     let mut rng = Lcg(0x5EED_0004_0000_C0DE);
     let mut tally = (0, 0, 0, 0);
@@ -488,6 +491,7 @@ fn spread_of_calls_matches_c_or_is_rejected_like_c() {
 
 /// Calls whose C arithmetic overflows, each for a different reason.
 #[test]
+#[ignore = "slow: compiles C with the C compiler; CI runs it with --ignored"]
 fn overflowing_calls_are_errors() {
     let cases: [(Call, &str, Key); 6] = [
         // 4500 * 5500 / (2 * 99) = 125000: A is a UINT16.
@@ -581,6 +585,7 @@ fn overflowing_calls_are_errors() {
 /// `len = 65536` is `trans = 65535`: the article's `for (i = 0; i <= trans; i++)`
 /// with `UINT16 i` never ends, so there is no C table to be compatible with.
 #[test]
+#[ignore = "slow: compiles C with the C compiler; CI runs it with --ignored"]
 fn trans_65535_is_rejected_like_c() {
     let call = call(100, 400, 65_536, 1_000_000, 1);
     let flagged = match run_c(&call) {

@@ -309,12 +309,14 @@ fn assert_all_match(label: &str, calls: &[Call]) {
 }
 
 #[test]
+#[ignore = "slow: compiles C with the C compiler; CI runs it with --ignored"]
 fn seed_example_calls_match_c() {
     let calls: Vec<Call> = SEED_CALLS.iter().map(|(_, call)| *call).collect();
     assert_all_match("seed calls", &calls);
 }
 
 #[test]
+#[ignore = "slow: compiles C with the C compiler; CI runs it with --ignored"]
 fn orange_seed_facts_hold_in_c() {
     // The article's orange call (len 1000, fmax 64000, fmin 500, flexible 8,
     // 10 MHz, truncated) has known figures: first period 19183, last 156, 0.412
@@ -336,11 +338,13 @@ fn orange_seed_facts_hold_in_c() {
 }
 
 #[test]
+#[ignore = "slow: compiles C with the C compiler; CI runs it with --ignored"]
 fn corner_calls_match_c() {
     assert_all_match("corner calls", &CORNER_CALLS);
 }
 
 #[test]
+#[ignore = "slow: compiles C with the C compiler; CI runs it with --ignored"]
 fn generated_calls_match_c() {
     let calls = generated_calls(32);
     for call in &calls {
@@ -357,6 +361,7 @@ fn generated_calls_match_c() {
 }
 
 #[test]
+#[ignore = "slow: compiles C with the C compiler; CI runs it with --ignored"]
 fn macro_matches_c_for_the_orange_call() {
     // The orange call through `period_table!`, in the compatibility mode.
     let period = &SEED000_ORANGE_COMPAT;

@@ -7,6 +7,9 @@
 //!
 //! `PROPTEST_CASES` sets the number of cases (default 256 per property).
 
+mod common;
+
+use common::cases;
 use profile_core::player::{Axes, AxesStart, Buffered, Compressed, Direction, Player, Ramp};
 use proptest::prelude::*;
 
@@ -313,13 +316,6 @@ macro_rules! by_len {
             _ => $f::<4>($($arg),*),
         }
     };
-}
-
-fn cases() -> u32 {
-    std::env::var("PROPTEST_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(256)
 }
 
 proptest! {

@@ -6,6 +6,9 @@
 //!
 //! `PROPTEST_CASES` sets the number of cases (default 256 per property).
 
+mod common;
+
+use common::cases;
 use profile_core::player::{Axis, Buffered, Direction, Player, Ramp, Steps};
 use proptest::prelude::*;
 
@@ -135,13 +138,6 @@ fn played(mut player: Player<'_, u16>, steps: u32, events: &[(usize, Event)]) ->
         handed += 1;
     };
     buffered_timer(&mut stepper, apply, begin, 2_000_000).expect("a move without end")
-}
-
-fn cases() -> u32 {
-    std::env::var("PROPTEST_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(256)
 }
 
 proptest! {

@@ -7,49 +7,13 @@
 //! `PROPTEST_CASES` sets the number of operation sequences per property
 //! (default 256, times 4 here).
 
+mod common;
+
+use common::{any_runs, any_table, cases};
 use profile_core::TableWord;
 use profile_core::player::{Axis, Compressed, Player, Ramp};
-use profile_core::runs::LinearRun as RunWords;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestCaseError, TestRunner};
-
-/// A table falling with ties (as generated), or arbitrary.
-fn any_table(max_len: usize) -> impl Strategy<Value = Vec<u32>> {
-    prop_oneof![
-        3 => (1usize..max_len, 2u32..5000).prop_flat_map(|(len, start)| {
-            proptest::collection::vec(0u32..3, len).prop_map(move |drops| {
-                let mut p = start;
-                drops.iter().map(|d| { let v = p; p = p.saturating_sub(*d).max(1); v }).collect()
-            })
-        }),
-        1 => proptest::collection::vec(1u32..400, 1..max_len),
-    ]
-}
-
-/// Random runs: counts from 0, periods from 1 to about 4000 ticks with
-/// any remainder, changing by up to 6 ticks a step.
-fn any_runs() -> impl Strategy<Value = Vec<[u16; 5]>> {
-    let run = (0u16..40, 1u32..3000, 0u32..65_536, -400_000i32..400_000);
-    proptest::collection::vec(run, 1..12).prop_map(|raw| {
-        raw.into_iter()
-            .map(|(count, ticks, frac, add)| {
-                let interval = (ticks << 16) | frac;
-                let end = i64::from(interval) + (i64::from(count.max(1)) - 1) * i64::from(add);
-                let add = if (1 << 16..4000 << 16).contains(&end) {
-                    add
-                } else {
-                    0
-                };
-                RunWords {
-                    count,
-                    interval,
-                    add,
-                }
-                .encode()
-            })
-            .collect()
-    })
-}
 
 /// A ramp: a per-step table held `hold` steps per entry, segments (empty
 /// ones included), or runs.
@@ -211,13 +175,6 @@ fn compare(
         );
     }
     Ok(compared)
-}
-
-fn cases() -> u32 {
-    std::env::var("PROPTEST_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(256)
 }
 
 fn run(

@@ -17,6 +17,9 @@
 //!
 //! `PROPTEST_CASES` sets the number of cases (default 256).
 
+mod common;
+
+use common::cases;
 use profile_core::player::{Axis, Direction, Player, Ramp};
 use proptest::prelude::*;
 
@@ -215,13 +218,6 @@ fn check(table: &[u16], ops: &[Op]) -> Result<(), String> {
         return Err(format!("arrived at {}, not {target}", axis.position()));
     }
     Ok(())
-}
-
-fn cases() -> u32 {
-    std::env::var("PROPTEST_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(256)
 }
 
 proptest! {

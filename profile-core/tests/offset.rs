@@ -7,6 +7,9 @@
 //! `PROPTEST_CASES` sets the number of operation sequences (default 256,
 //! times 4 here).
 
+mod common;
+
+use common::cases;
 use profile_core::player::{Compressed, Player, Ramp};
 use profile_core::runs::{Expand, LinearRun as RunWords, with_offset};
 use proptest::prelude::*;
@@ -123,13 +126,6 @@ fn compare<L: profile_core::player::Layout>(
         prop_assert_eq!(periods.remaining(), stored.remaining(), "after op {}", i);
     }
     Ok(())
-}
-
-fn cases() -> u32 {
-    std::env::var("PROPTEST_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(256)
 }
 
 #[test]

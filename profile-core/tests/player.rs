@@ -3,7 +3,7 @@
 //! `PROPTEST_CASES` sets the number of cases (default 256 per property here).
 
 use profile_core::player::{Compressed, Player, Ramp};
-use profile_core::runs::{Expand, LinearRun as RunWords};
+use profile_core::runs::Expand;
 use proptest::prelude::*;
 
 /// A non-increasing table (slow to fast), as generated tables are.
@@ -55,14 +55,6 @@ fn expand(t: &[u16], hold: u32) -> Vec<u32> {
     t.iter()
         .flat_map(|&p| std::iter::repeat_n(p as u32, hold.max(1) as usize))
         .collect()
-}
-
-/// Cases per property: `PROPTEST_CASES`, or 256.
-fn cases() -> u32 {
-    std::env::var("PROPTEST_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(256)
 }
 
 proptest! {
@@ -265,6 +257,7 @@ fn diffused_tables_play_exactly() {
 mod common;
 
 use common::reference::Reference;
+use common::{any_runs, any_table, cases};
 use profile_core::TableWord;
 
 /// What a random operation sequence does to a player.
@@ -276,20 +269,6 @@ enum Op {
     Cruise(u32),
 }
 
-/// A table of any shape: falling with ties (as generated), or arbitrary.
-fn any_table(max_len: usize) -> impl Strategy<Value = Vec<u32>> {
-    prop_oneof![
-        3 => (1usize..max_len, 2u32..5000).prop_flat_map(|(len, start)| {
-            proptest::collection::vec(0u32..3, len).prop_map(move |drops| {
-                let mut p = start;
-                drops.iter().map(|d| { let v = p; p = p.saturating_sub(*d).max(1); v }).collect()
-            })
-        }),
-        1 => proptest::collection::vec(1u32..400, 1..max_len),
-        1 => proptest::collection::vec(1u32..4, 1..4),
-    ]
-}
-
 /// A ramp description: a per-step table held `hold` steps per entry,
 /// segments with counts from 0 (empty segments included), or compressed
 /// runs (empty runs included).
@@ -298,31 +277,6 @@ enum Shape {
     Steps(Vec<u32>, u32),
     Segments(Vec<(u32, u32)>),
     Runs(Vec<[u16; 5]>),
-}
-
-/// Random runs: counts from 0, periods from 1 to about 4000 ticks with any
-/// remainder, changing by up to 6 ticks a step.
-fn any_runs() -> impl Strategy<Value = Vec<[u16; 5]>> {
-    let run = (0u16..30, 1u32..3000, 0u32..65_536, -400_000i32..400_000);
-    proptest::collection::vec(run, 1..12).prop_map(|raw| {
-        raw.into_iter()
-            .map(|(count, ticks, frac, add)| {
-                let interval = (ticks << 16) | frac;
-                let end = i64::from(interval) + (i64::from(count.max(1)) - 1) * i64::from(add);
-                let add = if (1 << 16..4000 << 16).contains(&end) {
-                    add
-                } else {
-                    0
-                };
-                RunWords {
-                    count,
-                    interval,
-                    add,
-                }
-                .encode()
-            })
-            .collect()
-    })
 }
 
 fn shape() -> impl Strategy<Value = Shape> {
