@@ -292,22 +292,31 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         if remaining == 0 {
             return;
         }
-        let current = self.last_period();
-        // Not moving yet, or already slower than the ramp's slowest entry:
-        // at rest now.
-        if current == 0 || self.period_dec(0) < current {
+        let (current, needed) = self.stop_point();
+        if needed == 0 {
+            // Not moving yet, or already slower than the ramp's slowest
+            // entry: at rest now.
             self.plan.clear();
             self.follow(current);
-            return;
-        }
-        let needed = self.entry_point(current) + 1;
-        if needed < remaining {
+        } else if needed < remaining {
             let (acc, _) = self.state();
             let stretch = self.sides().decelerate(needed - 1, acc);
             self.plan.clear();
             self.plan.push(stretch);
             self.follow(current);
         }
+    }
+
+    /// Where a stop now enters the deceleration ramp: the period of the
+    /// last step played, and the steps from the ramp's entry nearest it
+    /// that is not faster down to rest; 0 steps before the first step or
+    /// when the motor already runs slower than the ramp's slowest entry.
+    fn stop_point(&self) -> (u32, u32) {
+        let current = self.last_period();
+        if current == 0 || self.period_dec(0) < current {
+            return (current, 0);
+        }
+        (current, self.entry_point(current) + 1)
     }
 
     /// The largest position of the deceleration ramp whose period is not

@@ -131,12 +131,10 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// steps that remain when fewer. 0 at rest, before the first step, and
     /// when the motor already runs slower than the ramp's slowest entry.
     pub fn steps_to_stop(&self) -> u32 {
-        let remaining = self.remaining();
-        let current = self.last_period();
-        if remaining == 0 || current == 0 || self.period_dec(0) < current {
-            return 0;
+        match self.remaining() {
+            0 => 0,
+            remaining => self.stop_point().1.min(remaining),
         }
-        (self.entry_point(current) + 1).min(remaining)
     }
 
     /// Ends the move `steps` steps from now, at rest, if it can stop in
