@@ -7,17 +7,15 @@
 //! exact pulse time `t(k)`, the solution of `N(t) = ∫0^t f = k`, scaled to ticks
 //! by `timer_hz / ticks_per_step`.
 //!
-//! The exact times here owe nothing to `profile-core`: each `f(t)` is written
-//! out from the articles (the jerk-limited ramp from its
-//! acceleration, which rises at `jerk`, holds and falls symmetrically), with
-//! `std`'s `exp` and `ln` rather than `libm`. Parameters that production
-//! solves for (`tau` from a step budget, `accel` from `len`) are solved here
-//! from the numeric integral, not from a closed form. `N` is integrated
-//! numerically (composite 5-point Gauss-Legendre on panels that never cross a
-//! joint of the curve, summed cumulatively), and `t(k)` is found by bisection
-//! on that numeric `N` down to adjacent floating-point numbers. After the ramp
-//! every curve holds `fmax`, so a table whose length follows from the
-//! parameters has `ceil(N(T_ramp))` entries, the final fraction at `fmax`.
+//! The exact times come from `common::oracle`, which owes nothing to
+//! `profile-core`: each `f(t)` is written out from the articles (the
+//! jerk-limited ramp from its acceleration, which rises at `jerk`, holds and
+//! falls symmetrically) with `std`'s `exp` and `ln` rather than `libm`,
+//! parameters that production solves for (`tau` from a step budget, `accel`
+//! from `len`) are solved from the numeric integral, and each `t(k)` is
+//! found on that numeric `N`. After the ramp every curve holds `fmax`, so a
+//! table whose length follows from the parameters has `ceil(N(T_ramp))`
+//! entries, the final fraction at `fmax`.
 //!
 //! Also checked: table lengths; `left_endpoint` entries against
 //! `1 / f(t(k))` under `nearest`; the three-stage joints (value and slope
@@ -31,6 +29,7 @@
 
 mod common;
 
+use common::oracle::{self, Model};
 use common::seeds::{SEED001_SEGMENTS, jerk_limited, seed001, seed004, zeng};
 use stepper_profiles::{
     Curve, Discretization, Error, Exponential, ExponentialExtent, JerkLimited, Linear,
@@ -40,327 +39,6 @@ use stepper_profiles::{
 /// What a correct edge (or rounded entry) may miss its exact value by: half a
 /// tick, plus room for floating-point error far below a tick.
 const TOLERANCE_TICKS: f64 = 0.5 + 1e-6;
-
-/// Panels per smooth piece of a curve. 5-point Gauss-Legendre is exact for
-/// the polynomial pieces and, at this density, accurate to rounding for the
-/// exponential ones (`(h / tau)^10` is below 1e-20).
-const PANELS_PER_PIECE: usize = 400;
-
-// ---------------------------------------------------------------------------
-// The independent model: f(t), its numeric integral, and t(k).
-
-/// A curve as a function of time, with the joints where it is not smooth.
-struct Model {
-    /// `f(t)` on `[0, t_ramp)`, in Hz.
-    f: Box<dyn Fn(f64) -> f64>,
-    /// Joints inside `(0, t_ramp)`, where a new formula takes over.
-    joints: Vec<f64>,
-    /// When the curve reaches `fmax`, in s.
-    t_ramp: f64,
-    /// The frequency held after the ramp, in Hz.
-    fmax: f64,
-}
-
-impl Model {
-    /// `f(t)` for any `t >= 0`: the curve, then `fmax`.
-    fn freq(&self, t: f64) -> f64 {
-        if t < self.t_ramp {
-            (self.f)(t)
-        } else {
-            self.fmax
-        }
-    }
-}
-
-/// The nodes and weights of 5-point Gauss-Legendre on `[-1, 1]`.
-fn gauss_legendre_5() -> [(f64, f64); 5] {
-    let inner = (5.0 - 2.0 * (10.0f64 / 7.0).sqrt()).sqrt() / 3.0;
-    let outer = (5.0 + 2.0 * (10.0f64 / 7.0).sqrt()).sqrt() / 3.0;
-    let w_inner = (322.0 + 13.0 * 70.0f64.sqrt()) / 900.0;
-    let w_outer = (322.0 - 13.0 * 70.0f64.sqrt()) / 900.0;
-    [
-        (-outer, w_outer),
-        (-inner, w_inner),
-        (0.0, 128.0 / 225.0),
-        (inner, w_inner),
-        (outer, w_outer),
-    ]
-}
-
-/// `N(t)` of a model, integrated numerically on panels that end at every joint.
-struct Numeric<'a> {
-    model: &'a Model,
-    rule: [(f64, f64); 5],
-    /// Panel boundaries, from 0 to a little past the ramp.
-    nodes: Vec<f64>,
-    /// `N` at each node.
-    cumulative: Vec<f64>,
-    /// Index of the node at `t_ramp`.
-    ramp_node: usize,
-}
-
-impl<'a> Numeric<'a> {
-    fn new(model: &'a Model) -> Self {
-        let mut pieces = vec![0.0];
-        let mut joints = model.joints.clone();
-        joints.sort_by(f64::total_cmp);
-        for j in joints {
-            let last = *pieces.last().expect("starts with 0");
-            if j > last + 1e-12 * model.t_ramp && j < model.t_ramp * (1.0 - 1e-12) {
-                pieces.push(j);
-            }
-        }
-        pieces.push(model.t_ramp);
-        let mut nodes = vec![0.0];
-        for w in pieces.windows(2) {
-            for i in 1..=PANELS_PER_PIECE {
-                nodes.push(if i == PANELS_PER_PIECE {
-                    w[1]
-                } else {
-                    w[0] + (w[1] - w[0]) * i as f64 / PANELS_PER_PIECE as f64
-                });
-            }
-        }
-        let ramp_node = nodes.len() - 1;
-        // After the ramp: a few steps at fmax, enough for the final fraction.
-        for i in 1..=4 {
-            nodes.push(model.t_ramp + i as f64 / model.fmax);
-        }
-        let mut numeric = Numeric {
-            model,
-            rule: gauss_legendre_5(),
-            nodes,
-            cumulative: vec![0.0],
-            ramp_node,
-        };
-        for i in 0..numeric.nodes.len() - 1 {
-            let (a, b) = (numeric.nodes[i], numeric.nodes[i + 1]);
-            let next = numeric.cumulative[i] + numeric.integral(a, b);
-            numeric.cumulative.push(next);
-        }
-        numeric
-    }
-
-    /// `∫a^b f` by one application of the rule (`[a, b]` inside one panel).
-    fn integral(&self, a: f64, b: f64) -> f64 {
-        let half = (b - a) / 2.0;
-        let mid = (a + b) / 2.0;
-        half * self
-            .rule
-            .iter()
-            .map(|&(x, w)| w * self.model.freq(mid + half * x))
-            .sum::<f64>()
-    }
-
-    /// Steps until the curve reaches `fmax`.
-    fn ramp_steps(&self) -> f64 {
-        self.cumulative[self.ramp_node]
-    }
-
-    /// `N(t)`, for `t` within the integrated span.
-    fn steps(&self, t: f64) -> f64 {
-        let panel = self.nodes.partition_point(|&n| n <= t).saturating_sub(1);
-        let panel = panel.min(self.nodes.len() - 2);
-        self.cumulative[panel] + self.integral(self.nodes[panel], t)
-    }
-
-    /// `t(k)`: bisection on the numeric `N` inside the panel that brackets `k`.
-    fn time_of(&self, k: f64) -> f64 {
-        if k <= 0.0 {
-            return 0.0;
-        }
-        let end = *self.cumulative.last().expect("integrated");
-        assert!(
-            k <= end,
-            "expected step {k} within the integrated span ({end})"
-        );
-        let panel = self.cumulative.partition_point(|&c| c < k) - 1;
-        let (mut lo, mut hi) = (self.nodes[panel], self.nodes[panel + 1]);
-        let base = self.cumulative[panel];
-        loop {
-            let mid = lo + (hi - lo) / 2.0;
-            if mid <= lo || mid >= hi {
-                return mid;
-            }
-            if base + self.integral(self.nodes[panel], mid) < k {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
-    }
-}
-
-/// Seed 001: `f(t) = f0 + (f_inf - f0)(1 - exp(-t/tau))` up to `fmax`.
-fn exponential_model(e: &Exponential) -> Model {
-    let (f0, fmax, f_inf) = (e.fmin, e.fmax, e.f_inf);
-    // f(T) = fmax at T = tau * rise, whatever tau is.
-    let rise = ((f_inf - f0) / (f_inf - fmax)).ln();
-    let tau = match e.extent {
-        ExponentialExtent::Tau(tau) => tau,
-        ExponentialExtent::Len(len) => {
-            // N scales with tau: integrate the ramp at tau = 1 and scale it to `len` steps.
-            let unit = Model {
-                f: Box::new(move |s: f64| f0 + (f_inf - f0) * (1.0 - (-s).exp())),
-                joints: Vec::new(),
-                t_ramp: rise,
-                fmax,
-            };
-            len as f64 / Numeric::new(&unit).ramp_steps()
-        }
-    };
-    Model {
-        f: Box::new(move |t: f64| f0 + (f_inf - f0) * (1.0 - (-t / tau).exp())),
-        joints: Vec::new(),
-        t_ramp: tau * rise,
-        fmax,
-    }
-}
-
-/// Seed 004 in time: `f(t) = f0 + a t` up to `fmax`.
-fn linear_model(l: &Linear) -> Model {
-    let (f0, fmax) = (l.fmin, l.fmax);
-    let accel = match l.extent {
-        LinearExtent::Accel(a) => a,
-        LinearExtent::Len(len) => {
-            // N scales with 1/a: integrate the ramp at a = 1 and scale it to `len` steps.
-            let unit = Model {
-                f: Box::new(move |s: f64| f0 + s),
-                joints: Vec::new(),
-                t_ramp: fmax - f0,
-                fmax,
-            };
-            Numeric::new(&unit).ramp_steps() / len as f64
-        }
-    };
-    Model {
-        f: Box::new(move |t: f64| f0 + accel * t),
-        joints: Vec::new(),
-        t_ramp: (fmax - f0) / accel,
-        fmax,
-    }
-}
-
-/// Zeng, Hu and Hu's three stages (seed 002, equation (5)), value and slope
-/// continuous at the joints: `t1 = ln(1 + B (f1 - f0) / a) / B`,
-/// `t2 = t1 + (f2 - f1) / a`, `tc = t2 + 2 (fc - f2) / a` (the paper's
-/// `tc = t2 + a / 4b` breaks the slope's continuity; `a / 2b` keeps it).
-#[derive(Clone, Copy, Debug)]
-struct Zeng {
-    f0: f64,
-    fc: f64,
-    a: f64,
-    shape: f64,
-    c: f64,
-    d: f64,
-    b: f64,
-    t1: f64,
-    t2: f64,
-    tc: f64,
-}
-
-impl Zeng {
-    fn new(z: &ThreeStage) -> Self {
-        let (f0, f1, f2, fc, a, shape) = (z.fmin, z.f1, z.f2, z.fmax, z.accel, z.shape);
-        let c = f1 - f0 + a / shape;
-        let t1 = (shape * (f1 - f0) / a).ln_1p() / shape;
-        let d = f1 - a * t1;
-        let t2 = t1 + (f2 - f1) / a;
-        let b = a * a / (4.0 * (fc - f2));
-        let tc = t2 + 2.0 * (fc - f2) / a;
-        Zeng {
-            f0,
-            fc,
-            a,
-            shape,
-            c,
-            d,
-            b,
-            t1,
-            t2,
-            tc,
-        }
-    }
-
-    /// The exponential stage, `f0 + C (1 - exp(-B t))`, for any `t` (with
-    /// `exp_m1`, so that a nearly linear start, `B` near 0, stays exact).
-    fn stage1(&self, t: f64) -> f64 {
-        self.f0 - self.c * (-self.shape * t).exp_m1()
-    }
-
-    /// The linear stage, `a t + d`, for any `t`.
-    fn stage2(&self, t: f64) -> f64 {
-        self.a * t + self.d
-    }
-
-    /// The parabolic stage, `-b (t - tc)² + fc`, for any `t`.
-    fn stage3(&self, t: f64) -> f64 {
-        -self.b * (t - self.tc) * (t - self.tc) + self.fc
-    }
-
-    fn freq(&self, t: f64) -> f64 {
-        if t < self.t1 {
-            self.stage1(t)
-        } else if t < self.t2 {
-            self.stage2(t)
-        } else if t < self.tc {
-            self.stage3(t)
-        } else {
-            self.fc
-        }
-    }
-
-    fn model(self) -> Model {
-        Model {
-            f: Box::new(move |t| self.freq(t)),
-            joints: vec![self.t1, self.t2],
-            t_ramp: self.tc,
-            fmax: self.fc,
-        }
-    }
-}
-
-/// The jerk-limited ramp from its acceleration: `a(s) = min(J s, A, J (T - s))`,
-/// with the peak `A` lowered to `sqrt(J (fmax - f0))` when `accel` is out of
-/// reach. `a` is symmetric about `T / 2`, so with `G(u) = ∫0^u min(J s, A) ds`,
-/// `f(t) = f0 + G(t)` on the first half and `fmax - G(T - t)` on the second.
-fn jerk_model(j: &JerkLimited) -> Model {
-    let (f0, fmax, jerk) = (j.fmin, j.fmax, j.jerk);
-    let dv = fmax - f0;
-    let peak = j.accel.min((jerk * dv).sqrt());
-    let t_jerk = peak / jerk;
-    // The area under a(s) is peak * (T - t_jerk) = dv.
-    let t_ramp = dv / peak + t_jerk;
-    let g = move |u: f64| {
-        if u <= t_jerk {
-            jerk * u * u / 2.0
-        } else {
-            jerk * t_jerk * t_jerk / 2.0 + peak * (u - t_jerk)
-        }
-    };
-    Model {
-        f: Box::new(move |t| {
-            if t <= t_ramp / 2.0 {
-                f0 + g(t)
-            } else {
-                fmax - g(t_ramp - t)
-            }
-        }),
-        joints: vec![t_jerk, t_ramp / 2.0, t_ramp - t_jerk],
-        t_ramp,
-        fmax,
-    }
-}
-
-fn model_of(curve: &Curve) -> Model {
-    match curve {
-        Curve::Exponential(e) => exponential_model(e),
-        Curve::Linear(l) => linear_model(l),
-        Curve::ThreeStage(z) => Zeng::new(z).model(),
-        Curve::JerkLimited(j) => jerk_model(j),
-        other => panic!("expected a non-sigmoid curve, got {other:?}"),
-    }
-}
 
 // ---------------------------------------------------------------------------
 // The cases.
@@ -491,8 +169,8 @@ fn table(name: &str, spec: &Spec) -> Vec<u32> {
 }
 
 /// The independent length: `len`, or `ceil(N(T_ramp))`.
-fn expected_len(case: &Case, numeric: &Numeric) -> u32 {
-    let steps = numeric.ramp_steps();
+fn expected_len(case: &Case, model: &Model) -> u32 {
+    let steps = model.ramp_steps();
     if !case.derived_len {
         let given = case.spec.len();
         assert!(
@@ -526,25 +204,25 @@ fn expected_len(case: &Case, numeric: &Numeric) -> u32 {
 /// prefix sum within half a tick of the exact edge. Returns the length and
 /// the worst edge error, with the edge where it occurs.
 fn check_edges(case: &Case) -> (u32, f64, usize) {
-    let model = model_of(&case.spec.curve);
-    let numeric = Numeric::new(&model);
-    let len = expected_len(case, &numeric);
+    let model = oracle::model(&case.spec.curve);
+    let len = expected_len(case, &model);
     let periods = table(case.name, &case.spec);
     assert_eq!(
         periods.len(),
         len as usize,
         "{}: expected {len} entries (the model's ramp takes {} steps), got {}",
         case.name,
-        numeric.ramp_steps(),
+        model.ramp_steps(),
         periods.len()
     );
     assert_eq!(case.spec.len(), len, "{}: Spec::len()", case.name);
     let scale = scale(&case.spec);
     let mut edge = 0u64;
     let mut worst = (0.0f64, 0usize);
+    let times = model.times(periods.len());
     for (k, &p) in periods.iter().enumerate() {
         edge += u64::from(p);
-        let exact = numeric.time_of((k + 1) as f64) * scale;
+        let exact = times[k + 1] * scale;
         let error = edge as f64 - exact;
         assert!(
             error.abs() <= TOLERANCE_TICKS,
@@ -630,18 +308,18 @@ fn left_endpoint_entries_are_the_rounded_frequency_at_each_edge() {
             .spec
             .with_discretization(Discretization::LeftEndpoint)
             .with_rounding(Rounding::Nearest);
-        let model = model_of(&spec.curve);
-        let numeric = Numeric::new(&model);
+        let model = oracle::model(&spec.curve);
         let periods = table(case.name, &spec);
         assert_eq!(
             periods.len(),
-            expected_len(case, &numeric) as usize,
+            expected_len(case, &model) as usize,
             "{}: left_endpoint length",
             case.name
         );
         let scale = scale(&spec);
+        let times = model.times(periods.len());
         for (k, &p) in periods.iter().enumerate() {
-            let exact = scale / model.freq(numeric.time_of(k as f64));
+            let exact = scale / model.freq(times[k]);
             assert!(
                 (p as f64 - exact).abs() <= TOLERANCE_TICKS,
                 "{}: expected left_endpoint entry {k} to be {exact:.6} ticks rounded, got {p}",
@@ -651,58 +329,59 @@ fn left_endpoint_entries_are_the_rounded_frequency_at_each_edge() {
     }
 }
 
-/// The slope of `f` just left and just right of `t`, from each side's own formula.
-fn one_sided_slopes(left: impl Fn(f64) -> f64, right: impl Fn(f64) -> f64, t: f64) -> (f64, f64) {
-    let h = 1e-6 * t.max(1e-3);
-    (
-        (left(t + h) - left(t - h)) / (2.0 * h),
-        (right(t + h) - right(t - h)) / (2.0 * h),
-    )
+/// The slope of `f` just left and just right of `t`, by one-sided differences.
+fn one_sided_slopes(f: impl Fn(f64) -> f64, t: f64) -> (f64, f64) {
+    let h = 1e-7 * t.max(1e-3);
+    ((f(t) - f(t - h)) / h, (f(t + h) - f(t)) / h)
 }
 
 #[test]
 fn three_stage_joints_are_smooth_in_the_model_and_in_the_tables() {
     for shape in [12.0, -5.0, 2.0, -13.0] {
-        let z = Zeng::new(&zeng(shape));
+        let curve = zeng(shape);
+        let model = oracle::model(&Curve::ThreeStage(curve));
         let name = format!("three_stage shape {shape}");
+        let &[t1, t2] = model.joints() else {
+            panic!("{name}: expected two joints, got {:?}", model.joints());
+        };
+        let (tc, a) = (model.t_ramp, curve.accel);
+        let f = |t: f64| model.freq(t);
         // Value continuity at the joints, and the frequencies they name.
-        for (t, left, right) in [
-            (z.t1, z.stage1(z.t1), z.stage2(z.t1)),
-            (z.t2, z.stage2(z.t2), z.stage3(z.t2)),
-        ] {
-            assert!(
-                (left - right).abs() < 1e-9 * z.fc,
-                "{name}: expected f continuous at t = {t}, got {left} and {right}"
-            );
+        for (t, named) in [(t1, curve.f1), (t2, curve.f2), (tc, curve.fmax)] {
+            let h = 1e-9 * t;
+            for (side, value) in [("left", f(t - h)), ("right", f(t))] {
+                assert!(
+                    (value - named).abs() < 1e-9 * curve.fmax + a * h,
+                    "{name}: expected f = {named} at t = {t} from the {side}, got {value}"
+                );
+            }
         }
-        assert!((z.stage1(z.t1) - 400.0).abs() < 1e-9, "{name}: f(t1) = f1");
-        assert!((z.stage2(z.t2) - 900.0).abs() < 1e-9, "{name}: f(t2) = f2");
-        assert!((z.stage3(z.tc) - 1200.0).abs() < 1e-9, "{name}: f(tc) = fc");
         // Slope continuity: both sides equal `a` at t1 and t2, and 0 at tc.
-        let (l1, r1) = one_sided_slopes(|t| z.stage1(t), |t| z.stage2(t), z.t1);
-        let (l2, r2) = one_sided_slopes(|t| z.stage2(t), |t| z.stage3(t), z.t2);
-        let (l3, _) = one_sided_slopes(|t| z.stage3(t), |_| z.fc, z.tc);
+        let (l1, r1) = one_sided_slopes(f, t1);
+        let (l2, r2) = one_sided_slopes(f, t2);
+        let (l3, _) = one_sided_slopes(f, tc);
         for (what, slope, expected) in [
-            ("left of t1", l1, z.a),
-            ("right of t1", r1, z.a),
-            ("left of t2", l2, z.a),
-            ("right of t2", r2, z.a),
+            ("left of t1", l1, a),
+            ("right of t1", r1, a),
+            ("left of t2", l2, a),
+            ("right of t2", r2, a),
             ("at tc", l3, 0.0),
         ] {
             assert!(
-                (slope - expected).abs() < 1e-4 * z.a,
+                (slope - expected).abs() < 1e-4 * a,
                 "{name}: expected df/dt {what} to be {expected}, got {slope}"
             );
         }
         // Approaching fc, the slope falls linearly to 0 (the paper's a/4b would
         // leave it at a/2 with a jump in f).
         for fraction in [0.5, 0.1, 0.01] {
-            let t = z.tc - fraction * (z.tc - z.t2);
-            let (slope, _) = one_sided_slopes(|t| z.freq(t), |t| z.freq(t), t);
+            let t = tc - fraction * (tc - t2);
+            let (left, right) = one_sided_slopes(f, t);
+            let slope = (left + right) / 2.0;
             assert!(
-                (slope - fraction * z.a).abs() < 1e-4 * z.a,
+                (slope - fraction * a).abs() < 1e-4 * a,
                 "{name}: expected df/dt = {} at {fraction} of the parabola before tc, got {slope}",
-                fraction * z.a
+                fraction * a
             );
         }
 
@@ -711,20 +390,20 @@ fn three_stage_joints_are_smooth_in_the_model_and_in_the_tables() {
         let spec = Spec::new(Curve::ThreeStage(zeng(shape)), Timer::new(1_000_000));
         let periods = table(&name, &spec);
         let scale = scale(&spec);
-        let model = z.model();
-        let numeric = Numeric::new(&model);
         let edges: Vec<f64> = std::iter::once(0.0)
             .chain(periods.iter().scan(0u64, |s, &p| {
                 *s += u64::from(p);
                 Some(*s as f64)
             }))
             .collect();
-        let exact: Vec<f64> = (0..=periods.len())
-            .map(|k| numeric.time_of(k as f64) * scale)
+        let exact: Vec<f64> = model
+            .times(periods.len())
+            .into_iter()
+            .map(|t| t * scale)
             .collect();
         let len = periods.len();
         let mut linear_windows = 0;
-        for (joint, t) in [("t1", z.t1), ("t2", z.t2), ("tc", z.tc)] {
+        for (joint, t) in [("t1", t1), ("t2", t2), ("tc", tc)] {
             // The step in which the joint falls.
             let k = exact.partition_point(|&e| e <= t * scale).saturating_sub(1);
             for i in k.saturating_sub(3)..(k + 4).min(len) {
@@ -765,20 +444,20 @@ fn three_stage_joints_are_smooth_in_the_model_and_in_the_tables() {
                 );
                 if joint == "tc" {
                     assert!(
-                        from_table.abs() < 0.1 * z.a,
+                        from_table.abs() < 0.1 * a,
                         "{name}: expected the acceleration to vanish near fc, got {from_table:.1} \
                          Hz/s over steps {i}..{}",
                         i + 2 * m
                     );
                 }
                 // Both windows inside the linear stage: the acceleration is `a`.
-                let inside = |t: f64| t >= z.t1 * scale && t <= z.t2 * scale;
+                let inside = |t: f64| t >= t1 * scale && t <= t2 * scale;
                 if inside(exact[i]) && inside(exact[i + 2 * m]) {
                     assert!(
-                        (from_table - z.a).abs() <= allowed + 1e-6 * z.a,
+                        (from_table - a).abs() <= allowed + 1e-6 * a,
                         "{name}: expected {} Hz/s in the linear stage (within {allowed:.1}), \
                          got {from_table:.1} over steps {i}..{}",
-                        z.a,
+                        a,
                         i + 2 * m
                     );
                     linear_windows += 1;
@@ -795,8 +474,7 @@ fn three_stage_joints_are_smooth_in_the_model_and_in_the_tables() {
 #[test]
 fn seed_001_figures() {
     let e = seed001();
-    let model = exponential_model(&e);
-    let numeric = Numeric::new(&model);
+    let model = oracle::model(&Curve::Exponential(e));
     let rise = model.t_ramp;
     let tau = rise / ((15_000.0f64 - 500.0) / (15_000.0 - 10_000.0)).ln();
     // The seed's figures, to the digits it gives.
@@ -806,7 +484,7 @@ fn seed_001_figures() {
         "19.745",
         "rise time in ms: {rise}"
     );
-    assert!((numeric.ramp_steps() - 120.0).abs() < 1e-9);
+    assert!((model.ramp_steps() - 120.0).abs() < 1e-9);
     // Production's figures agree with the independent ones.
     assert!(
         (e.tau() - tau).abs() < 1e-12 * tau,
@@ -895,9 +573,9 @@ fn check_segments(name: &str, spec: &Spec, pairs: &[(u32, u32)], figures: &Segme
     // Independently: segment i spans [i T/n, (i+1) T/n] of the ramp's duration
     // T = t(len); its count is the step count at its end, rounded, minus the
     // one at its start; its period is its duration over its count.
-    let model = model_of(&spec.curve);
-    let numeric = Numeric::new(&model);
-    let duration = numeric.time_of(len as f64);
+    let model = oracle::model(&spec.curve);
+    let times = model.times(len as usize);
+    let duration = times[len as usize];
     let dt = duration / n as f64;
     let scale = scale(spec);
     let (mut before, mut played_end) = (0u32, 0u64);
@@ -905,7 +583,7 @@ fn check_segments(name: &str, spec: &Spec, pairs: &[(u32, u32)], figures: &Segme
         let after = if i + 1 == pairs.len() {
             len
         } else {
-            numeric.steps((i + 1) as f64 * dt).round() as u32
+            model.steps((i + 1) as f64 * dt).round() as u32
         };
         assert_eq!(
             count,
@@ -917,7 +595,7 @@ fn check_segments(name: &str, spec: &Spec, pairs: &[(u32, u32)], figures: &Segme
         if spec.rounding == Rounding::Diffuse {
             // Diffused: the segment's last step ends as near its exact edge
             // as a whole period repeated `count` times allows.
-            let end = numeric.time_of(after as f64) * scale;
+            let end = times[after as usize] * scale;
             assert!(
                 (played_end as f64 - end).abs() <= count as f64 / 2.0 + 1e-6,
                 "{name}, {n} segments: expected segment {i} to end within {} ticks of \

@@ -5,21 +5,22 @@
 //! mode promises each edge within 0.5 tick of the exact pulse time `t(k)`, the
 //! solution of `N(t) = ∫0^t f = k`, scaled to ticks by `timer_hz / ticks_per_step`.
 //!
-//! The exact times here are computed independently of `profile-core`: the
-//! time-domain sigmoid, `f(t) = fmin + (fmax - fmin) / (1 + exp(-flexible (t -
-//! T/2) / (T/2)))` over `[0, T]` with `T = len / (fmin + (fmax - fmin) / 2)`
-//! so that `len` steps fit, is written out here, its integral `N`
-//! is taken numerically (composite 5-point Gauss-Legendre, summed with
-//! compensation), and each `t(k)` is found by safeguarded Newton iteration on
-//! that numeric `N` inside the panel that brackets `k`. The closed-form
-//! softplus expression that production uses appears nowhere. The numerical
-//! error is measured, not assumed: every case is solved on two panel grids and
-//! the two answers must agree far inside the slack the assertions allow.
+//! The exact times come from `common::oracle`, which shares no code with
+//! `profile-core`: the time-domain sigmoid, `f(t) = fmin + (fmax - fmin) / (1
+//! + exp(-flexible (t - T/2) / (T/2)))` over `[0, T]`, is written out there
+//! with `T` solved from the numeric integral so that `len` steps fit, and each
+//! `t(k)` is found on that numeric `N`. The closed-form softplus expression
+//! that production uses appears nowhere. The oracle's accuracy is checked, not
+//! assumed: the sigmoid is symmetric, so `T` must be `len` over the mean of
+//! `fmin` and `fmax`, and the last edge, found step by step, must land on `T`.
 //!
 //! Also checked: `left_endpoint` entries against `1 / f(t(k))` under `nearest`
 //! and `truncate`, and that plain truncation (the seed's C cast) drifts by about
 //! -500 ticks over the orange ramp while diffusion does not drift at all.
 
+mod common;
+
+use common::oracle::{self, Model};
 use stepper_profiles::{Arithmetic, Curve, Discretization, Rounding, Sigmoid, Spec, Timer, Word};
 
 /// What a correct edge may miss its exact time by: half a tick, plus room
@@ -29,9 +30,9 @@ const EDGE_TOLERANCE_TICKS: f64 = 0.5 + 1e-6;
 /// Numerical slack on one exact period, for the `left_endpoint` checks.
 const SLACK_TICKS: f64 = 1e-6;
 
-/// How far the reference may move when its grid is refined, in ticks. Well
-/// under [`SLACK_TICKS`], so that the slack covers the reference's own error.
-const REFERENCE_AGREEMENT_TICKS: f64 = 1e-7;
+/// How far the oracle's own figures may disagree with each other, in ticks.
+/// Well under [`SLACK_TICKS`], so that the slack covers the oracle's error.
+const ORACLE_AGREEMENT_TICKS: f64 = 1e-7;
 
 /// One table to check.
 #[derive(Clone, Copy, Debug)]
@@ -116,187 +117,32 @@ const OTHERS: [Case; 7] = [
     },
 ];
 
-/// Nodes and weights of 5-point Gauss-Legendre quadrature on `[-1, 1]`.
-const GAUSS_5: [(f64, f64); 5] = [
-    (0.0, 0.568_888_888_888_888_9),
-    (-0.538_469_310_105_683_1, 0.478_628_670_499_366_5),
-    (0.538_469_310_105_683_1, 0.478_628_670_499_366_5),
-    (-0.906_179_845_938_664, 0.236_926_885_056_189_08),
-    (0.906_179_845_938_664, 0.236_926_885_056_189_08),
-];
-
-/// The time-domain sigmoid (the article's S over the step index, stretched
-/// over `[0, T]` so that `len` steps fit) and its numeric step count.
-struct Reference {
-    fmin: f64,
-    fmax: f64,
-    flexible: f64,
-    /// `T = len / (fmin + (fmax - fmin) / 2)`.
-    duration: f64,
-    /// Panel boundaries `t_j`, evenly spaced over `[0, T]`.
-    edges: Vec<f64>,
-    /// `N(t_j)`, accumulated panel by panel.
-    steps_at_edges: Vec<f64>,
+/// The oracle's model of `case`'s curve.
+fn model(case: &Case) -> Model {
+    oracle::sigmoid(case.fmin, case.fmax, case.flexible, case.len)
 }
 
-impl Reference {
-    /// Integrates the curve of `case` over `panels` equal panels.
-    fn new(case: &Case, panels: usize) -> Self {
-        let duration = case.len as f64 / (case.fmin + (case.fmax - case.fmin) / 2.0);
-        let mut reference = Reference {
-            fmin: case.fmin,
-            fmax: case.fmax,
-            flexible: case.flexible,
-            duration,
-            edges: Vec::with_capacity(panels + 1),
-            steps_at_edges: Vec::with_capacity(panels + 1),
-        };
-        let width = duration / panels as f64;
-        // Neumaier-compensated running sum of the panel integrals.
-        let (mut sum, mut compensation) = (0.0f64, 0.0f64);
-        let mut previous = 0.0;
-        reference.edges.push(0.0);
-        reference.steps_at_edges.push(0.0);
-        for j in 1..=panels {
-            let edge = if j == panels {
-                duration
-            } else {
-                j as f64 * width
-            };
-            let area = reference.integral(previous, edge);
-            let total = sum + area;
-            compensation += if sum.abs() >= area.abs() {
-                (sum - total) + area
-            } else {
-                (area - total) + sum
-            };
-            sum = total;
-            reference.edges.push(edge);
-            reference.steps_at_edges.push(sum + compensation);
-            previous = edge;
-        }
-        reference
-    }
-
-    /// `f(t) = fmin + (fmax - fmin) / (1 + exp(-flexible (t - T/2) / (T/2)))`, in Hz.
-    fn freq(&self, t: f64) -> f64 {
-        let half = self.duration / 2.0;
-        let x = -self.flexible * (t - half) / half;
-        self.fmin + (self.fmax - self.fmin) / (1.0 + x.exp())
-    }
-
-    /// `∫a^b f` by 5-point Gauss-Legendre.
-    fn integral(&self, a: f64, b: f64) -> f64 {
-        let (mid, half) = ((a + b) / 2.0, (b - a) / 2.0);
-        half * GAUSS_5
-            .iter()
-            .map(|&(node, weight)| weight * self.freq(mid + half * node))
-            .sum::<f64>()
-    }
-
-    /// The index of the panel holding `t`.
-    fn panel_of(&self, t: f64) -> usize {
-        let panels = self.edges.len() - 1;
-        self.edges.partition_point(|&e| e <= t).clamp(1, panels) - 1
-    }
-
-    /// `N(t)`, the number of steps taken by time `t`.
-    fn steps(&self, t: f64) -> f64 {
-        let j = self.panel_of(t);
-        self.steps_at_edges[j] + self.integral(self.edges[j], t)
-    }
-
-    /// Steps in the whole ramp, `N(T)`.
-    fn total_steps(&self) -> f64 {
-        *self.steps_at_edges.last().expect("at least one panel")
-    }
-
-    /// `t(k)`: the time `N` reaches `k`, by Newton's method on `N` (whose
-    /// derivative is `f`) inside the panel that brackets `k`, bisecting
-    /// whenever a Newton step would leave the shrinking bracket.
-    fn time_of_step(&self, k: f64) -> f64 {
-        let panels = self.edges.len() - 1;
-        let j = self
-            .steps_at_edges
-            .partition_point(|&n| n < k)
-            .clamp(1, panels)
-            - 1;
-        let (mut lo, mut hi) = (self.edges[j], self.edges[j + 1]);
-        let (n_lo, n_hi) = (self.steps_at_edges[j], self.steps_at_edges[j + 1]);
-        let mut t = if n_hi > n_lo {
-            lo + (hi - lo) * ((k - n_lo) / (n_hi - n_lo)).clamp(0.0, 1.0)
-        } else {
-            lo
-        };
-        for _ in 0..200 {
-            let g = self.steps(t) - k;
-            if g == 0.0 {
-                return t;
-            }
-            if g < 0.0 {
-                lo = t;
-            } else {
-                hi = t;
-            }
-            let mut next = t - g / self.freq(t);
-            if !(next > lo && next < hi) {
-                next = lo + (hi - lo) / 2.0;
-            }
-            if (next - t).abs() <= 2.0 * f64::EPSILON * t.abs().max(f64::MIN_POSITIVE) {
-                return next;
-            }
-            t = next;
-        }
-        panic!("expected the reference root finder to converge for N(t) = {k}");
-    }
-
-    /// `t(0), t(1), ..., t(len)`.
-    fn pulse_times(&self, len: u32) -> Vec<f64> {
-        (0..=len)
-            .map(|k| match k {
-                0 => 0.0,
-                k if k == len => self.duration,
-                k => self.time_of_step(k as f64),
-            })
-            .collect()
-    }
-}
-
-/// Panels for a case: enough that each spans at most 0.1 of the logistic's
-/// argument, so 5-point Gauss-Legendre is exact to rounding.
-fn panels_for(case: &Case) -> usize {
-    (20.0 * case.flexible).ceil().max(256.0) as usize
-}
-
-/// Exact pulse times of `case`, after checking the integration that gives them.
+/// Exact pulse times `t(0..=len)` of `case`, after checking the oracle that
+/// gives them.
 fn exact_times(case: &Case) -> Vec<f64> {
-    let panels = panels_for(case);
-    let coarse = Reference::new(case, panels);
-    let fine = Reference::new(case, 3 * panels);
-    for reference in [&coarse, &fine] {
-        let total = reference.total_steps();
-        assert!(
-            (total - case.len as f64).abs() <= 1e-9,
-            "{}: expected the numeric integral N(T) to equal len = {} to 1e-9, got {total}; \
-             the reference is not accurate enough to judge half-tick edges",
-            case.name,
-            case.len
-        );
-    }
-    let times = coarse.pulse_times(case.len);
-    let check = fine.pulse_times(case.len);
+    let model = model(case);
     let scale = case.scale();
-    let worst = times
-        .iter()
-        .zip(&check)
-        .map(|(a, b)| ((a - b) * scale).abs())
-        .fold(0.0, f64::max);
+    let symmetric = case.len as f64 / (case.fmin + (case.fmax - case.fmin) / 2.0);
+    let off = ((model.t_ramp - symmetric) * scale).abs();
     assert!(
-        worst <= REFERENCE_AGREEMENT_TICKS,
-        "{}: expected the reference pulse times on {panels} and {} panels to agree within \
-         {REFERENCE_AGREEMENT_TICKS} tick, they differ by {worst} tick",
+        off <= ORACLE_AGREEMENT_TICKS,
+        "{}: expected the oracle's duration {} s to be len over the mean frequency, \
+         {symmetric} s, within {ORACLE_AGREEMENT_TICKS} tick, off by {off} tick",
         case.name,
-        3 * panels
+        model.t_ramp
+    );
+    let times = model.times(case.len as usize);
+    let last = ((times[case.len as usize] - model.t_ramp) * scale).abs();
+    assert!(
+        last <= ORACLE_AGREEMENT_TICKS,
+        "{}: expected the oracle's last edge on its duration within \
+         {ORACLE_AGREEMENT_TICKS} tick, off by {last} tick",
+        case.name
     );
     times
 }
@@ -392,7 +238,7 @@ fn other_timers_and_shapes_edges_within_half_a_tick() {
 /// Checks the `left_endpoint` table of `case` under `rounding` against
 /// `scale / f(t(k))` with `accept(entry, exact)`.
 fn check_left_endpoint(case: &Case, rounding: Rounding, accept: fn(f64, f64) -> bool) {
-    let reference = Reference::new(case, panels_for(case));
+    let model = model(case);
     let times = exact_times(case);
     let spec = case
         .spec()
@@ -407,7 +253,7 @@ fn check_left_endpoint(case: &Case, rounding: Rounding, accept: fn(f64, f64) -> 
         .iter()
         .enumerate()
         .filter_map(|(k, &entry)| {
-            let exact = scale / reference.freq(times[k]);
+            let exact = scale / model.freq(times[k]);
             (!accept(entry as f64, exact))
                 .then(|| format!("  entry {k}: table {entry}, exact 1/f(t(k)) = {exact:.6} ticks"))
         })

@@ -148,6 +148,21 @@ impl Model {
         self.integral(0.0, self.t_ramp)
     }
 
+    /// `N(t)`: the steps taken by time `t`.
+    pub fn steps(&self, t: f64) -> f64 {
+        self.integral(0.0, t)
+    }
+
+    /// Where the curve changes formula, in `(0, t_ramp)`, sorted.
+    pub fn joints(&self) -> &[f64] {
+        &self.joints
+    }
+
+    /// `t(0) = 0` and the times of pulse edges `1..=n`, in s.
+    pub fn times(&self, n: usize) -> Vec<f64> {
+        std::iter::once(0.0).chain(self.edges(n)).collect()
+    }
+
     /// The times of pulse edges `1..=n`, in s: `t(k)` with `N(t(k)) = k`.
     pub fn edges(&self, n: usize) -> Vec<f64> {
         let mut out = Vec::with_capacity(n);
