@@ -9,43 +9,9 @@
 
 mod common;
 
-use common::cases;
+use common::{Event, cases, events, falling};
 use profile_core::player::{Axes, AxesStart, Buffered, Compressed, Direction, Player, Ramp};
 use proptest::prelude::*;
-
-/// A non-increasing table (slow to fast), as generated tables are.
-fn table() -> impl Strategy<Value = Vec<u16>> {
-    (1usize..80, 200u16..=u16::MAX).prop_flat_map(|(len, start)| {
-        proptest::collection::vec(0u16..600, len).prop_map(move |drops| {
-            let mut p = u32::from(start);
-            drops
-                .iter()
-                .map(|d| {
-                    let v = p as u16;
-                    p = p.saturating_sub(u32::from(*d)).max(2);
-                    v
-                })
-                .collect()
-        })
-    })
-}
-
-/// What happens before an edge, by the count of edges handed out so far.
-#[derive(Clone, Copy, Debug)]
-enum Event {
-    Stop,
-    Cruise(u32),
-}
-
-fn events() -> impl Strategy<Value = Vec<(usize, Event)>> {
-    proptest::collection::vec(
-        (
-            0usize..400,
-            prop_oneof![Just(Event::Stop), (0u32..80).prop_map(Event::Cruise)],
-        ),
-        0..3,
-    )
-}
 
 /// 1 to 4 axes' moves; now and then two of them equal, for the lead's ties.
 fn deltas() -> impl Strategy<Value = Vec<i64>> {
@@ -325,7 +291,7 @@ proptest! {
     /// count and its final position; the lead's periods a single player's.
     #[test]
     fn every_axis_steps_where_the_rule_says(
-        accel in table(),
+        accel in falling(1usize..80, 600, 2),
         from in proptest::collection::vec(-1000i64..1000, 4),
         deltas in deltas(),
     ) {
@@ -338,10 +304,10 @@ proptest! {
     /// the positions exact after every step.
     #[test]
     fn stops_and_cruise_changes_keep_the_positions_exact(
-        accel in table(),
+        accel in falling(1usize..80, 600, 2),
         from in proptest::collection::vec(-1000i64..1000, 4),
         deltas in deltas(),
-        events in events(),
+        events in events(0usize..400),
     ) {
         let n = deltas.len();
         by_len!(play, n, &accel, &from[..n], &deltas, &events)?;
@@ -351,10 +317,10 @@ proptest! {
     /// period after it, each step at its time.
     #[test]
     fn buffered_axes_step_on_their_edges(
-        accel in table(),
+        accel in falling(1usize..80, 600, 2),
         from in proptest::collection::vec(-1000i64..1000, 4),
         deltas in deltas(),
-        events in events(),
+        events in events(0usize..400),
     ) {
         let n = deltas.len();
         by_len!(play_buffered, n, &accel, &from[..n], &deltas, &events)?;
@@ -363,7 +329,7 @@ proptest! {
     /// The player of compressed tables leads the same edges.
     #[test]
     fn a_compressed_lead_gives_the_same_edges(
-        accel in table(),
+        accel in falling(1usize..80, 600, 2),
         deltas in proptest::collection::vec(-300i64..300, 3),
     ) {
         let runs: Vec<[u16; 5]> = accel.iter().map(|&p| [1, p, 0, 0, 0]).collect();

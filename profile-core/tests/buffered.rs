@@ -8,49 +8,14 @@
 
 mod common;
 
-use common::cases;
+use common::{Event, cases, events, falling};
 use profile_core::player::{Axis, Buffered, Direction, Player, Ramp, Steps};
 use proptest::prelude::*;
-
-/// A non-increasing table (slow to fast), as generated tables are.
-fn table() -> impl Strategy<Value = Vec<u16>> {
-    (1usize..80, 200u16..=u16::MAX).prop_flat_map(|(len, start)| {
-        proptest::collection::vec(0u16..600, len).prop_map(move |drops| {
-            let mut p = u32::from(start);
-            drops
-                .iter()
-                .map(|d| {
-                    let v = p as u16;
-                    p = p.saturating_sub(u32::from(*d)).max(2);
-                    v
-                })
-                .collect()
-        })
-    })
-}
 
 /// Runs from a per-step table: each entry a run of one step, so that
 /// `Player::compressed` plays them.
 fn as_runs(t: &[u16]) -> Vec<[u16; 5]> {
     t.iter().map(|&p| [1, p, 0, 0, 0]).collect()
-}
-
-/// What happens before the step an interrupt hands out, by the count of
-/// periods handed out so far.
-#[derive(Clone, Copy, Debug)]
-enum Event {
-    Stop,
-    Cruise(u32),
-}
-
-fn events() -> impl Strategy<Value = Vec<(usize, Event)>> {
-    proptest::collection::vec(
-        (
-            2usize..200,
-            prop_oneof![Just(Event::Stop), (0u32..80).prop_map(Event::Cruise)],
-        ),
-        0..3,
-    )
 }
 
 /// The timer: a counter that counts the interval it loaded, and a reload
@@ -146,11 +111,11 @@ proptest! {
     /// Per-step tables, with and without a deceleration table of its own.
     #[test]
     fn every_step_lands_at_the_sum_of_the_periods_before_it(
-        accel in table(),
-        decel in table(),
+        accel in falling(1usize..80, 600, 2),
+        decel in falling(1usize..80, 600, 2),
         own_decel in any::<bool>(),
         steps in 0u32..400,
-        events in events(),
+        events in events(2usize..200),
     ) {
         let make = || if own_decel {
             Player::with_decel(Ramp::steps(&accel), Ramp::steps(&decel))
@@ -166,9 +131,9 @@ proptest! {
     /// Compressed ramps, played by the player of compressed tables.
     #[test]
     fn compressed_ramps_land_on_the_same_edges(
-        accel in table(),
+        accel in falling(1usize..80, 600, 2),
         steps in 0u32..400,
-        events in events(),
+        events in events(2usize..200),
     ) {
         let runs = as_runs(&accel);
         let periods = plain(Player::new(Ramp::steps(&accel)), steps, &events);
@@ -194,7 +159,7 @@ proptest! {
     /// one behind what it has handed out until the last step is taken.
     #[test]
     fn an_axis_is_where_its_pin_has_taken_it(
-        accel in table(),
+        accel in falling(1usize..80, 600, 2),
         from in -1000i64..1000,
         delta in -300i64..300,
     ) {

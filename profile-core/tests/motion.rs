@@ -19,26 +19,9 @@
 
 mod common;
 
-use common::cases;
+use common::{cases, falling};
 use profile_core::player::{Axis, Direction, Player, Ramp};
 use proptest::prelude::*;
-
-/// A table ordered slow to fast with ties, as generated tables are.
-fn table() -> impl Strategy<Value = Vec<u16>> {
-    (1usize..60, 200u16..=u16::MAX).prop_flat_map(|(len, start)| {
-        proptest::collection::vec(0u16..300, len).prop_map(move |drops| {
-            let mut p = u32::from(start);
-            drops
-                .iter()
-                .map(|d| {
-                    let v = p as u16;
-                    p = p.saturating_sub(u32::from(*d)).max(1);
-                    v
-                })
-                .collect()
-        })
-    })
-}
 
 #[derive(Clone, Debug)]
 enum Op {
@@ -224,7 +207,7 @@ proptest! {
     #![proptest_config(ProptestConfig::with_cases(cases()))]
 
     #[test]
-    fn new_targets_runs_and_stops_never_jump_and_arrive(table in table(), ops in ops()) {
+    fn new_targets_runs_and_stops_never_jump_and_arrive(table in falling(1usize..60, 300, 1), ops in ops()) {
         check(&table, &ops).map_err(TestCaseError::fail)?;
     }
 }

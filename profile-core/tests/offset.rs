@@ -9,7 +9,7 @@
 
 mod common;
 
-use common::cases;
+use common::{Shape, cases};
 use profile_core::player::{Compressed, Player, Ramp};
 use profile_core::runs::{Expand, LinearRun as RunWords, with_offset};
 use proptest::prelude::*;
@@ -54,13 +54,6 @@ fn runs(low: u32) -> impl Strategy<Value = Vec<[u16; 5]>> {
         .prop_filter("every period at least `low`", move |r| {
             Expand::new(r).all(|p| p >= low)
         })
-}
-
-#[derive(Clone, Debug)]
-enum Shape {
-    Steps(Vec<u32>, u32),
-    Segments(Vec<(u32, u32)>),
-    Runs(Vec<[u16; 5]>),
 }
 
 #[derive(Clone, Debug)]

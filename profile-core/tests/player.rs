@@ -257,7 +257,7 @@ fn diffused_tables_play_exactly() {
 mod common;
 
 use common::reference::Reference;
-use common::{any_runs, any_table, cases};
+use common::{Shape, any_runs, cases, shape};
 use profile_core::TableWord;
 
 /// What a random operation sequence does to a player.
@@ -267,27 +267,6 @@ enum Op {
     Play(u32),
     Stop,
     Cruise(u32),
-}
-
-/// A ramp description: a per-step table held `hold` steps per entry,
-/// segments with counts from 0 (empty segments included), or compressed
-/// runs (empty runs included).
-#[derive(Clone, Debug)]
-enum Shape {
-    Steps(Vec<u32>, u32),
-    Segments(Vec<(u32, u32)>),
-    Runs(Vec<[u16; 5]>),
-}
-
-fn shape() -> impl Strategy<Value = Shape> {
-    prop_oneof![
-        4 => (any_table(80), prop_oneof![4 => Just(1u32), 1 => 0u32..6])
-            .prop_map(|(t, hold)| Shape::Steps(t, hold)),
-        1 => (any_table(12), proptest::collection::vec(0u32..6, 12)).prop_map(|(t, counts)| {
-            Shape::Segments(t.iter().zip(counts).map(|(&p, c)| (p, c)).collect())
-        }),
-        1 => any_runs().prop_map(Shape::Runs),
-    ]
 }
 
 fn ops() -> impl Strategy<Value = Vec<Op>> {
@@ -454,8 +433,8 @@ fn compare_random(what: &str, cases: u32, ramps: impl Strategy<Value = (Shape, O
 /// sequences.
 #[test]
 fn plays_exactly_as_the_per_step_model() {
-    let decel = prop_oneof![1 => Just(None), 1 => shape().prop_map(Some)];
-    compare_random("planned player", cases() * 8, (shape(), decel));
+    let decel = prop_oneof![1 => Just(None), 1 => shape(80, 6, 1).prop_map(Some)];
+    compare_random("planned player", cases() * 8, (shape(80, 6, 1), decel));
 }
 
 /// The player of compressed tables ([`Player::compressed`]) plays every

@@ -3,7 +3,11 @@
 //! - [`reference`]: the unplanned reference model of the player;
 //! - [`cases`]: the number of random cases per property (`PROPTEST_CASES`);
 //! - [`any_table`] and [`any_runs`]: random per-step tables and compressed
-//!   runs.
+//!   runs; [`falling`]: random tables ordered slow to fast, as generated;
+//! - [`Shape`] and [`shape`]: a ramp of any kind (per-step and held,
+//!   segments, runs) described for a test to build;
+//! - [`Event`] and [`events`]: stops and cruise changes at random points of
+//!   a move.
 //!
 //! Every test crate that says `mod common;` compiles all of it but uses only
 //! part, hence the `dead_code` allowances.
@@ -11,6 +15,7 @@
 #[allow(dead_code)]
 pub mod reference;
 
+use core::ops::Range;
 use profile_core::runs::LinearRun as RunWords;
 use proptest::prelude::*;
 
@@ -63,4 +68,77 @@ pub fn any_runs() -> impl Strategy<Value = Vec<[u16; 5]>> {
             })
             .collect()
     })
+}
+
+/// A table ordered slow to fast, as generated tables are: a length drawn
+/// from `len`, a first period from 200 ticks to `u16::MAX`, each next one
+/// up to `max_drop` ticks shorter, none below `floor`.
+#[allow(dead_code)]
+pub fn falling(len: Range<usize>, max_drop: u16, floor: u32) -> impl Strategy<Value = Vec<u16>> {
+    (len, 200u16..=u16::MAX).prop_flat_map(move |(len, start)| {
+        proptest::collection::vec(0u16..max_drop, len).prop_map(move |drops| {
+            let mut p = u32::from(start);
+            drops
+                .iter()
+                .map(|d| {
+                    let v = p as u16;
+                    p = p.saturating_sub(u32::from(*d)).max(floor);
+                    v
+                })
+                .collect()
+        })
+    })
+}
+
+/// What happens before an edge of a move, by the count of edges handed out
+/// so far.
+#[allow(dead_code)]
+#[derive(Clone, Copy, Debug)]
+pub enum Event {
+    /// `stop()`.
+    Stop,
+    /// `set_cruise(position)`.
+    Cruise(u32),
+}
+
+/// Up to two events, each at a count of edges drawn from `at`, cruise
+/// positions from 0 to 79.
+#[allow(dead_code)]
+pub fn events(at: Range<usize>) -> impl Strategy<Value = Vec<(usize, Event)>> {
+    proptest::collection::vec(
+        (
+            at,
+            prop_oneof![Just(Event::Stop), (0u32..80).prop_map(Event::Cruise)],
+        ),
+        0..3,
+    )
+}
+
+/// A ramp described for a test to build: a per-step table held `hold`
+/// steps per entry, segments with their counts (empty ones included), or
+/// compressed runs (empty ones included).
+#[allow(dead_code)]
+#[derive(Clone, Debug)]
+pub enum Shape {
+    /// Periods, and the steps each is held.
+    Steps(Vec<u32>, u32),
+    /// `(period, count)` pairs.
+    Segments(Vec<(u32, u32)>),
+    /// Encoded runs.
+    Runs(Vec<[u16; 5]>),
+}
+
+/// Any [`Shape`]: per-step tables of up to `max_len` entries (weight 4,
+/// held 1 step or now and then 0 to 5), 12 segments of `0..max_count`
+/// steps (weight 1), runs (weight `runs`).
+#[allow(dead_code)]
+pub fn shape(max_len: usize, max_count: u32, runs: u32) -> impl Strategy<Value = Shape> {
+    prop_oneof![
+        4 => (any_table(max_len), prop_oneof![4 => Just(1u32), 1 => 0u32..6])
+            .prop_map(|(t, hold)| Shape::Steps(t, hold)),
+        1 => (any_table(12), proptest::collection::vec(0..max_count, 12)).prop_map(|(t, c)| {
+            Shape::Segments(t.iter().zip(c).map(|(&p, c)| (p, c)).collect())
+        }),
+        runs => any_runs().prop_map(Shape::Runs),
+    ]
 }
