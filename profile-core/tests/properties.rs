@@ -9,8 +9,10 @@
 //! reversed, absurd lengths, contradicting options): always a typed error
 //! or a table, never a panic, and bounded work.
 //!
-//! `PROPTEST_CASES` sets the cases per property (default 500); CI runs the
-//! default, `PROPTEST_CASES=20000` is the long run.
+//! `PROPTEST_CASES` sets the cases per property (default 500, 100 for the
+//! derived pull-out torque, 400 torques each); CI runs the default and
+//! 2000 per property from an optimised build, `PROPTEST_CASES=20000` is the
+//! long run.
 
 use profile_core::{
     Arithmetic, Curve, Discretization, Exponential, ExponentialExtent, JerkLimited, Linear,
@@ -23,6 +25,15 @@ fn cases() -> u32 {
         .ok()
         .and_then(|v| v.parse().ok())
         .unwrap_or(500)
+}
+
+/// `PROPTEST_CASES`, or 100: for the properties that compute hundreds of
+/// torques a case.
+fn torque_cases() -> u32 {
+    std::env::var("PROPTEST_CASES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(100)
 }
 
 /// Largest table generated in the valid-parameter properties.
@@ -469,7 +480,7 @@ mod motors {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig::with_cases(cases()))]
+        #![proptest_config(ProptestConfig::with_cases(torque_cases()))]
 
         /// Any valid windings, from watch motors to ones no one makes
         /// (short-circuit current far above and far below the set one): the

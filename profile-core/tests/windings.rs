@@ -45,16 +45,22 @@ fn chopped_torque(w: &Windings, poles: f64, omega: f64, lag: f64) -> f64 {
     let steps = 8000;
     let dt = turn / steps as f64;
     let decay = (-w.resistance * dt / w.inductance).exp();
+    // Every turn passes the same angles: the rotor's sine and cosine and
+    // the set currents, at the middle of each step of a turn.
+    let angles: Vec<(f64, f64, f64, f64)> = (0..steps)
+        .map(|k| {
+            let rotor = electrical * (k as f64 + 0.5) * dt;
+            let (ra, rb) = reference(w, rotor + lag);
+            (rotor.sin(), rotor.cos(), ra, rb)
+        })
+        .collect();
     let (mut ia, mut ib) = (0.0f64, 0.0f64);
     let mut sum = 0.0;
     // Eight turns: the currents settle within a few `L / R`, short against
     // these speeds' turns; the last turn is averaged.
     let turns = 8;
     for k in 0..turns * steps {
-        let t = (k as f64 + 0.5) * dt;
-        let rotor = electrical * t;
-        let field = rotor + lag;
-        let (ra, rb) = reference(w, field);
+        let (sin, cos, ra, rb) = angles[k % steps];
         let va = if ia < ra {
             w.supply_voltage
         } else {
@@ -67,34 +73,44 @@ fn chopped_torque(w: &Windings, poles: f64, omega: f64, lag: f64) -> f64 {
         };
         // Back-EMF of each phase; over one step the winding is an R-L
         // circuit under a constant voltage, solved exactly.
-        let (ea, eb) = (-km * omega * rotor.sin(), km * omega * rotor.cos());
+        let (ea, eb) = (-km * omega * sin, km * omega * cos);
         let (sa, sb) = ((va - ea) / w.resistance, (vb - eb) / w.resistance);
         ia = sa + (ia - sa) * decay;
         ib = sb + (ib - sb) * decay;
         if k >= (turns - 1) * steps {
-            sum += km * (ib * rotor.cos() - ia * rotor.sin());
+            sum += km * (ib * cos - ia * sin);
         }
     }
     sum / steps as f64 - w.detent_torque
 }
 
 /// The largest average torque over the lag: a scan, then a golden-section
-/// search around the best.
+/// search around the best, each torque computed once (the inner point kept
+/// from one bracket to the next is the golden ratio's).
 fn chopped_pull_out(w: &Windings, poles: f64, omega: f64) -> f64 {
     let f = |lag: f64| chopped_torque(w, poles, omega, lag);
     let scan = 24;
     let best = (1..scan)
-        .map(|k| PI * k as f64 / scan as f64)
-        .max_by(|a, b| f(*a).total_cmp(&f(*b)))
-        .unwrap();
+        .map(|k| {
+            let lag = PI * k as f64 / scan as f64;
+            (lag, f(lag))
+        })
+        .max_by(|a, b| a.1.total_cmp(&b.1))
+        .unwrap()
+        .0;
     let (mut lo, mut hi) = (best - PI / scan as f64, best + PI / scan as f64);
     let g = (5f64.sqrt() - 1.0) / 2.0;
+    let (mut a, mut b) = (hi - g * (hi - lo), lo + g * (hi - lo));
+    let (mut fa, mut fb) = (f(a), f(b));
     for _ in 0..20 {
-        let (a, b) = (hi - g * (hi - lo), lo + g * (hi - lo));
-        if f(a) < f(b) {
-            lo = a;
+        if fa < fb {
+            (lo, a, fa) = (a, b, fb);
+            b = lo + g * (hi - lo);
+            fb = f(b);
         } else {
-            hi = b;
+            (hi, b, fb) = (b, a, fa);
+            a = hi - g * (hi - lo);
+            fa = f(a);
         }
     }
     f(0.5 * (lo + hi)).max(0.0)
