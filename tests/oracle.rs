@@ -21,7 +21,7 @@
 //!   are periods that do not fit the word or ramps longer than `MAX_LEN`,
 //!   and most profiles must give a table.
 //!
-//! `ORACLE_CASES` sets the profiles per curve (default 150; CI runs 10 000
+//! `ORACLE_CASES` sets the profiles per curve (default 40; CI runs 10 000
 //! per curve from an optimised build).
 
 mod common;
@@ -43,7 +43,7 @@ fn cases() -> usize {
     std::env::var("ORACLE_CASES")
         .ok()
         .and_then(|v| v.parse().ok())
-        .unwrap_or(150)
+        .unwrap_or(40)
 }
 
 fn scale(spec: &Spec) -> f64 {
