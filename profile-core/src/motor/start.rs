@@ -211,11 +211,7 @@ impl Motor {
     /// `stretch` times as long.
     fn remedies(&self, makes: impl Fn(&Motor, f64) -> bool) -> Remedies {
         let damping = (self.damping_ratio < REMEDY_DAMPING_RATIO).then(|| {
-            let damped = Motor {
-                damping_ratio: REMEDY_DAMPING_RATIO,
-                ..*self
-            };
-            makes(&damped, 1.0)
+            makes(&self.with_damping_ratio(REMEDY_DAMPING_RATIO), 1.0)
         });
         Remedies {
             damping,
