@@ -28,10 +28,7 @@ const LOADS: [f64; 3] = [0.0, 1.0e-5, 2.0e-5];
 const MICROSTEPS: [u32; 2] = [1, 8];
 
 fn motor(load: f64, microsteps: u32) -> Motor {
-    Motor {
-        damping_ratio: 0.1,
-        ..common::motors::nema17(microsteps, load)
-    }
+    common::motors::nema17(microsteps, load).with_damping_ratio(0.1)
 }
 
 struct Case {

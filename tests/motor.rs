@@ -23,11 +23,9 @@ use stepper_profiles::period_table;
 /// frequency, a 2.0e-5 kg·m² load, `safety = 1.5`, `max_start_hz = 1200`
 /// full steps/s.
 fn nema17(microsteps: u32) -> Motor {
-    Motor {
-        safety: 1.5,
-        max_start_hz: Some(1200.0 * microsteps as f64),
-        ..common::motors::nema17(microsteps, 2.0e-5)
-    }
+    common::motors::nema17(microsteps, 2.0e-5)
+        .with_safety(1.5)
+        .with_max_start_hz(1200.0 * microsteps as f64)
 }
 
 /// A constant-acceleration ramp from 300 to 2000 full steps/s at `accel`
@@ -260,10 +258,7 @@ fn a_ramp_too_fast_loses_steps_and_the_check_refuses_it() {
         matches!(error, MotorError::Torque { step: 1, .. }),
         "{error}"
     );
-    let unsafe_motor = Motor {
-        safety: 1.0,
-        ..motor
-    };
+    let unsafe_motor = motor.with_safety(1.0);
     assert!(matches!(
         unsafe_motor.check(&spec, &table),
         Err(MotorError::Torque { step: 1, .. })
@@ -348,10 +343,8 @@ fn a_start_the_loaded_rotor_cannot_follow_is_an_error() {
     assert!(motor.check(&slow, &slow.table().unwrap().periods).is_ok());
 
     // Without `max_start_hz`, from the model: 1190 and 900 refused, 600 not.
-    let model = Motor {
-        max_start_hz: None,
-        ..motor
-    };
+    let mut model = motor;
+    model.max_start_hz = None;
     let error = model.check(&fast, &table).unwrap_err();
     let MotorError::Start {
         limit: StartLimit::Model { hz: limit },
@@ -375,10 +368,7 @@ fn a_start_the_loaded_rotor_cannot_follow_is_an_error() {
     );
     // The simulation predicts, without a safety factor: so does the check
     // here.
-    let model = Motor {
-        safety: 1.0,
-        ..model
-    };
+    let model = model.with_safety(1.0);
     for (fmin, follows) in [(600.0, true), (900.0, false), (1190.0, false)] {
         let spec = spec(fmin);
         let table = spec.table().unwrap().periods;
@@ -401,55 +391,45 @@ fn motor_parameters_are_checked() {
     let good = nema17(1);
     assert_eq!(good.validate(), Ok(()));
     let message = |m: Motor| m.validate().unwrap_err().to_string();
+    // `good` with one field changed.
+    let with = |change: fn(&mut Motor)| {
+        let mut m = good;
+        change(&mut m);
+        m
+    };
     for angle in [0.0, -1.8, f64::NAN, f64::INFINITY] {
-        let e = message(Motor {
-            step_angle: angle,
-            ..good
-        });
+        let mut m = good;
+        m.step_angle = angle;
+        let e = message(m);
         assert_eq!(
             e,
             format!("`step_angle` must be a finite number above 0 (got {angle})")
         );
     }
     assert_eq!(
-        message(Motor {
-            microsteps: 0,
-            ..good
-        }),
+        message(with(|m| m.microsteps = 0)),
         "`microsteps` must be at least 1 (got 0)"
     );
     assert_eq!(
-        message(Motor {
-            rotor_inertia: f64::NAN,
-            ..good
-        }),
+        message(with(|m| m.rotor_inertia = f64::NAN)),
         "`rotor_inertia` must be a finite number above 0 (got NaN)"
     );
     assert_eq!(
-        message(Motor {
-            load_inertia: -1e-6,
-            ..good
-        }),
+        message(good.with_load_inertia(-1e-6)),
         "`load_inertia` must be a finite number, 0 or more (got -0.000001)"
     );
     assert_eq!(
-        message(Motor {
-            safety: 0.99,
-            ..good
-        }),
+        message(good.with_safety(0.99)),
         "`safety` must be a finite number, 1 or more (got 0.99)"
     );
     assert_eq!(
-        message(Motor {
-            max_start_hz: Some(0.0),
-            ..good
-        }),
+        message(good.with_max_start_hz(0.0)),
         "`max_start_hz` must be a finite number above 0 (got 0)"
     );
-    let curve = |points: &[(f64, f64)]| Motor {
-        torque_curve: Some(TorqueCurve::new(points).unwrap()),
-        windings: None,
-        ..good
+    let curve = |points: &[(f64, f64)]| {
+        let mut m = good.with_torque_curve(TorqueCurve::new(points).unwrap());
+        m.windings = None;
+        m
     };
     assert_eq!(
         message(curve(&[(0.0, 0.4), (1000.0, 0.3), (1000.0, 0.2)])),
@@ -544,10 +524,8 @@ fn the_simulation_refuses_bad_input() {
         Err(SimError::TooManySteps { .. })
     ));
     // An invalid motor, a timer at 0 Hz.
-    let bad = Motor {
-        rotor_inertia: 0.0,
-        ..motor
-    };
+    let mut bad = motor;
+    bad.rotor_inertia = 0.0;
     assert_eq!(
         run(&bad, &spec, &table, 1e-5, 0.0),
         Err(SimError::Motor(MotorError::Invalid {
@@ -745,10 +723,7 @@ fn every_table_is_checked_at_its_start() {
     );
     let table = spec.table().unwrap().periods;
     assert_eq!(table.len(), 1);
-    let stuck = Motor {
-        friction: 10.0,
-        ..nema17(1)
-    };
+    let stuck = nema17(1).with_friction(10.0);
     let error = stuck.check(&spec, &table).unwrap_err();
     assert!(
         matches!(error, MotorError::Torque { step: 0, .. }),
@@ -783,11 +758,8 @@ fn every_table_is_checked_at_its_start() {
 #[test]
 fn the_check_never_passes_a_non_finite_torque() {
     let (spec, table) = ramp(2_000.0, 1);
-    let huge = Motor {
-        rotor_inertia: 1e308,
-        load_inertia: 1e308,
-        ..nema17(1)
-    };
+    let mut huge = nema17(1).with_load_inertia(1e308);
+    huge.rotor_inertia = 1e308;
     let error = huge.check(&spec, &table).unwrap_err();
     assert_eq!(
         error.to_string(),
@@ -796,10 +768,7 @@ fn the_check_never_passes_a_non_finite_torque() {
     );
     assert_eq!(error.key(), Key::LOAD_INERTIA);
     // A drag whose torque at the first entry's speed overflows.
-    let dragged = Motor {
-        damping: 1e308,
-        ..nema17(1)
-    };
+    let dragged = nema17(1).with_damping(1e308);
     let error = dragged.check(&spec, &table).unwrap_err();
     assert_eq!(
         error,
@@ -814,11 +783,8 @@ fn the_check_never_passes_a_non_finite_torque() {
          damping or torque is too large to compute with"
     );
     // An inertia too large to accelerate is refused, whatever it reads.
-    let heavy = Motor {
-        rotor_inertia: 1.7e308,
-        load_inertia: 0.0,
-        ..nema17(1)
-    };
+    let mut heavy = nema17(1).with_load_inertia(0.0);
+    heavy.rotor_inertia = 1.7e308;
     assert!(heavy.check(&spec, &table).is_err());
     assert_eq!(
         nema17(1).check(&spec, &[]),
@@ -893,11 +859,9 @@ fn the_simulation_refuses_unstable_steps_and_says_what_fits() {
         "{error}"
     );
     // The suggested options are always accepted, even for a stiff, damped rotor.
-    let stiff = Motor {
-        damping: 0.5,
-        torque_curve: TorqueCurve::new(&[(0.0, 4000.0), (2000.0, 3000.0), (4000.0, 100.0)]),
-        ..motor
-    };
+    let stiff = motor.with_damping(0.5).with_torque_curve(
+        TorqueCurve::new(&[(0.0, 4000.0), (2000.0, 3000.0), (4000.0, 100.0)]).unwrap(),
+    );
     let options = SimOptions::suggested(&stiff, &spec, &table);
     assert!(simulate::run(&stiff, &spec, &table, &options).is_ok());
 }
@@ -909,15 +873,9 @@ fn the_simulation_refuses_unstable_steps_and_says_what_fits() {
 /// ends of the move to the same damped rotor, passes them.
 #[test]
 fn electromagnetic_damping_calms_the_swing_the_check_cannot_see() {
-    let undamped = Motor {
-        max_start_hz: None,
-        safety: 1.0,
-        ..nema17(1)
-    };
-    let damped = Motor {
-        damping_ratio: 0.1,
-        ..undamped
-    };
+    let mut undamped = nema17(1).with_safety(1.0);
+    undamped.max_start_hz = None;
+    let damped = undamped.with_damping_ratio(0.1);
     // D = 2 ζ sqrt(K J), K = N_r T_hold.
     let k = 50.0 * 0.40;
     let d = 2.0 * 0.1 * (k * (5.4e-6f64 + 2.0e-5)).sqrt();
@@ -1026,11 +984,9 @@ fn no_damping_makes_the_model_unable_to_integrate() {
     let (spec, periods) = ramp(2000.0, 1);
     for damping in [0.0, 1e-3, 1.0, 1e3] {
         for damping_ratio in [0.0, 0.5, 1.0] {
-            let motor = Motor {
-                damping,
-                damping_ratio,
-                ..nema17(1)
-            };
+            let motor = nema17(1)
+                .with_damping(damping)
+                .with_damping_ratio(damping_ratio);
             let options = SimOptions::suggested(&motor, &spec, &periods);
             let run = simulate::run(&motor, &spec, &periods, &options);
             assert!(

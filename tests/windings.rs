@@ -13,27 +13,11 @@ use stepper_profiles::period_table;
 /// on a `volts` supply, with twice its rotor's inertia as load and 0.02 N·m
 /// of friction, full steps, lightly damped.
 fn qsh4218(volts: f64) -> Motor {
-    Motor {
-        step_angle: 1.8,
-        microsteps: 1,
-        rotor_inertia: 6.8e-6,
-        load_inertia: 1.36e-5,
-        torque_curve: None,
-        windings: Some(Windings {
-            resistance: 0.5,
-            inductance: 0.6e-3,
-            rated_current: 2.8,
-            holding_torque: 0.40,
-            supply_voltage: volts,
-            detent_torque: 0.0,
-            drive: Drive::Sine,
-        }),
-        friction: 0.02,
-        damping: 0.0,
-        damping_ratio: 0.1,
-        safety: 1.0,
-        max_start_hz: None,
-    }
+    Motor::new(1.8, 1, 6.8e-6)
+        .with_windings(Windings::new(0.5, 0.6e-3, 2.8, 0.40, volts))
+        .with_load_inertia(1.36e-5)
+        .with_friction(0.02)
+        .with_damping_ratio(0.1)
 }
 
 /// 300 to 9000 full steps/s at 100 000 full steps/s², on a 10 MHz timer.
@@ -96,10 +80,7 @@ fn the_check_and_the_simulation_use_the_torque_the_windings_give() {
     assert!(figures.min_margin_nm > 0.0);
     assert_eq!(lost(&strong, &spec, &table), 0);
     // A typed curve is what the check uses; the windings stay for comparison.
-    let typed = Motor {
-        torque_curve: TorqueCurve::new(&[(0.0, 0.40), (4000.0, 0.25)]),
-        ..strong
-    };
+    let typed = strong.with_torque_curve(TorqueCurve::new(&[(0.0, 0.40), (4000.0, 0.25)]).unwrap());
     let error = typed.check(&spec, &table).unwrap_err();
     assert!(
         error

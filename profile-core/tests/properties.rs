@@ -440,28 +440,18 @@ mod motors {
                 torque_curve.is_none(),
                 points.is_empty() || points.len() > profile_core::motor::MAX_CURVE_POINTS
             );
-            let windings = windings.map(|w| Windings {
-                resistance: w.0,
-                inductance: w.1,
-                rated_current: w.2,
-                holding_torque: w.3,
-                supply_voltage: w.4,
-                detent_torque: w.5,
-                drive: Drive::Sine,
+            let windings = windings.map(|w| {
+                Windings::new(w.0, w.1, w.2, w.3, w.4).with_detent_torque(w.5)
             });
-            let motor = Motor {
-                step_angle,
-                microsteps,
-                rotor_inertia: inertia.0,
-                load_inertia: inertia.1,
-                torque_curve,
-                windings,
-                friction,
-                damping,
-                damping_ratio: 0.0,
-                safety,
-                max_start_hz: max_start,
-            };
+            let mut motor = Motor::new(step_angle, microsteps, inertia.0)
+                .with_load_inertia(inertia.1)
+                .with_friction(friction)
+                .with_damping(damping)
+                .with_safety(safety);
+            // Absent or not, as drawn.
+            motor.torque_curve = torque_curve;
+            motor.windings = windings;
+            motor.max_start_hz = max_start;
             let curve = Curve::Linear(Linear { fmin: 100.0, fmax: 1000.0, extent: LinearExtent::Len(10) });
             let spec = Spec::new(curve, Timer { timer_hz, word: Word::U32, ticks_per_step: 1 });
             if let Err(e) = motor.check(&spec, &periods) {
@@ -497,15 +487,9 @@ mod motors {
             poles in prop_oneof![Just(50.0), Just(100.0), Just(12.5)],
             drive in prop_oneof![Just(Drive::Sine), Just(Drive::HalfStep), Just(Drive::FullStep)],
         ) {
-            let w = Windings {
-                resistance,
-                inductance,
-                rated_current,
-                holding_torque,
-                supply_voltage,
-                detent_torque: detent * holding_torque,
-                drive,
-            };
+            let w = Windings::new(resistance, inductance, rated_current, holding_torque, supply_voltage)
+                .with_detent_torque(detent * holding_torque)
+                .with_drive(drive);
             prop_assert!(w.validate().is_ok());
             let top = holding_torque - w.detent_torque;
             // The stepped drives, 25 times the sine's work a speed, at a

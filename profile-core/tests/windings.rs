@@ -125,39 +125,15 @@ fn motors() -> [(&'static str, Windings); 3] {
     [
         (
             "NEMA 17, 2.8 A, 24 V",
-            Windings {
-                resistance: 0.7,
-                inductance: 1.1e-3,
-                rated_current: 2.8,
-                holding_torque: 0.40,
-                supply_voltage: 24.0,
-                detent_torque: 0.0,
-                drive: Drive::Sine,
-            },
+            Windings::new(0.7, 1.1e-3, 2.8, 0.40, 24.0),
         ),
         (
             "NEMA 17, 1.0 A, 12 V, detent",
-            Windings {
-                resistance: 4.4,
-                inductance: 8.0e-3,
-                rated_current: 1.0,
-                holding_torque: 0.44,
-                supply_voltage: 12.0,
-                detent_torque: 0.02,
-                drive: Drive::Sine,
-            },
+            Windings::new(4.4, 8.0e-3, 1.0, 0.44, 12.0).with_detent_torque(0.02),
         ),
         (
             "NEMA 23, 4.2 A, 48 V",
-            Windings {
-                resistance: 0.55,
-                inductance: 2.6e-3,
-                rated_current: 4.2,
-                holding_torque: 1.9,
-                supply_voltage: 48.0,
-                detent_torque: 0.0,
-                drive: Drive::Sine,
-            },
+            Windings::new(0.55, 2.6e-3, 4.2, 1.9, 48.0),
         ),
     ]
 }
@@ -202,15 +178,7 @@ fn derived_pull_out_agrees_with_the_chopped_windings_in_time() {
 
 /// TRINAMIC's QSH4218-47-28-040 (manual V1.10, Table 2.1) on a 24 V supply.
 fn qsh4218() -> Windings {
-    Windings {
-        resistance: 0.5,
-        inductance: 0.6e-3,
-        rated_current: 2.8,
-        holding_torque: 0.40,
-        supply_voltage: 24.0,
-        detent_torque: 0.0,
-        drive: Drive::Sine,
-    }
+    Windings::new(0.5, 0.6e-3, 2.8, 0.40, 24.0)
 }
 
 /// The one published point of a real motor's curve that is text, not a
@@ -247,10 +215,7 @@ fn the_qsh4218_at_1200_rpm_against_its_manual() {
     assert!((needed - 20.9).abs() < 0.05);
     assert_eq!(derived, 0.40);
     assert!((chopped - 0.40).abs() < 0.01 * 0.40);
-    let half = Windings {
-        drive: Drive::HalfStep,
-        ..w
-    };
+    let half = w.with_drive(Drive::HalfStep);
     let derived = half.pull_out(50.0, omega(full_steps));
     let chopped = chopped_pull_out(&half, 50.0, omega(full_steps));
     println!(
@@ -272,10 +237,8 @@ fn the_qsh4218_at_1200_rpm_against_its_manual() {
 #[test]
 fn where_the_back_emf_dominates_the_derived_torque_follows_as_well() {
     let qsh = qsh4218();
-    let brake = Windings {
-        inductance: 0.2e-3,
-        ..qsh
-    };
+    let mut brake = qsh;
+    brake.inductance = 0.2e-3;
     for (name, w) in [("QSH4218-47-28-040", qsh), ("0.2 mH, braking", brake)] {
         let mut worst = 0.0f64;
         for k in 1..=20 {
@@ -307,15 +270,7 @@ fn where_the_back_emf_dominates_the_derived_torque_follows_as_well() {
 /// driven at `current` (RMS) from 36 V: the holding torque scales with the
 /// current.
 fn stepperonline_23he45(current: f64) -> Windings {
-    Windings {
-        resistance: 0.9,
-        inductance: 3.8e-3,
-        rated_current: current,
-        holding_torque: 3.0 * current / 4.2,
-        supply_voltage: 36.0,
-        detent_torque: 0.0,
-        drive: Drive::Sine,
-    }
+    Windings::new(0.9, 3.8e-3, current, 3.0 * current / 4.2, 36.0)
 }
 
 /// A real motor's published pull-out chart against the derived torque.
@@ -386,15 +341,15 @@ fn random_windings_agree_with_the_chopped_phases() {
     let mut spread = |low: f64, high: f64| low * (high / low).powf(uniform());
     let mut worst = 0.0f64;
     for n in 0..10 {
-        let w = Windings {
-            resistance: spread(0.2, 5.0),
-            inductance: spread(0.3e-3, 10e-3),
-            rated_current: spread(0.3, 4.0),
-            holding_torque: spread(0.1, 3.0),
-            supply_voltage: spread(12.0, 48.0),
-            detent_torque: 0.0,
-            drive: Drive::Sine,
-        };
+        // In this order: resistance, inductance, rated current, holding
+        // torque, supply voltage.
+        let w = Windings::new(
+            spread(0.2, 5.0),
+            spread(0.3e-3, 10e-3),
+            spread(0.3, 4.0),
+            spread(0.1, 3.0),
+            spread(12.0, 48.0),
+        );
         // Where the derived torque has fallen by 5 %: bisection on full
         // steps per second.
         let falls = |fs: f64| w.pull_out(50.0, omega(fs)) < 0.95 * w.holding_torque;
@@ -440,7 +395,7 @@ fn stepped_drives_agree_with_the_chopped_phases() {
     let mut worst = 0.0f64;
     for drive in [Drive::HalfStep, Drive::FullStep] {
         for (name, w) in motors() {
-            let w = Windings { drive, ..w };
+            let w = w.with_drive(drive);
             // The fundamental of the set current along the field, by sums.
             let n = 1 << 16;
             let fundamental = (0..n)
@@ -488,19 +443,8 @@ fn stepped_drives_agree_with_the_chopped_phases() {
 /// at 4.2 A or off.
 #[test]
 fn the_23hs45_against_its_half_step_chart() {
-    let w = Windings {
-        resistance: 0.88,
-        inductance: 3.4e-3,
-        rated_current: 4.2,
-        holding_torque: 3.0,
-        supply_voltage: 36.0,
-        detent_torque: 0.0,
-        drive: Drive::HalfStep,
-    };
-    let sine = Windings {
-        drive: Drive::Sine,
-        ..w
-    };
+    let w = Windings::new(0.88, 3.4e-3, 4.2, 3.0, 36.0).with_drive(Drive::HalfStep);
+    let sine = w.with_drive(Drive::Sine);
     // (rpm, published N·m)
     let chart = [
         (60.0, 2.50),

@@ -21,17 +21,8 @@ pub fn nema17(microsteps: u32, load: f64) -> Motor {
         .iter()
         .map(|&(hz, nm)| (hz * microsteps as f64, nm))
         .collect();
-    Motor {
-        step_angle: 1.8,
-        microsteps,
-        rotor_inertia: 5.4e-6,
-        load_inertia: load,
-        torque_curve: Some(TorqueCurve::new(&points).unwrap()),
-        windings: None,
-        friction: 0.02,
-        damping: 0.0,
-        damping_ratio: 0.0,
-        safety: 1.0,
-        max_start_hz: None,
-    }
+    Motor::new(1.8, microsteps, 5.4e-6)
+        .with_torque_curve(TorqueCurve::new(&points).unwrap())
+        .with_load_inertia(load)
+        .with_friction(0.02)
 }

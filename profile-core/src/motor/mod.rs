@@ -29,6 +29,7 @@
 //! torque in N·m, damping in N·m·s/rad, frequencies in Hz of the table's
 //! steps (microsteps when `microsteps > 1`).
 
+mod build;
 mod check;
 mod chopper;
 // Public as `simulate`, at the crate root (one path per item); declared
@@ -112,7 +113,13 @@ impl TorqueCurve {
 }
 
 /// A stepper motor and its load.
+///
+/// Build one with [`Motor::new`] and the `with_*` methods (`const`, so a
+/// motor can be a `const` item); the fields stay public to read and assign.
+/// It is `#[non_exhaustive]`: it may gain fields, each with a default that
+/// leaves the model as it was.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct Motor {
     /// Full-step angle, in degrees (1.8 for 200 steps per turn).
     pub step_angle: f64,

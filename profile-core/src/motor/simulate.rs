@@ -70,19 +70,14 @@
 //! use profile_core::simulate::{self, SimOptions};
 //! use profile_core::{Curve, Linear, LinearExtent, Spec, Timer};
 //!
-//! let motor = Motor {
-//!     step_angle: 1.8,
-//!     microsteps: 1,
-//!     rotor_inertia: 5.4e-6,
-//!     load_inertia: 2.0e-5,
-//!     torque_curve: TorqueCurve::new(&[(0.0, 0.40), (1000.0, 0.33), (2000.0, 0.24)]),
-//!     windings: None,
-//!     friction: 0.02,
-//!     damping: 1e-4,
-//!     damping_ratio: 0.0,
-//!     safety: 1.5,
-//!     max_start_hz: None,
-//! };
+//! let curve = TorqueCurve::new(&[(0.0, 0.40), (1000.0, 0.33), (2000.0, 0.24)])
+//!     .expect("from 1 to 32 points");
+//! let motor = Motor::new(1.8, 1, 5.4e-6)
+//!     .with_torque_curve(curve)
+//!     .with_load_inertia(2.0e-5)
+//!     .with_friction(0.02)
+//!     .with_damping(1e-4)
+//!     .with_safety(1.5);
 //! let spec = Spec::new(
 //!     Curve::Linear(Linear { fmin: 300.0, fmax: 1000.0, extent: LinearExtent::Len(200) }),
 //!     Timer::new(1_000_000),

@@ -210,13 +210,8 @@ impl Motor {
     /// on: `makes(motor, stretch)` plays it to `motor` with every period
     /// `stretch` times as long.
     fn remedies(&self, makes: impl Fn(&Motor, f64) -> bool) -> Remedies {
-        let damping = (self.damping_ratio < REMEDY_DAMPING_RATIO).then(|| {
-            let damped = Motor {
-                damping_ratio: REMEDY_DAMPING_RATIO,
-                ..*self
-            };
-            makes(&damped, 1.0)
-        });
+        let damping = (self.damping_ratio < REMEDY_DAMPING_RATIO)
+            .then(|| makes(&self.with_damping_ratio(REMEDY_DAMPING_RATIO), 1.0));
         Remedies {
             damping,
             slower: makes(self, 2.0),

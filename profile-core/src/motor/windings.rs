@@ -92,7 +92,13 @@ impl Drive {
 /// A two-phase hybrid motor's windings and the chopper driver behind them,
 /// as a datasheet gives them: per phase, with the driver set to the rated
 /// current and fed from `supply_voltage`.
+///
+/// Build them with [`Windings::new`] and the `with_*` methods (`const`);
+/// the fields stay public to read and assign. They are
+/// `#[non_exhaustive]`: they may gain fields, each with a default that
+/// leaves the model as it was.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct Windings {
     /// Phase resistance, in Ω.
     pub resistance: f64,
@@ -113,6 +119,56 @@ pub struct Windings {
 }
 
 impl Windings {
+    /// Windings of `resistance` Ω and `inductance` H per phase, the driver
+    /// set to `rated_current` A (RMS for the sine drive), giving
+    /// `holding_torque` N·m at rated current with two phases on, fed from
+    /// `supply_voltage` V: no detent torque (0, not known) and a sine drive
+    /// ([`Drive::Sine`]).
+    ///
+    /// ```
+    /// use profile_core::motor::{Drive, Windings};
+    ///
+    /// const HALF: Windings = Windings::new(0.5, 0.6e-3, 2.8, 0.40, 24.0)
+    ///     .with_detent_torque(0.015)
+    ///     .with_drive(Drive::HalfStep);
+    ///
+    /// assert_eq!(HALF.validate(), Ok(()));
+    /// assert_eq!(Windings::new(0.5, 0.6e-3, 2.8, 0.40, 24.0).drive, Drive::Sine);
+    /// ```
+    #[must_use]
+    pub const fn new(
+        resistance: f64,
+        inductance: f64,
+        rated_current: f64,
+        holding_torque: f64,
+        supply_voltage: f64,
+    ) -> Self {
+        Windings {
+            resistance,
+            inductance,
+            rated_current,
+            holding_torque,
+            supply_voltage,
+            detent_torque: 0.0,
+            drive: Drive::Sine,
+        }
+    }
+
+    /// The same windings with a detent torque (unpowered), in N·m: 0 or
+    /// more and below the holding torque.
+    #[must_use]
+    pub const fn with_detent_torque(mut self, detent_torque: f64) -> Self {
+        self.detent_torque = detent_torque;
+        self
+    }
+
+    /// The same windings behind a driver setting another current waveform.
+    #[must_use]
+    pub const fn with_drive(mut self, drive: Drive) -> Self {
+        self.drive = drive;
+        self
+    }
+
     /// Checks every figure: all positive and finite, the detent torque 0 or
     /// more and below the holding torque.
     pub fn validate(&self) -> Result<(), MotorError> {
@@ -255,15 +311,7 @@ mod tests {
     use super::*;
 
     fn nema17() -> Windings {
-        Windings {
-            resistance: 0.7,
-            inductance: 1.1e-3,
-            rated_current: 2.8,
-            holding_torque: 0.40,
-            supply_voltage: 24.0,
-            detent_torque: 0.0,
-            drive: Drive::Sine,
-        }
+        Windings::new(0.7, 1.1e-3, 2.8, 0.40, 24.0)
     }
 
     #[test]
@@ -299,11 +347,7 @@ mod tests {
             (slowly - at_rest).abs() < 1e-5,
             "{slowly} against {at_rest}"
         );
-        let detent = Windings {
-            detent_torque: 0.015,
-            drive: Drive::Sine,
-            ..nema17()
-        };
+        let detent = nema17().with_detent_torque(0.015);
         assert!((detent.pull_out(50.0, 0.0) - 0.385).abs() < 1e-15);
     }
 
@@ -356,22 +400,13 @@ mod tests {
 
     #[test]
     fn a_supply_beyond_reason_gives_finite_limits() {
-        let motor = Motor {
-            torque_curve: None,
-            windings: Some(Windings {
+        let motor = Motor::new(1.8, 1, 5.4e-6)
+            .with_windings(Windings {
                 supply_voltage: 1e300,
                 ..nema17()
-            }),
-            step_angle: 1.8,
-            microsteps: 1,
-            rotor_inertia: 5.4e-6,
-            load_inertia: 2.0e-5,
-            friction: 0.0,
-            damping: 0.0,
-            damping_ratio: 0.1,
-            safety: 1.0,
-            max_start_hz: None,
-        };
+            })
+            .with_load_inertia(2.0e-5)
+            .with_damping_ratio(0.1);
         let top = motor.top_hz();
         assert!(top.is_finite() && top > 1e300, "{top}");
         let start = motor.start_limit(top).hz();
