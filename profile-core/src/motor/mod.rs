@@ -29,7 +29,7 @@
 //! torque in N·m, damping in N·m·s/rad, frequencies in Hz of the table's
 //! steps (microsteps when `microsteps > 1`).
 
-mod build;
+mod builder;
 mod check;
 mod chopper;
 // Public as `simulate`, at the crate root (one path per item); declared
