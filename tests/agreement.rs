@@ -12,7 +12,7 @@
 //! cargo test --test agreement -- --nocapture
 //! ```
 
-mod common;
+use test_support as common;
 
 use profile_core::motor::{Motor, MotorError};
 use profile_core::player::{Player, Ramp};

@@ -5,7 +5,7 @@
 //! builds, runs and leaves the C header under `OUT_DIR`, not in the source
 //! tree.
 
-mod common;
+use test_support as common;
 
 use std::process::Output;
 

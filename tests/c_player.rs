@@ -22,7 +22,7 @@
 //! `C_PLAYER_CASES` sets the number of random sequences per kind (default
 //! 200).
 
-mod common;
+use test_support as common;
 
 use std::fmt::Write as _;
 use std::fs;

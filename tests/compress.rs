@@ -4,7 +4,7 @@
 //! `compress` ticks of an independent computation of the curve
 //! (`tests/oracle.rs` checks random profiles the same way).
 
-mod common;
+use test_support as common;
 
 use common::oracle;
 use profile_core::profiles::Profiles;

@@ -27,7 +27,7 @@
 //! Three-stage shapes within 1e-12 of 0 are checked too: a closed form that
 //! subtracts two terms of size `a t / B` would lose its digits there.
 
-mod common;
+use test_support as common;
 
 use common::oracle::{self, Model};
 use common::seeds::{SEED001_SEGMENTS, jerk_limited, seed001, seed004, zeng};

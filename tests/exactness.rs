@@ -18,7 +18,7 @@
 //! and `truncate`, and that plain truncation (the seed's C cast) drifts by about
 //! -500 ticks over the orange ramp while diffusion does not drift at all.
 
-mod common;
+use test_support as common;
 
 use common::oracle::{self, Model};
 use stepper_profiles::{Arithmetic, Curve, Discretization, Rounding, Sigmoid, Spec, Timer, Word};

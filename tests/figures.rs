@@ -1,10 +1,10 @@
 //! The acceleration figures mean what they say: the integer table's
 //! windowed acceleration is the curve's, not its rounding jitter, and the
 //! curve's own peak is the continuous curve's. The continuous peak comes
-//! from `common/oracle.rs`, which writes each curve's frequency on its own,
+//! from `support/src/oracle.rs`, which writes each curve's frequency on its own,
 //! differentiated numerically over a fine grid.
 
-mod common;
+use test_support as common;
 
 use common::oracle::{self, Model};
 use stepper_profiles::period_table;

@@ -19,7 +19,7 @@
 //!
 //! and review them with `git diff tests/golden`.
 
-mod common;
+use test_support as common;
 
 use std::path::PathBuf;
 

@@ -29,7 +29,7 @@
 //!
 //! and review them with `git diff tests/golden/curves`.
 
-mod common;
+use test_support as common;
 
 use std::path::PathBuf;
 

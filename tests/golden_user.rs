@@ -5,7 +5,7 @@
 //! `UPDATE_GOLDEN=1`, checks them unchanged, then changes the table and reads
 //! the failure.
 
-mod common;
+use test_support as common;
 
 use std::fs;
 use std::process::Output;

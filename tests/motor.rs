@@ -8,7 +8,7 @@
 //!
 //! Simulations print their figures (`cargo test --test motor -- --nocapture`).
 
-mod common;
+use test_support as common;
 
 use common::motors::CURVE;
 use profile_core::Generated;

@@ -24,7 +24,7 @@
 //! `ORACLE_CASES` sets the profiles per curve (default 40; CI runs 10 000
 //! per curve from an optimised build).
 
-mod common;
+use test_support as common;
 
 use common::lcg::Lcg;
 use common::oracle::{self, Model};

@@ -11,7 +11,7 @@
 //! `CARGO_TARGET_TMPDIR`, kept between runs, so only the first run builds the
 //! dependencies.
 
-mod common;
+use test_support as common;
 
 use std::fs;
 use std::time::{Duration, Instant, SystemTime};

@@ -24,7 +24,7 @@
 //! A missing C compiler is a failure, not a skip: a silently skipped
 //! compatibility test promises nothing.
 
-mod common;
+use test_support as common;
 
 use std::fmt;
 use std::sync::OnceLock;

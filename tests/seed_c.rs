@@ -14,7 +14,7 @@
 //! A missing C compiler is a failure, not a skip: CI has one, and a silently
 //! skipped compatibility test promises nothing.
 
-mod common;
+use test_support as common;
 
 use std::fmt;
 use std::sync::OnceLock;

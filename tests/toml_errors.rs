@@ -11,7 +11,7 @@
 //!
 //! and review `git diff tests/toml_errors`.
 
-mod common;
+use test_support as common;
 
 use std::fs;
 use std::path::{Path, PathBuf};

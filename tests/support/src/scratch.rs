@@ -1,10 +1,10 @@
-//! Scratch user crates: a folder under `CARGO_TARGET_TMPDIR` holding a crate
+//! Scratch user crates: a folder under the target's `tmp` holding a crate
 //! that depends on this package by path, as a user's would, built by Cargo
 //! on its own into one target directory that every such test shares (the
 //! dependencies build once).
 
 use std::fs;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::Command;
 
 /// A user crate on disk.
@@ -15,31 +15,27 @@ pub struct ScratchCrate {
 
 /// The target directory the scratch crates share.
 pub fn target_dir() -> PathBuf {
-    Path::new(env!("CARGO_TARGET_TMPDIR")).join("rebuild-target")
+    crate::paths::target_tmpdir().join("rebuild-target")
 }
 
 impl ScratchCrate {
-    /// `CARGO_TARGET_TMPDIR/name` with `files` (relative path, contents;
+    /// `<target>/tmp/name` with `files` (relative path, contents;
     /// `@ROOT@` stands for this package's folder), written only where they
     /// changed so that Cargo rebuilds nothing it need not; and, the first
     /// time, this workspace's `Cargo.lock`: the same, already downloaded,
     /// versions (Cargo prunes what the crate does not use).
     pub fn new(name: &str, files: &[(&str, &str)]) -> Self {
-        let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
+        let dir = crate::paths::target_tmpdir().join(name);
         let scratch = ScratchCrate { dir };
         for (path, contents) in files {
             scratch.write(
                 path,
-                &contents.replace("@ROOT@", env!("CARGO_MANIFEST_DIR")),
+                &contents.replace("@ROOT@", &crate::paths::root().display().to_string()),
             );
         }
         let lock = scratch.dir.join("Cargo.lock");
         if !lock.exists() {
-            fs::copy(
-                Path::new(env!("CARGO_MANIFEST_DIR")).join("Cargo.lock"),
-                lock,
-            )
-            .unwrap();
+            fs::copy(crate::paths::root().join("Cargo.lock"), lock).unwrap();
         }
         scratch
     }

@@ -7,13 +7,13 @@
 use std::ffi::OsStr;
 use std::fmt::Display;
 use std::fs;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::Command;
 use std::sync::OnceLock;
 
 /// A C program: its source, how to compile it, and what it is, for messages.
 pub struct CProgram {
-    /// The folder under `CARGO_TARGET_TMPDIR` it is built in.
+    /// The folder under the target's `tmp` it is built in.
     pub dir: &'static str,
     /// The executable's name (the source is `{name}-{pid}.c` while it builds).
     pub name: &'static str,
@@ -56,7 +56,7 @@ impl CProgram {
 
     /// Writes and compiles the program, and returns the executable.
     fn compile(&self) -> PathBuf {
-        let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(self.dir);
+        let dir = crate::paths::target_tmpdir().join(self.dir);
         fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("cannot create {}: {e}", dir.display()));
         // Build under per-process names, then rename into place, so that
         // concurrent test runs never execute a half-written file.

@@ -1,4 +1,6 @@
-//! Support shared by the integration tests, included with `mod common;`.
+//! Support shared by the integration tests of `stepper-profiles`: a crate
+//! of its own, compiled once and linked into every test that says `use
+//! test_support as common;` (not published).
 //!
 //! - [`golden`]: golden files of tables (`# key = value` header, then the
 //!   entries), read, written under `UPDATE_GOLDEN=1`, and compared with the
@@ -14,20 +16,13 @@
 //! - [`seeds`]: the seeds' own curves and calls, as specs and as
 //!   `period_table!` expands them.
 //!
-//! Every test crate that says `mod common;` compiles all of it but uses only
-//! part, hence the `dead_code` allowances.
+//! [`paths`]: the package's folder and the target's scratch folder.
 
-#[allow(dead_code)]
 pub mod cc;
-#[allow(dead_code)]
 pub mod golden;
-#[allow(dead_code)]
 pub mod lcg;
-#[allow(dead_code)]
 pub mod motors;
-#[allow(dead_code)]
 pub mod oracle;
-#[allow(dead_code)]
+pub mod paths;
 pub mod scratch;
-#[allow(dead_code)]
 pub mod seeds;
