@@ -6,7 +6,7 @@
 //!
 //! `PROPTEST_CASES` sets the number of cases (default 256 per property).
 
-mod common;
+use core_test_support as common;
 
 use common::{Event, cases, events, falling};
 use profile_core::player::{Axis, Buffered, Direction, Player, Ramp, Steps};

@@ -7,7 +7,7 @@
 //! `PROPTEST_CASES` sets the number of operation sequences per property
 //! (default 256, times 4 here).
 
-mod common;
+use core_test_support as common;
 
 use common::{Shape, any_runs, cases, shape};
 use profile_core::TableWord;

@@ -17,7 +17,7 @@
 //!
 //! `PROPTEST_CASES` sets the number of cases (default 256).
 
-mod common;
+use core_test_support as common;
 
 use common::{cases, falling};
 use profile_core::player::{Axis, Direction, Player, Ramp};

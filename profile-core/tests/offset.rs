@@ -7,7 +7,7 @@
 //! `PROPTEST_CASES` sets the number of operation sequences (default 256,
 //! times 4 here).
 
-mod common;
+use core_test_support as common;
 
 use common::{Shape, cases};
 use profile_core::player::{Compressed, Player, Ramp};

@@ -254,7 +254,7 @@ fn diffused_tables_play_exactly() {
     );
 }
 
-mod common;
+use core_test_support as common;
 
 use common::reference::Reference;
 use common::{Shape, any_runs, cases, shape};

@@ -1,4 +1,6 @@
-//! Support shared by the player's tests, included with `mod common;`:
+//! Support shared by `profile-core`'s player tests: a crate of its own,
+//! compiled once and linked into every test that says `use
+//! core_test_support as common;` (not published):
 //!
 //! - [`reference`]: the unplanned reference model of the player;
 //! - [`cases`]: the number of random cases per property (`PROPTEST_CASES`);
@@ -8,11 +10,7 @@
 //!   segments, runs) described for a test to build;
 //! - [`Event`] and [`events`]: stops and cruise changes at random points of
 //!   a move.
-//!
-//! Every test crate that says `mod common;` compiles all of it but uses only
-//! part, hence the `dead_code` allowances.
 
-#[allow(dead_code)]
 pub mod reference;
 
 use core::ops::Range;
@@ -20,7 +18,6 @@ use profile_core::runs::LinearRun as RunWords;
 use proptest::prelude::*;
 
 /// `PROPTEST_CASES`, or 256.
-#[allow(dead_code)]
 pub fn cases() -> u32 {
     std::env::var("PROPTEST_CASES")
         .ok()
@@ -30,7 +27,6 @@ pub fn cases() -> u32 {
 
 /// A table of any shape, up to `max_len` entries: falling with ties (as
 /// generated), arbitrary, or tiny.
-#[allow(dead_code)]
 pub fn any_table(max_len: usize) -> impl Strategy<Value = Vec<u32>> {
     prop_oneof![
         3 => (1usize..max_len, 2u32..5000).prop_flat_map(|(len, start)| {
@@ -46,7 +42,6 @@ pub fn any_table(max_len: usize) -> impl Strategy<Value = Vec<u32>> {
 
 /// Random compressed runs (empty ones included), each run's last period
 /// between 1 and 4000 ticks or its increment dropped.
-#[allow(dead_code)]
 pub fn any_runs() -> impl Strategy<Value = Vec<[u16; 5]>> {
     let run = (0u16..40, 1u32..3000, 0u32..65_536, -400_000i32..400_000);
     proptest::collection::vec(run, 1..12).prop_map(|raw| {
@@ -73,7 +68,6 @@ pub fn any_runs() -> impl Strategy<Value = Vec<[u16; 5]>> {
 /// A table ordered slow to fast, as generated tables are: a length drawn
 /// from `len`, a first period from 200 ticks to `u16::MAX`, each next one
 /// up to `max_drop` ticks shorter, none below `floor`.
-#[allow(dead_code)]
 pub fn falling(len: Range<usize>, max_drop: u16, floor: u32) -> impl Strategy<Value = Vec<u16>> {
     (len, 200u16..=u16::MAX).prop_flat_map(move |(len, start)| {
         proptest::collection::vec(0u16..max_drop, len).prop_map(move |drops| {
@@ -92,7 +86,6 @@ pub fn falling(len: Range<usize>, max_drop: u16, floor: u32) -> impl Strategy<Va
 
 /// What happens before an edge of a move, by the count of edges handed out
 /// so far.
-#[allow(dead_code)]
 #[derive(Clone, Copy, Debug)]
 pub enum Event {
     /// `stop()`.
@@ -103,7 +96,6 @@ pub enum Event {
 
 /// Up to two events, each at a count of edges drawn from `at`, cruise
 /// positions from 0 to 79.
-#[allow(dead_code)]
 pub fn events(at: Range<usize>) -> impl Strategy<Value = Vec<(usize, Event)>> {
     proptest::collection::vec(
         (
@@ -117,7 +109,6 @@ pub fn events(at: Range<usize>) -> impl Strategy<Value = Vec<(usize, Event)>> {
 /// A ramp described for a test to build: a per-step table held `hold`
 /// steps per entry, segments with their counts (empty ones included), or
 /// compressed runs (empty ones included).
-#[allow(dead_code)]
 #[derive(Clone, Debug)]
 pub enum Shape {
     /// Periods, and the steps each is held.
@@ -131,7 +122,6 @@ pub enum Shape {
 /// Any [`Shape`]: per-step tables of up to `max_len` entries (weight 4,
 /// held 1 step or now and then 0 to 5), 12 segments of `0..max_count`
 /// steps (weight 1), runs (weight `runs`).
-#[allow(dead_code)]
 pub fn shape(max_len: usize, max_count: u32, runs: u32) -> impl Strategy<Value = Shape> {
     prop_oneof![
         4 => (any_table(max_len), prop_oneof![4 => Just(1u32), 1 => 0u32..6])
