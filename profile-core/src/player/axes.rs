@@ -325,7 +325,26 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
         // The followers first, with the registers free: after the move's
         // last step the accumulators move on unread.
         let mask = self.edges.next();
-        if self.player.step(|period| write(period, mask)) {
+        if L::COMPRESSED {
+            if self.player.step(|period| write(period, mask)) {
+                return true;
+            }
+            return self.then_step(write);
+        }
+        // The run being played, inline; everything else in one cold call
+        // at the end, so that the step keeps no register across a call.
+        match self.player.play_run(|period| write(period, mask)) {
+            Ok(()) => true,
+            Err(_) => self.step_refilled(write, mask),
+        }
+    }
+
+    /// The lead's step after its run is played: the next run, or the
+    /// queued move.
+    #[cold]
+    #[inline(never)]
+    fn step_refilled(&mut self, mut write: impl FnMut(W, u32), mask: u32) -> bool {
+        if self.player.step_refilled(|period| write(period, mask)) {
             return true;
         }
         self.then_step(write)
