@@ -2,7 +2,7 @@
 //! compiled once and linked into every test that says `use
 //! core_test_support as common;` (not published):
 //!
-//! - [`reference`]: the unplanned reference model of the player;
+//! - [`reference`](mod@reference): the unplanned reference model of the player;
 //! - [`cases`]: the number of random cases per property (`PROPTEST_CASES`);
 //! - [`any_table`] and [`any_runs`]: random per-step tables and compressed
 //!   runs; [`falling`]: random tables ordered slow to fast, as generated;
