@@ -36,12 +36,26 @@ fn buffered_timer<S: Steps<Word = u16>>(
     let mut reload = next.unwrap_or(first);
     let (mut now, mut counting) = (0u64, first);
     let mut steps = vec![0];
-    for _ in 0..limit {
+    for i in 0..limit {
         // The wrap: the interval ends, the counter loads the register.
         now += u64::from(counting);
         counting = reload;
         before(stepper);
-        if !stepper.step(|p| reload = p) {
+        // Both calls, interleaved: `pulse_and_step` pulses exactly when it
+        // returns `true`, and plays what `step` plays.
+        let mut pulses = 0;
+        let stepped = if i % 3 == 1 {
+            stepper.step(|p| reload = p)
+        } else {
+            let taken = stepper.pulse_and_step(|| pulses += 1, |p| reload = p);
+            assert_eq!(
+                pulses,
+                u32::from(taken),
+                "a pulse for each step taken, at {i}"
+            );
+            taken
+        };
+        if !stepped {
             return Some((steps, now));
         }
         steps.push(now);
@@ -196,4 +210,37 @@ fn the_shortest_moves() {
     assert_eq!(stepper.remaining(), 1);
     assert!(stepper.step(|_| panic!("nothing to load")));
     assert!(!stepper.step(|_| panic!("nothing to load")));
+}
+
+/// What `Buffered::new` finds ahead of the pin: nothing for a new player or
+/// one whose step has returned `false`; the last period handed out for one
+/// that has handed out periods since, whose step is then still to take.
+#[test]
+fn wrapping_a_player() {
+    static RAMP: [u16; 3] = [3000, 2000, 1500];
+    let mut pulses = 0;
+    let mut stepper = Buffered::new(Player::new(Ramp::steps(&RAMP)));
+    assert_eq!(stepper.remaining(), 0);
+    assert!(!stepper.pulse_and_step(|| pulses += 1, |_| panic!("nothing to load")));
+    assert_eq!(pulses, 0);
+
+    let mut player = Player::new(Ramp::steps(&RAMP));
+    player.start(2);
+    while player.step(|_| {}) {}
+    let mut stepper = Buffered::new(player);
+    assert_eq!(stepper.remaining(), 0);
+    assert!(!stepper.pulse_and_step(|| pulses += 1, |_| panic!("nothing to load")));
+    assert_eq!(pulses, 0);
+
+    let mut player = Player::new(Ramp::steps(&RAMP));
+    player.start(2);
+    assert_eq!(
+        (player.next_period(), player.next_period()),
+        (Some(3000), Some(3000))
+    );
+    let mut stepper = Buffered::new(player);
+    assert_eq!(stepper.remaining(), 1);
+    assert!(stepper.pulse_and_step(|| pulses += 1, |_| panic!("nothing to load")));
+    assert!(!stepper.pulse_and_step(|| pulses += 1, |_| panic!("nothing to load")));
+    assert_eq!(pulses, 1);
 }

@@ -317,8 +317,8 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     /// `write`, and returns `true`; or returns `false` when the move is
     /// done. The lead's [`Player::step`] with the followers' accumulators:
     /// an addition per follower, and a subtraction where it steps, without
-    /// a branch. Three axes (two followers) take 19 to 21 instructions per
-    /// step more than the player on a Cortex-M3, 20 to 22 on an M4F and
+    /// a branch. Three axes (two followers) take 18 to 20 instructions per
+    /// step more than the player on a Cortex-M3, 19 to 21 on an M4F and
     /// 30.2 on an M0 (`examples/measure/measure.sh`). `write` is called
     /// once a step at most; it is `FnMut` so that the step can hand it on
     /// to the path that refills the run.

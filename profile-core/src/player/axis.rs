@@ -251,6 +251,38 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
         self.then_step(write)
     }
 
+    /// The step past the end of the player's run
+    /// ([`Player::step_past_run`]), then the move after the one that ended.
+    #[cold]
+    #[inline(never)]
+    pub(crate) fn step_past_run(&mut self, mut write: impl FnMut(W)) -> bool {
+        self.player.step_past_run(&mut write) || self.then_step(write)
+    }
+
+    /// A buffered register's step without a pulse
+    /// ([`Player::step_buffered`]).
+    #[inline(always)]
+    pub(crate) fn step_buffered(&mut self, mut write: impl FnMut(W)) -> bool {
+        match self.player.play(&mut write) {
+            Ok(()) => true,
+            Err(_) => self.buffered_past_run(write),
+        }
+    }
+
+    /// [`Axis::step_buffered`] past the player's run: `true` when a step is
+    /// taken now.
+    #[cold]
+    #[inline(never)]
+    fn buffered_past_run(&mut self, mut write: impl FnMut(W)) -> bool {
+        let ahead = !self.player.is_ended();
+        self.player.step_past_run(&mut write) || self.then_step(write) || ahead
+    }
+
+    /// The player, to play from.
+    pub(crate) fn player_mut(&mut self) -> &mut Player<'a, W, L> {
+        &mut self.player
+    }
+
     /// The move after the one that ended, and its first step.
     #[cold]
     #[inline(never)]

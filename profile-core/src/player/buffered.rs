@@ -7,10 +7,15 @@ use crate::player::axes::Axes;
 use crate::player::axis::{Axis, Direction};
 use crate::player::layout::Layout;
 
+mod sealed {
+    pub trait Sealed {}
+}
+
 /// What [`Buffered`] plays: one period per call, as [`Player`] and [`Axis`]
 /// hand them out. ([`Axes`] hand out a period and a mask of the axes that
-/// step: `Buffered<Axes>` has its own calls, which hand on both.)
-pub trait Steps {
+/// step: `Buffered<Axes>` has its own calls, which hand on both.) Sealed:
+/// the two are all there is.
+pub trait Steps: sealed::Sealed {
     /// The table's word.
     type Word;
     /// Hands the next step's period to `write` and returns `true`, or
@@ -20,7 +25,24 @@ pub trait Steps {
     fn next_period(&mut self) -> Option<Self::Word>;
     /// Steps left to hand out.
     fn remaining(&self) -> u32;
+    /// A buffered register's step: `false`, calling nothing, when the
+    /// player has returned `false` and handed out nothing since (no period
+    /// in the register has its step to take); else calls `pulse`, hands
+    /// the next period to `write` if there is one, and returns `true`.
+    #[doc(hidden)]
+    fn step_pulsed(&mut self, pulse: impl FnOnce(), write: impl FnMut(Self::Word)) -> bool;
+    /// [`Steps::step_pulsed`] without a pulse, the step path the player's
+    /// own.
+    #[doc(hidden)]
+    fn step_buffered(&mut self, write: impl FnMut(Self::Word)) -> bool;
+    /// `true` when the player has returned `false` and handed out nothing
+    /// since.
+    #[doc(hidden)]
+    fn ended(&self) -> bool;
 }
+
+impl<W: TableWord, L: Layout> sealed::Sealed for Player<'_, W, L> {}
+impl<W: TableWord, L: Layout> sealed::Sealed for Axis<'_, W, L> {}
 
 impl<W: TableWord, L: Layout> Steps for Player<'_, W, L> {
     type Word = W;
@@ -34,6 +56,24 @@ impl<W: TableWord, L: Layout> Steps for Player<'_, W, L> {
     }
     fn remaining(&self) -> u32 {
         Player::remaining(self)
+    }
+    #[inline]
+    fn step_pulsed(&mut self, pulse: impl FnOnce(), write: impl FnMut(W)) -> bool {
+        match self.play_pulsed(pulse, write) {
+            Pulsed::Ended => false,
+            Pulsed::Played => true,
+            Pulsed::Empty(write) => {
+                self.step_past_run(write);
+                true
+            }
+        }
+    }
+    #[inline]
+    fn step_buffered(&mut self, write: impl FnMut(W)) -> bool {
+        Player::step_buffered(self, write)
+    }
+    fn ended(&self) -> bool {
+        self.is_ended()
     }
 }
 
@@ -50,6 +90,34 @@ impl<W: TableWord, L: Layout> Steps for Axis<'_, W, L> {
     fn remaining(&self) -> u32 {
         Axis::remaining(self)
     }
+    #[inline]
+    fn step_pulsed(&mut self, pulse: impl FnOnce(), mut write: impl FnMut(W)) -> bool {
+        match self.player_mut().play_pulsed(pulse, &mut write) {
+            Pulsed::Ended => false,
+            Pulsed::Played => true,
+            Pulsed::Empty(_) => {
+                self.step_past_run(write);
+                true
+            }
+        }
+    }
+    #[inline]
+    fn step_buffered(&mut self, write: impl FnMut(W)) -> bool {
+        Axis::step_buffered(self, write)
+    }
+    fn ended(&self) -> bool {
+        self.player().is_ended()
+    }
+}
+
+/// What [`Player::play_pulsed`] did.
+pub(crate) enum Pulsed<F> {
+    /// No step is ahead of the pin: nothing called.
+    Ended,
+    /// Pulsed and handed the run's next period.
+    Played,
+    /// Pulsed; the run is played: `write` back, for the path past it.
+    Empty(F),
 }
 
 /// A [`Player`], an [`Axis`] or [`Axes`] for a reload register that takes
@@ -103,14 +171,19 @@ impl<W: TableWord, L: Layout> Steps for Axis<'_, W, L> {
 #[derive(Clone, Debug)]
 pub struct Buffered<S> {
     inner: S,
-    /// A period is in the reload register whose step is not taken yet: 0
-    /// when none; else 1, or for [`Axes`] the mask of the axes that step
-    /// there (never 0: the lead steps on every edge).
+    /// For [`Axes`]: the mask of the axes that step on the edge whose
+    /// period is in the reload register, its step not taken yet; 0 when
+    /// there is none (never 0 else: the lead steps on every edge). A
+    /// [`Player`] or an [`Axis`] says so itself: a step is ahead of the pin
+    /// until its step returns `false`.
     ahead: u32,
 }
 
 impl<S> Buffered<S> {
-    /// Wraps a player or an axis at rest.
+    /// Wraps a player, an axis or axes at rest: a new one, or one whose
+    /// step has returned `false`. (A player that has handed out periods
+    /// since its step last returned `false` has the last of them in the
+    /// register, its step not taken.)
     pub fn new(inner: S) -> Self {
         Buffered { inner, ahead: 0 }
     }
@@ -133,9 +206,10 @@ impl<S: Steps> Buffered<S> {
     /// second (load it right after). `(None, None)` for a move without
     /// steps; a one-step move has no second period.
     pub fn begin(&mut self) -> (Option<S::Word>, Option<S::Word>) {
+        // Without a second period the inner player has returned `false`:
+        // no step is ahead of the pin.
         let first = self.inner.next_period();
         let next = first.as_ref().and_then(|_| self.inner.next_period());
-        self.ahead = u32::from(next.is_some());
         (first, next)
     }
 
@@ -145,14 +219,10 @@ impl<S: Steps> Buffered<S> {
     /// none); `false` when the interval that ended was the move's last.
     #[inline]
     pub fn step(&mut self, write: impl FnMut(S::Word)) -> bool {
-        // While the player has periods, one is always in the register: the
-        // player's own step path, and nothing else.
-        if self.inner.step(write) {
-            return true;
-        }
-        // The player is done: the period in the register, if any, is the
-        // last interval, starting now.
-        core::mem::replace(&mut self.ahead, 0) != 0
+        // While the player has periods, one is always in the register; then
+        // the period in the register, if any, is the last interval,
+        // starting now: one kind of the run being played says which.
+        self.inner.step_buffered(write)
     }
 
     /// From the timer's interrupt, at the end of an interval: when a step
@@ -164,19 +234,12 @@ impl<S: Steps> Buffered<S> {
     /// [`Buffered::step`] with the pin pulsed first.
     #[inline]
     pub fn pulse_and_step(&mut self, pulse: impl FnOnce(), write: impl FnMut(S::Word)) -> bool {
-        if self.ahead == 0 {
-            return false;
-        }
-        pulse();
-        if !self.inner.step(write) {
-            self.ahead = 0;
-        }
-        true
+        self.inner.step_pulsed(pulse, write)
     }
 
     /// Steps not yet taken.
     pub fn remaining(&self) -> u32 {
-        self.inner.remaining() + u32::from(self.ahead != 0)
+        self.inner.remaining() + u32::from(!self.inner.ended())
     }
 
     /// `true` when every step has been taken (the last interval may still
@@ -275,7 +338,7 @@ impl<'a, W: TableWord, L: Layout> Buffered<Axis<'a, W, L>> {
             // The first period after the turn is in the timer's hands, its
             // step not taken: the pin takes the last step before the turn.
             Some((before, mark))
-                if self.inner.player().remaining() == mark && (mark > 0 || self.ahead != 0) =>
+                if self.inner.player().remaining() == mark && (mark > 0 || !self.inner.ended()) =>
             {
                 before
             }
@@ -286,7 +349,7 @@ impl<'a, W: TableWord, L: Layout> Buffered<Axis<'a, W, L>> {
     /// The position at the pin, in steps: the axis's less the step whose
     /// period is in the timer's hands and not yet taken.
     pub fn position(&self) -> i64 {
-        self.inner.position() - self.inner.direction().sign() * i64::from(self.ahead != 0)
+        self.inner.position() - self.inner.direction().sign() * i64::from(!self.inner.ended())
     }
 
     /// Decelerates to rest ([`Axis::stop`]), from the first period not yet

@@ -87,10 +87,11 @@ impl<W: TableWord, L: Layout> Player<'_, W, L> {
                 *periods = later.iter();
                 n
             }
-            Run::Down(periods) => {
+            Run::Down(periods) | Run::Ended(periods) => {
                 let from = periods.as_slice();
                 if from.is_empty() {
-                    // A compressed ramp's run, behind an empty `Down`.
+                    // A compressed ramp's run, behind an empty `Down` (none
+                    // when the run is `Ended`).
                     return fill_computed(&mut self.computed, out);
                 }
                 let n = from.len().min(out.len());
@@ -111,7 +112,7 @@ impl<W: TableWord, L: Layout> Player<'_, W, L> {
             }
             Run::Hold(p, left) => {
                 let n = (*left as usize).min(out.len());
-                out[..n].fill(**p);
+                out[..n].fill(*p);
                 *left -= n as u32;
                 n
             }

@@ -61,6 +61,7 @@ mod plan;
 mod ramp;
 mod rated;
 mod search;
+mod step;
 
 use core::marker::PhantomData;
 
@@ -203,7 +204,8 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             ],
             endless: false,
             extended: 0,
-            run: Run::empty(),
+            // At rest: nothing to hand out, as after a move's end.
+            run: Run::ended(),
             computed: RunState::default(),
             before: 0,
             plan: Plan::EMPTY,
@@ -242,7 +244,10 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         self.before = before;
         // The first run now, so that the first step plays at once.
         if L::COMPRESSED {
-            self.refill_runs();
+            if self.refill_runs().is_none() {
+                // Nothing handed out yet: the step that finds so ends it.
+                self.run = Run::empty();
+            }
         } else if let Some(run) = self.next_run() {
             self.run = run;
         }
@@ -401,6 +406,12 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         self.remaining() == 0
     }
 
+    /// `true` when the step has returned `false` and the player has handed
+    /// out nothing since.
+    pub(crate) fn is_ended(&self) -> bool {
+        matches!(self.run, Run::Ended(_))
+    }
+
     /// The period of the next step, in ticks, or `None` when the move is done.
     #[inline]
     pub fn next_period(&mut self) -> Option<W> {
@@ -436,160 +447,5 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             Ok(()) => true,
             Err(write) => self.step_refilled(write),
         }
-    }
-
-    /// Plays the next step of the run being played, or hands `write` back
-    /// when the run is played.
-    #[inline(always)]
-    fn play_run<F: FnOnce(W)>(&mut self, write: F) -> Result<(), F> {
-        match &mut self.run {
-            Run::Down(periods) => {
-                if let Some(&p) = periods.next_back() {
-                    write(p);
-                    return Ok(());
-                }
-            }
-            Run::Hold(p, n) => {
-                if *n > 0 {
-                    *n -= 1;
-                    write(**p);
-                    return Ok(());
-                }
-            }
-            Run::Up(periods) => {
-                if let Some(&p) = periods.next() {
-                    write(p);
-                    return Ok(());
-                }
-            }
-        }
-        Err(write)
-    }
-
-    /// The step path past the end of a run: the plan's next runs until one
-    /// plays.
-    #[cold]
-    #[inline(never)]
-    fn step_refilled<F: FnOnce(W)>(&mut self, mut write: F) -> bool {
-        // `refill` hands the player back, so that the loop keeps no
-        // register across its call.
-        let mut this = self;
-        loop {
-            // A compressed ramp's run, behind an empty `Down`: here, so that
-            // the per-step table's paths are the step's only ones.
-            if let Some(ticks) = this.computed.next() {
-                write(W::from_ticks(ticks));
-                return true;
-            }
-            match this.refill() {
-                Some(player) => this = player,
-                None => return false,
-            }
-            match this.play_run(write) {
-                Ok(()) => return true,
-                Err(w) => write = w,
-            }
-        }
-    }
-
-    /// The step path of a player of compressed tables: its run first.
-    #[inline(always)]
-    fn step_runs(&mut self, write: impl FnOnce(W)) -> bool {
-        let mut this = self;
-        loop {
-            if let Some(ticks) = this.computed.next() {
-                write(W::from_ticks(ticks));
-                return true;
-            }
-            match this.refill_runs() {
-                Some(player) => this = player,
-                None => return false,
-            }
-        }
-    }
-
-    /// Begins the plan's next run of a compressed table; `None` when the
-    /// plan is played (or a ramp is not compressed, which the constructors
-    /// of a [`Compressed`] player rule out).
-    #[cold]
-    #[inline(never)]
-    fn refill_runs(&mut self) -> Option<&mut Self> {
-        let next = self.next_stretch()?;
-        let s = self.plan.stretches.get_mut(next)?;
-        let Ramp::Runs(runs) = (if s.decel { &self.decel } else { &self.accel }) else {
-            return None;
-        };
-        self.computed = s.at.take_run(runs, s.dir, s.count);
-        s.count -= self.computed.left;
-        Some(self)
-    }
-
-    /// Begins the plan's next run; `None` when the plan is played.
-    #[cold]
-    #[inline(never)]
-    fn refill(&mut self) -> Option<&mut Self> {
-        // Most stretches of a per-step table are a whole run, made when the
-        // move was planned: taken at once.
-        let next = self.plan.next;
-        if next < self.plan.len {
-            if let Some(s) = self.plan.stretches.get_mut(next) {
-                if s.run.is_some() && !(self.endless && s.decelerating) {
-                    self.run = s.run.take()?;
-                    s.count = 0;
-                    self.plan.at = next;
-                    self.plan.next = next + 1;
-                    return Some(self);
-                }
-            }
-        }
-        self.run = self.next_run()?;
-        Some(self)
-    }
-
-    /// The next stretch with steps not yet handed out, now the one being
-    /// played; `None` when the plan is played.
-    #[inline(always)]
-    fn next_stretch(&mut self) -> Option<usize> {
-        loop {
-            let next = self.plan.next;
-            if next >= self.plan.len {
-                return None;
-            }
-            let s = self.plan.stretches.get(next)?;
-            if s.count > 0 {
-                if self.endless && s.decelerating {
-                    self.next_lap();
-                    continue;
-                }
-                self.plan.at = next;
-                return Some(next);
-            }
-            self.plan.next = next + 1;
-        }
-    }
-
-    /// The plan's next run, or `None` when the plan is played.
-    fn next_run(&mut self) -> Option<Run<'a, W>> {
-        let next = self.next_stretch()?;
-        let s = self.plan.stretches.get_mut(next)?;
-        // A whole run made when the move was planned.
-        if s.run.is_some() {
-            let run = s.run.take();
-            s.count = 0;
-            self.plan.next = next + 1;
-            return run;
-        }
-        let ramp = if s.decel { &self.decel } else { &self.accel };
-        if let Ramp::Runs(runs) = *ramp {
-            // A compressed table: one run at a time, played by the step path
-            // from `computed` (behind an empty `Down` for any layout).
-            self.computed = s.at.take_run(runs, s.dir, s.count);
-            s.count -= self.computed.left;
-            return Some(Run::Down([].iter()));
-        }
-        // A held or segment table: one entry at a time.
-        let (period, n) = s.at.take_entry(ramp, s.dir, s.count)?;
-        s.count -= n;
-        Some(Run::Hold(period, n))
     }
 }

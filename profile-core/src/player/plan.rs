@@ -15,13 +15,23 @@ use super::ramp::{Cursor, Ramp};
 use super::search;
 use crate::base::timer::TableWord;
 
-/// A run of steps, as the step path plays it.
+/// A run of steps, as the step path plays it. Its tag a word, so that
+/// runs are copied word by word (with a 16-bit tag, a held period packs
+/// beside it and a run is copied by `memcpy`).
 #[derive(Clone, Debug)]
+#[repr(u32)]
 pub(crate) enum Run<'a, W> {
+    /// Nothing to play (the iterator is empty), and the step has found
+    /// so: the player returned `false` and has handed out nothing since.
+    /// (A [`Buffered`](super::Buffered) player has no step ahead of the
+    /// pin.) The step path plays it as the empty `Down` it holds, so that
+    /// it adds no kind to the step's dispatch: its tag and `Down`'s are
+    /// one test.
+    Ended(slice::Iter<'a, W>),
     /// Periods played last to first.
     Down(slice::Iter<'a, W>),
     /// One period, played `n` more times.
-    Hold(&'a W, u32),
+    Hold(W, u32),
     /// Periods played first to last.
     Up(slice::Iter<'a, W>),
 }
@@ -32,10 +42,15 @@ impl<'a, W: TableWord> Run<'a, W> {
         Run::Up([].iter())
     }
 
+    /// Nothing to play, and the step has found so.
+    pub(crate) fn ended() -> Self {
+        Run::Ended([].iter())
+    }
+
     /// Steps left in the run.
     pub(crate) fn left(&self) -> u32 {
         match self {
-            Run::Up(s) | Run::Down(s) => s.len() as u32,
+            Run::Up(s) | Run::Down(s) | Run::Ended(s) => s.len() as u32,
             Run::Hold(_, n) => *n,
         }
     }
@@ -46,7 +61,7 @@ impl<'a, W: TableWord> Run<'a, W> {
         Some(match dir {
             1 => Run::Up(periods.get(pos..pos + n)?.iter()),
             -1 => Run::Down(periods.get((pos + 1).checked_sub(n)?..=pos)?.iter()),
-            _ => Run::Hold(periods.get(pos)?, count),
+            _ => Run::Hold(*periods.get(pos)?, count),
         })
     }
 }

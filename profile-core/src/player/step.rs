@@ -1,0 +1,283 @@
+//! The step paths: the run being played, inline in the step interrupt,
+//! and past its end the plan's next run, in cold functions; the paths of
+//! a buffered register ([`Buffered`](super::Buffered)).
+
+use super::buffered::Pulsed;
+use super::plan::Run;
+use super::{Layout, Player, Ramp};
+use crate::base::timer::TableWord;
+
+impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
+    /// Plays the next step of the run being played, or hands `write` back
+    /// when the run is played.
+    #[inline(always)]
+    pub(super) fn play_run<F: FnOnce(W)>(&mut self, write: F) -> Result<(), F> {
+        match &mut self.run {
+            Run::Down(periods) | Run::Ended(periods) => {
+                if let Some(&p) = periods.next_back() {
+                    write(p);
+                    return Ok(());
+                }
+            }
+            Run::Hold(p, n) => {
+                if *n > 0 {
+                    *n -= 1;
+                    write(*p);
+                    return Ok(());
+                }
+            }
+            Run::Up(periods) => {
+                if let Some(&p) = periods.next() {
+                    write(p);
+                    return Ok(());
+                }
+            }
+        }
+        Err(write)
+    }
+
+    /// A buffered register's step ([`Buffered`]): `Pulsed::Ended` when the
+    /// player has handed out nothing since it last returned `false` (no
+    /// step is ahead of the pin); else calls `pulse`, then plays the next
+    /// step of the run being played, or hands `write` back when the run is
+    /// played. The run's kind is read once: whether a step is ahead and
+    /// which path plays it.
+    #[inline(always)]
+    pub(super) fn play_pulsed<F: FnOnce(W)>(
+        &mut self,
+        pulse: impl FnOnce(),
+        write: F,
+    ) -> Pulsed<F> {
+        if L::COMPRESSED {
+            if let Run::Ended(_) = self.run {
+                return Pulsed::Ended;
+            }
+            pulse();
+            if let Some(ticks) = self.computed.next() {
+                write(W::from_ticks(ticks));
+                return Pulsed::Played;
+            }
+            return Pulsed::Empty(write);
+        }
+        match &mut self.run {
+            Run::Down(periods) => {
+                pulse();
+                if let Some(&p) = periods.next_back() {
+                    write(p);
+                    return Pulsed::Played;
+                }
+            }
+            Run::Hold(p, n) => {
+                pulse();
+                if *n > 0 {
+                    *n -= 1;
+                    write(*p);
+                    return Pulsed::Played;
+                }
+            }
+            Run::Up(periods) => {
+                pulse();
+                if let Some(&p) = periods.next() {
+                    write(p);
+                    return Pulsed::Played;
+                }
+            }
+            Run::Ended(_) => return Pulsed::Ended,
+        }
+        Pulsed::Empty(write)
+    }
+
+    /// A buffered register's step without a pulse ([`Buffered::step`]):
+    /// the run being played, then past it whether a step is ahead of the
+    /// pin, so that the step path is the player's own.
+    #[inline(always)]
+    pub(super) fn step_buffered<F: FnOnce(W)>(&mut self, write: F) -> bool {
+        match self.play(write) {
+            Ok(()) => true,
+            Err(write) => self.buffered_past_run(write),
+        }
+    }
+
+    /// Plays the next step of the run being played (a compressed run for
+    /// a [`Compressed`] player), or hands `write` back when it is played.
+    #[inline(always)]
+    pub(super) fn play<F: FnOnce(W)>(&mut self, write: F) -> Result<(), F> {
+        if L::COMPRESSED {
+            return match self.computed.next() {
+                Some(ticks) => {
+                    write(W::from_ticks(ticks));
+                    Ok(())
+                }
+                None => Err(write),
+            };
+        }
+        self.play_run(write)
+    }
+
+    /// [`Player::step_buffered`] past the run: `true` when a step is taken
+    /// now, the next period handed to `write` if there is one.
+    #[cold]
+    #[inline(never)]
+    fn buffered_past_run<F: FnOnce(W)>(&mut self, write: F) -> bool {
+        let ahead = !self.is_ended();
+        self.step_past_run(write) || ahead
+    }
+
+    /// The step past the end of the run being played, for
+    /// [`Player::play_pulsed`]: `false`, the run [`Run::Ended`], when the
+    /// move is done: a call to the refill of any layout, the loop over
+    /// compressed runs inline (it calls their refill).
+    #[inline(always)]
+    pub(super) fn step_past_run<F: FnOnce(W)>(&mut self, write: F) -> bool {
+        if L::COMPRESSED {
+            self.step_runs(write)
+        } else {
+            self.step_refilled(write)
+        }
+    }
+
+    /// The step path past the end of a run: the plan's next runs until one
+    /// plays.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn step_refilled<F: FnOnce(W)>(&mut self, mut write: F) -> bool {
+        // `refill` hands the player back, so that the loop keeps no
+        // register across its call.
+        let mut this = self;
+        loop {
+            // A compressed ramp's run, behind an empty `Down`: here, so that
+            // the per-step table's paths are the step's only ones.
+            if let Some(ticks) = this.computed.next() {
+                write(W::from_ticks(ticks));
+                return true;
+            }
+            match this.refill() {
+                Some(player) => this = player,
+                None => return false,
+            }
+            match this.play_run(write) {
+                Ok(()) => return true,
+                Err(w) => write = w,
+            }
+        }
+    }
+
+    /// The step path of a player of compressed tables: its run first.
+    #[inline(always)]
+    pub(super) fn step_runs(&mut self, write: impl FnOnce(W)) -> bool {
+        let mut this = self;
+        loop {
+            if let Some(ticks) = this.computed.next() {
+                write(W::from_ticks(ticks));
+                return true;
+            }
+            match this.refill_runs() {
+                Some(player) => this = player,
+                None => return false,
+            }
+        }
+    }
+
+    /// Begins the plan's next run of a compressed table; `None`, the run
+    /// [`Run::Ended`], when the plan is played (or a ramp is not
+    /// compressed, which the constructors of a [`Compressed`] player rule
+    /// out).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn refill_runs(&mut self) -> Option<&mut Self> {
+        if self.begin_runs().is_none() {
+            self.run = Run::ended();
+            return None;
+        }
+        Some(self)
+    }
+
+    /// [`Player::refill_runs`]: `None` when the plan is played.
+    #[inline(always)]
+    fn begin_runs(&mut self) -> Option<()> {
+        let next = self.next_stretch()?;
+        let s = self.plan.stretches.get_mut(next)?;
+        let Ramp::Runs(runs) = (if s.decel { &self.decel } else { &self.accel }) else {
+            return None;
+        };
+        self.computed = s.at.take_run(runs, s.dir, s.count);
+        s.count -= self.computed.left;
+        Some(())
+    }
+
+    /// Begins the plan's next run; `None`, the run [`Run::Ended`], when
+    /// the plan is played.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn refill(&mut self) -> Option<&mut Self> {
+        // Most stretches of a per-step table are a whole run, made when the
+        // move was planned: taken at once.
+        let next = self.plan.next;
+        if next < self.plan.len {
+            if let Some(s) = self.plan.stretches.get_mut(next) {
+                if s.run.is_some() && !(self.endless && s.decelerating) {
+                    self.run = s.run.take()?;
+                    s.count = 0;
+                    self.plan.at = next;
+                    self.plan.next = next + 1;
+                    return Some(self);
+                }
+            }
+        }
+        match self.next_run() {
+            Some(run) => self.run = run,
+            None => {
+                self.run = Run::ended();
+                return None;
+            }
+        }
+        Some(self)
+    }
+
+    /// The next stretch with steps not yet handed out, now the one being
+    /// played; `None` when the plan is played.
+    #[inline(always)]
+    pub(super) fn next_stretch(&mut self) -> Option<usize> {
+        loop {
+            let next = self.plan.next;
+            if next >= self.plan.len {
+                return None;
+            }
+            let s = self.plan.stretches.get(next)?;
+            if s.count > 0 {
+                if self.endless && s.decelerating {
+                    self.next_lap();
+                    continue;
+                }
+                self.plan.at = next;
+                return Some(next);
+            }
+            self.plan.next = next + 1;
+        }
+    }
+
+    /// The plan's next run, or `None` when the plan is played.
+    pub(super) fn next_run(&mut self) -> Option<Run<'a, W>> {
+        let next = self.next_stretch()?;
+        let s = self.plan.stretches.get_mut(next)?;
+        // A whole run made when the move was planned.
+        if s.run.is_some() {
+            let run = s.run.take();
+            s.count = 0;
+            self.plan.next = next + 1;
+            return run;
+        }
+        let ramp = if s.decel { &self.decel } else { &self.accel };
+        if let Ramp::Runs(runs) = *ramp {
+            // A compressed table: one run at a time, played by the step path
+            // from `computed` (behind an empty `Down` for any layout).
+            self.computed = s.at.take_run(runs, s.dir, s.count);
+            s.count -= self.computed.left;
+            return Some(Run::Down([].iter()));
+        }
+        // A held or segment table: one entry at a time.
+        let (period, n) = s.at.take_entry(ramp, s.dir, s.count)?;
+        s.count -= n;
+        Some(Run::Hold(*period, n))
+    }
+}
