@@ -8,13 +8,12 @@
 # per-step table is more than the bare load + 4, or the compressed player's
 # (`Player::compressed`) in any phase of the compressed ramp more than the
 # bare load + 8, or either wrapped in `Buffered` (and the axis) more than
-# the same (+ 1.5 more on the M0); or when the step interrupt (SysTick's
-# handler, from its vector to its return, the pin's toggle included, the
-# pin pulsed before the step so that every edge is at its time to the tick)
-# takes more than 23 on the M3 or the M4F (20 to 22 measured; the goal of
-# 20 is not reached); or when `Player::fill` takes
-# more than 6 instructions per period filled in any phase of the per-step
-# table, or more than 12 in any phase of the compressed ramp; or when three
+# the same; or when the step interrupt (SysTick's handler, from its vector
+# to its return, the pin's toggle included, the pin pulsed before the step
+# so that every edge is at its time to the tick) takes more than 20 on the
+# M3 or the M4F; or when `Player::fill` takes more than 6 instructions per
+# period filled in any phase of the per-step table, or more than 12 in any
+# phase of the compressed ramp; or when three
 # `Axes` (a lead and two followers) take more per step than the player in
 # the same phase of the same table plus, per follower, 11.5 on the M3 and
 # M4F and 16 on the M0 (the figures measured, as a bound against regressions;
@@ -99,7 +98,7 @@ for core in "${cores[@]}"; do printf " %20s" "$core"; done
 echo
 status=0
 # The most instructions per step of the step interrupt on the M3 and M4F.
-handler_most=23
+handler_most=20
 while IFS='|' read -r label _; do
     printf "%-58s" "$label"
     for core in "${cores[@]}"; do
@@ -116,7 +115,7 @@ echo
 
 # The goals: the player's mean in every phase of the per-step table within
 # the bare load + 4, the compressed player's on runs within the bare load + 8,
-# Buffered alike, the step interrupt within 23 instructions a step.
+# Buffered alike, the step interrupt within 20 instructions a step.
 for core in "${cores[@]}"; do
     awk -F'|' -v core="$core" -v handler="$handler_most" '
         { split($4, c, " "); mean[$1] = $3 == "periods" ? c[1] / $2 : c[1] / c[2] }
@@ -137,11 +136,8 @@ for core in "${cores[@]}"; do
                         bad = 1
                     }
                 }
-                # Buffered: the step path of the player it wraps, and one test more.
+                # Buffered: the step path of the player it wraps.
                 limit = l ~ /^Buffered(,| axis,) per-step table/ ? 4 : l ~ /^Buffered Player::compressed/ ? 8 : -1
-                # The M0 keeps the address of the wrapper in a register for
-                # the refill: one instruction a step more than the player.
-                if (limit >= 0 && core == "M0") limit += 1.5
                 if (limit >= 0 && mean[l] > bare + limit) {
                     printf "FAIL %s: %s %.2f instructions per step, more than the bare load %.2f + %.1f\n", core, l, mean[l], bare, limit
                     bad = 1
@@ -163,12 +159,12 @@ for core in "${cores[@]}"; do
                 }
                 most = l ~ /^Player::fill, per-step table/ ? 6 : l ~ /^Player::fill, compressed/ ? 12 : -1
                 if (most >= 0 && mean[l] > most) {
-                    printf "FAIL %s: %s %.2f instructions per period filled, more than %d\n", core, l, mean[l], most
+                    printf "FAIL %s: %s %.2f instructions per period filled, more than %s\n", core, l, mean[l], most
                     bad = 1
                 }
             }
             exit bad
         }' "$out/$core.rows" || status=1
 done
-[ "$status" = 0 ] && echo "ok: on every core the player's per-step mean is within the bare load + 4, the compressed player's within the bare load + 8 (Buffered the same, + 1.5 on the M0), the step interrupt within 23 on the M3 and M4F, Player::fill takes at most 6 instructions per period of the per-step table, 12 of compressed runs, three Axes within the player + 2 x 11.5 (M0: 2 x 16), planning within 2700 on the table and 33000 on the compressed ramp (M3, M4F)"
+[ "$status" = 0 ] && echo "ok: on every core the player's per-step mean is within the bare load + 4, the compressed player's within the bare load + 8 (Buffered the same), the step interrupt within 20 on the M3 and M4F, Player::fill takes at most 6 instructions per period of the per-step table, 12 of compressed runs, three Axes within the player + 2 x 11.5 (M0: 2 x 16), planning within 2700 on the table and 33000 on the compressed ramp (M3, M4F)"
 exit "$status"

@@ -3,7 +3,7 @@
 //! periods are loaded at the start, and each interrupt loads the period
 //! after the interval now starting. `main` hands the stepper to the
 //! interrupt for a move and takes it back when the move has ended: no lock
-//! and no check in the interrupt, 20 to 22 instructions a step on a
+//! and no check in the interrupt, 16 to 18 instructions a step on a
 //! Cortex-M3 from the vector to the return (`examples/measure`); the pin
 //! is pulsed first, so every edge comes the same time after its wrap.
 #![no_std]
