@@ -130,7 +130,8 @@ pub enum Error {
         /// The timer's reloads per step.
         ticks_per_step: u8,
     },
-    /// `compress` above [`MAX_COMPRESS_TICKS`](crate::MAX_COMPRESS_TICKS).
+    /// `compress` above 65 535 ticks (`MAX_COMPRESS_TICKS`, with the `std`
+    /// feature).
     CompressTooLarge {
         /// The value given.
         value: f64,
