@@ -59,14 +59,8 @@ impl<W: TableWord, L: Layout> Steps for Player<'_, W, L> {
     }
     #[inline]
     fn step_pulsed(&mut self, pulse: impl FnOnce(), write: impl FnMut(W)) -> bool {
-        match self.play_pulsed(pulse, write) {
-            Pulsed::Ended => false,
-            Pulsed::Played => true,
-            Pulsed::Empty(write) => {
-                self.step_past_run(write);
-                true
-            }
-        }
+        self.play_pulsed(pulse, write)
+            .taken(|write| self.step_past_run(write))
     }
     #[inline]
     fn step_buffered(&mut self, write: impl FnMut(W)) -> bool {
@@ -92,14 +86,9 @@ impl<W: TableWord, L: Layout> Steps for Axis<'_, W, L> {
     }
     #[inline]
     fn step_pulsed(&mut self, pulse: impl FnOnce(), mut write: impl FnMut(W)) -> bool {
-        match self.player_mut().play_pulsed(pulse, &mut write) {
-            Pulsed::Ended => false,
-            Pulsed::Played => true,
-            Pulsed::Empty(_) => {
-                self.step_past_run(write);
-                true
-            }
-        }
+        self.player_mut()
+            .play_pulsed(pulse, &mut write)
+            .taken(|write| self.step_past_run(write))
     }
     #[inline]
     fn step_buffered(&mut self, write: impl FnMut(W)) -> bool {
@@ -118,6 +107,23 @@ pub(crate) enum Pulsed<F> {
     Played,
     /// Pulsed; the run is played: `write` back, for the path past it.
     Empty(F),
+}
+
+impl<F> Pulsed<F> {
+    /// `true` when a step is taken now; past the run, `past` plays on
+    /// with `write` (its result, whether it found a period, does not
+    /// change that a step is taken now).
+    #[inline(always)]
+    fn taken(self, past: impl FnOnce(F) -> bool) -> bool {
+        match self {
+            Pulsed::Ended => false,
+            Pulsed::Played => true,
+            Pulsed::Empty(write) => {
+                past(write);
+                true
+            }
+        }
+    }
 }
 
 /// A [`Player`], an [`Axis`] or [`Axes`] for a reload register that takes
