@@ -3,6 +3,7 @@
 use super::axis::{Direction, Moving};
 use super::{AnyLayout, Layout, Player};
 use crate::base::timer::TableWord;
+use core::sync::atomic::{Ordering, compiler_fence};
 
 /// `N` axes that move together on one [`Player`]'s ramp: a straight line in
 /// `N` dimensions, every axis starting and finishing with the others.
@@ -108,44 +109,75 @@ pub struct Axes<'a, W, const N: usize, L = AnyLayout> {
 #[derive(Clone, Copy, Debug)]
 #[repr(C)]
 struct Edges<const N: usize> {
-    acc: [u32; N],
-    inc: [u32; N],
+    /// `slot[0]`: the lead's steps (`L`) and bit; `slot[j]`: follower
+    /// `j`'s steps and accumulator, in that order for an odd `j` and the
+    /// other way round for an even one, so that the accumulators of
+    /// followers `j` and `j + 1` (`j` odd) are adjacent.
+    slot: [[u32; 2]; N],
+    /// `bit[j]`: follower `j`'s bit of the mask (`bit[0]` unused).
     bit: [u32; N],
 }
 
 impl<const N: usize> Edges<N> {
     const REST: Self = Edges {
-        acc: [0; N],
-        inc: [0; N],
+        slot: [[0; 2]; N],
         bit: [0; N],
     };
 
+    /// Where follower `j`'s accumulator is in its slot.
+    const fn acc_at(j: usize) -> usize {
+        j % 2
+    }
+
+    /// Follower `j`'s accumulator.
+    #[cfg(test)]
+    fn acc(&self, j: usize) -> u32 {
+        self.slot[j][Self::acc_at(j)]
+    }
+
+    /// Sets follower `j`'s steps and accumulator.
+    fn set(&mut self, j: usize, inc: u32, acc: u32) {
+        self.slot[j][Self::acc_at(j)] = acc;
+        self.slot[j][1 - Self::acc_at(j)] = inc;
+    }
+
     /// The mask of the axes that step on the lead's next step, the
-    /// followers' accumulators moved on by it. Written out slot by slot
-    /// (the slots past `N` vanish): a loop costs more than its body.
+    /// followers' accumulators moved on by it. Written out pair of
+    /// followers by pair (the followers past `N` vanish): a loop costs more
+    /// than its body.
     #[inline(always)]
     fn next(&mut self) -> u32 {
-        // The whole state in registers first, then the accumulators back.
-        let Edges { mut acc, inc, bit } = *self;
-        let lead_steps = inc[0];
-        let mut mask = bit[0];
-        macro_rules! follow {
+        let [lead_steps, mut mask] = self.slot[0];
+        // Follower `j`'s accumulator moved on, its bit into the mask when
+        // it steps: an addition and a branch, and where it steps a
+        // subtraction, a load and an or (the fence keeps the branch).
+        let mut follow = |acc: u32, inc: u32, j: usize| {
+            let (sum, carry) = acc.overflowing_add(inc);
+            if carry {
+                compiler_fence(Ordering::SeqCst);
+                mask |= self.bit.get(j).copied().unwrap_or(0);
+                return sum.wrapping_sub(lead_steps);
+            }
+            sum
+        };
+        macro_rules! pair {
             ($($j:literal)*) => {$(
-                if $j < N {
-                    let slot = (acc.get_mut($j), inc.get($j), bit.get($j));
-                    if let (Some(acc), Some(&inc), Some(&bit)) = slot {
-                        let (mut sum, carry) = acc.overflowing_add(inc);
-                        if carry {
-                            sum = sum.wrapping_sub(lead_steps);
-                            mask |= bit;
-                        }
-                        *acc = sum;
+                if let Some(&[inc, acc]) = self.slot.get($j) {
+                    let first = follow(acc, inc, $j);
+                    // The next follower's loads after this one's work:
+                    // fewer registers live.
+                    compiler_fence(Ordering::SeqCst);
+                    let second = self.slot.get($j + 1).map(|&[acc, inc]| follow(acc, inc, $j + 1));
+                    if let Some(slot) = self.slot.get_mut($j) {
+                        slot[1] = first;
+                    }
+                    if let (Some(slot), Some(acc)) = (self.slot.get_mut($j + 1), second) {
+                        slot[0] = acc;
                     }
                 }
             )*};
         }
-        follow!(1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 21 22 23 24 25 26 27 28 29 30 31);
-        self.acc = acc;
+        pair!(1 3 5 7 9 11 13 15 17 19 21 23 25 27 29 31);
         mask
     }
 }
@@ -274,19 +306,18 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
         }
         let l = self.steps[lead];
         let mut edges = Edges::REST;
-        edges.inc[0] = l;
-        edges.bit[0] = bit(lead);
+        edges.slot[0] = [l, bit(lead)];
         let followers = (0..N).filter(|&i| i != lead);
         for (j, i) in (1..N).zip(followers) {
             let d = self.steps[i];
-            edges.inc[j] = d;
             edges.bit[j] = bit(i);
             // (d·0 + h) mod L, less L: `h` is below `d`, so below `L`.
-            edges.acc[j] = if d == 0 {
+            let acc = if d == 0 {
                 0
             } else {
                 ((d - 1) / 2).wrapping_sub(l)
             };
+            edges.set(j, d, acc);
         }
         self.edges = edges;
         self.lead_steps = l;
@@ -454,7 +485,7 @@ mod tests {
                 // The accumulator after `s` lead steps: (d·s + h) mod L, less L.
                 let held = |s: u64| ((d * s + (d - 1) / 2) % l) as u32;
                 let state = |s: u64| held(s).wrapping_sub(steps[0]);
-                assert_eq!(axes.edges.acc[j], state(0), "{steps:?}");
+                assert_eq!(axes.edges.acc(j), state(0), "{steps:?}");
                 let probes = [0, 1, 2, l / 3, l / 2, l - 2, l - 1];
                 for s in probes
                     .into_iter()
@@ -462,11 +493,11 @@ mod tests {
                 {
                     let s = s.min(l - 1);
                     let mut edges = axes.edges;
-                    edges.acc[j] = state(s);
+                    edges.set(j, steps[j], state(s));
                     let mask = edges.next();
                     let steps_now = taken(d, l, s + 1) - taken(d, l, s);
                     assert_eq!(u64::from(mask >> j & 1), steps_now, "{steps:?} at {s}");
-                    assert_eq!(edges.acc[j], state(s + 1), "{steps:?} at {s}");
+                    assert_eq!(edges.acc(j), state(s + 1), "{steps:?} at {s}");
                     assert_eq!(
                         u64::from(follower_steps(steps[j], s as u32, steps[0])),
                         taken(d, l, s)
