@@ -109,19 +109,24 @@ pub struct Axes<'a, W, const N: usize, L = AnyLayout> {
 #[derive(Clone, Copy, Debug)]
 #[repr(C)]
 struct Edges<const N: usize> {
-    /// `slot[0]`: the lead's steps (`L`) and bit; `slot[j]`: follower
-    /// `j`'s steps and accumulator, in that order for an odd `j` and the
-    /// other way round for an even one, so that the accumulators of
-    /// followers `j` and `j + 1` (`j` odd) are adjacent.
+    /// The lead's bit of the mask: the mask of an edge where no follower
+    /// steps.
+    lead_bit: u32,
+    /// `slot[j - 1]`: follower `j`'s steps and accumulator, in that order
+    /// for an odd `j` and the other way round for an even one, so that
+    /// the accumulators of followers `j` and `j + 1` (`j` odd) are
+    /// adjacent (`slot[N - 1]` unused).
     slot: [[u32; 2]; N],
-    /// `bit[j]`: follower `j`'s bit of the mask (`bit[0]` unused).
-    bit: [u32; N],
+    /// `steps[j - 1]`: follower `j`'s bit of the mask and the lead's steps
+    /// (`L`), read on the edges where it steps.
+    steps: [[u32; 2]; N],
 }
 
 impl<const N: usize> Edges<N> {
     const REST: Self = Edges {
+        lead_bit: 0,
         slot: [[0; 2]; N],
-        bit: [0; N],
+        steps: [[0; 2]; N],
     };
 
     /// Where follower `j`'s accumulator is in its slot.
@@ -132,13 +137,15 @@ impl<const N: usize> Edges<N> {
     /// Follower `j`'s accumulator.
     #[cfg(test)]
     fn acc(&self, j: usize) -> u32 {
-        self.slot[j][Self::acc_at(j)]
+        self.slot[j - 1][Self::acc_at(j)]
     }
 
-    /// Sets follower `j`'s steps and accumulator.
-    fn set(&mut self, j: usize, inc: u32, acc: u32) {
-        self.slot[j][Self::acc_at(j)] = acc;
-        self.slot[j][1 - Self::acc_at(j)] = inc;
+    /// Sets follower `j` (`1..N`): its steps, accumulator and bit, and the
+    /// lead's steps.
+    fn set(&mut self, j: usize, inc: u32, acc: u32, bit: u32, lead_steps: u32) {
+        self.slot[j - 1][Self::acc_at(j)] = acc;
+        self.slot[j - 1][1 - Self::acc_at(j)] = inc;
+        self.steps[j - 1] = [lead_steps, bit];
     }
 
     /// The mask of the axes that step on the lead's next step, the
@@ -147,31 +154,33 @@ impl<const N: usize> Edges<N> {
     /// than its body.
     #[inline(always)]
     fn next(&mut self) -> u32 {
-        let [lead_steps, mut mask] = self.slot[0];
+        let mut mask = self.lead_bit;
         // Follower `j`'s accumulator moved on, its bit into the mask when
-        // it steps: an addition and a branch, and where it steps a
-        // subtraction, a load and an or (the fence keeps the branch).
+        // it steps: an addition and a branch, and where it steps a load of
+        // its bit and `L`, an or and a subtraction (the fence keeps the
+        // branch).
         let mut follow = |acc: u32, inc: u32, j: usize| {
             let (sum, carry) = acc.overflowing_add(inc);
             if carry {
                 compiler_fence(Ordering::SeqCst);
-                mask |= self.bit.get(j).copied().unwrap_or(0);
+                let [lead_steps, bit] = self.steps.get(j - 1).copied().unwrap_or([0; 2]);
+                mask |= bit;
                 return sum.wrapping_sub(lead_steps);
             }
             sum
         };
         macro_rules! pair {
             ($($j:literal)*) => {$(
-                if let Some(&[inc, acc]) = self.slot.get($j) {
+                if let (true, Some(&[inc, acc])) = ($j < N, self.slot.get($j - 1)) {
                     let first = follow(acc, inc, $j);
-                    // The next follower's loads after this one's work:
-                    // fewer registers live.
-                    compiler_fence(Ordering::SeqCst);
-                    let second = self.slot.get($j + 1).map(|&[acc, inc]| follow(acc, inc, $j + 1));
-                    if let Some(slot) = self.slot.get_mut($j) {
+                    let second = match self.slot.get($j) {
+                        Some(&[acc, inc]) if $j + 1 < N => Some(follow(acc, inc, $j + 1)),
+                        _ => None,
+                    };
+                    if let Some(slot) = self.slot.get_mut($j - 1) {
                         slot[1] = first;
                     }
-                    if let (Some(slot), Some(acc)) = (self.slot.get_mut($j + 1), second) {
+                    if let (Some(slot), Some(acc)) = (self.slot.get_mut($j), second) {
                         slot[0] = acc;
                     }
                 }
@@ -306,18 +315,17 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
         }
         let l = self.steps[lead];
         let mut edges = Edges::REST;
-        edges.slot[0] = [l, bit(lead)];
+        edges.lead_bit = bit(lead);
         let followers = (0..N).filter(|&i| i != lead);
         for (j, i) in (1..N).zip(followers) {
             let d = self.steps[i];
-            edges.bit[j] = bit(i);
             // (d·0 + h) mod L, less L: `h` is below `d`, so below `L`.
             let acc = if d == 0 {
                 0
             } else {
                 ((d - 1) / 2).wrapping_sub(l)
             };
-            edges.set(j, d, acc);
+            edges.set(j, d, acc, bit(i), l);
         }
         self.edges = edges;
         self.lead_steps = l;
@@ -493,7 +501,7 @@ mod tests {
                 {
                     let s = s.min(l - 1);
                     let mut edges = axes.edges;
-                    edges.set(j, steps[j], state(s));
+                    edges.set(j, steps[j], state(s), 1 << j, steps[0]);
                     let mask = edges.next();
                     let steps_now = taken(d, l, s + 1) - taken(d, l, s);
                     assert_eq!(u64::from(mask >> j & 1), steps_now, "{steps:?} at {s}");
