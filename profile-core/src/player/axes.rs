@@ -68,8 +68,8 @@ use core::sync::atomic::{Ordering, compiler_fence};
 /// assert_eq!(plotter.position(), [10, -4]);
 /// ```
 // The edges' state first, read by every step at the smallest offsets (an
-// M0 loads a word at most 124 bytes from its base), then the player, whose
-// step path reads only its first fields.
+// M0 loads a word at most 124 bytes from its base; 4 + 16·N bytes), then
+// the player, whose step path reads only its first fields.
 #[derive(Clone, Debug)]
 #[repr(C)]
 pub struct Axes<'a, W, const N: usize, L = AnyLayout> {
@@ -355,10 +355,11 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     /// the mask of the axes that step on it (bit `i` for axis `i`) to
     /// `write`, and returns `true`; or returns `false` when the move is
     /// done. The lead's [`Player::step`] with the followers' accumulators:
-    /// an addition per follower, and a subtraction where it steps, without
-    /// a branch. Three axes (two followers) take 18 to 20 instructions per
-    /// step more than the player on a Cortex-M3, 19 to 21 on an M4F and
-    /// 30.2 on an M0 (`examples/measure/measure.sh`). `write` is called
+    /// an addition and a branch per follower, and where it steps a
+    /// subtraction and its bit into the mask. Three axes (two followers
+    /// stepping on 86 % and 25 % of the lead's steps) take 11.4 to 13.3
+    /// instructions per step more than the player on a Cortex-M3 or M4F
+    /// and 18.5 on an M0 (`examples/measure/measure.sh`). `write` is called
     /// once a step at most; it is `FnMut` so that the step can hand it on
     /// to the path that refills the run.
     #[inline]
