@@ -95,10 +95,11 @@ pub struct Axes<'a, W, const N: usize, L = AnyLayout> {
     turn: Option<([Direction; N], u32)>,
 }
 
-/// The followers' accumulators, laid out for the step path: slot 0 holds
-/// what every follower shares (the lead's steps and bit), slots `1..N` the
-/// followers in the order of their axes, each with its accumulator, its
-/// steps and its bit of the mask.
+/// The followers' accumulators, laid out for the step path: the lead's bit
+/// first, then the followers (`1..N`, in the order of their axes) in
+/// pairs, each follower's steps beside its accumulator and the pair's two
+/// accumulators adjacent (one load of a follower's two words, one store of
+/// a pair's accumulators), then what a follower reads only where it steps.
 ///
 /// A follower of `d` steps of the lead's `L` has taken `n(s) = floor((d·s +
 /// h) / L)` steps after the lead's `s`-th, with `h = floor((d - 1) / 2)`:
@@ -117,8 +118,8 @@ struct Edges<const N: usize> {
     /// the accumulators of followers `j` and `j + 1` (`j` odd) are
     /// adjacent (`slot[N - 1]` unused).
     slot: [[u32; 2]; N],
-    /// `steps[j - 1]`: follower `j`'s bit of the mask and the lead's steps
-    /// (`L`), read on the edges where it steps.
+    /// `steps[j - 1]`: the lead's steps (`L`) and follower `j`'s bit of
+    /// the mask, read on the edges where it steps.
     steps: [[u32; 2]; N],
 }
 
