@@ -54,6 +54,7 @@
 mod axes;
 mod axis;
 mod buffered;
+mod direct;
 mod fill;
 mod layout;
 mod motion;
@@ -70,9 +71,9 @@ pub use axes::Axes;
 pub use axis::{Axis, Direction, Moving};
 pub use buffered::{AxesStart, Buffered, Steps};
 pub use layout::{AnyLayout, Compressed, Layout};
-use plan::{Plan, Run, Sides};
+use plan::{Plan, Run, Sides, Source};
 pub use ramp::Ramp;
-use ramp::{Cursor, RunState};
+use ramp::{Cursor, Reader, RunState};
 pub use rated::Rated;
 #[cfg(feature = "fugit")]
 pub use rated::{OffsetMismatch, Timed};
@@ -330,10 +331,8 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// diffused tables.
     fn entry_point(&self, current: u32) -> u32 {
         // Probes near each other: one cursor moves between them.
-        let mut cursor = self.tops[1];
-        let mut period_dec = |pos| {
-            Cursor::period_near(&mut cursor, &self.decel, pos).map_or(0, |w: W| w.into_ticks())
-        };
+        let mut decel = Reader::new(&self.decel, self.tops[1]);
+        let mut period_dec = |pos| decel.ticks(pos).unwrap_or(0);
         let (mut lo, mut hi) = (0u32, self.decel_last);
         if period_dec(hi) >= current {
             lo = hi;
@@ -393,7 +392,11 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         };
         let ramp = if s.decel { &self.decel } else { &self.accel };
         // The stretch's cursor stands near: where it reads next.
-        Cursor::near(Some(s.at), ramp, s.read_at(k - 1)).map_or(0, |c| c.period(ramp).into_ticks())
+        let hint = match s.source {
+            Source::At(at) => Some(at),
+            _ => None,
+        };
+        Cursor::near(hint, ramp, s.read_at(k - 1)).map_or(0, |c| c.period(ramp).into_ticks())
     }
 
     /// Steps left in the move.

@@ -2,7 +2,7 @@
 //! ([`Player::run`]), a cruise speed in ticks ([`Player::set_cruise_period`])
 //! and a new end ([`Player::retarget`]).
 
-use super::ramp::Cursor;
+use super::ramp::{Cursor, Reader};
 use super::search;
 use super::{Layout, Player};
 use crate::base::timer::TableWord;
@@ -106,12 +106,13 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// whose period is not shorter than `ticks`, 0 when none is.
     fn cruise_position(&self, ticks: u32) -> u32 {
         let (last, slack) = (self.accel_last, u64::from(self.accel_slack));
-        let mut cursor = self.tops[0];
+        let mut accel = Reader::new(&self.accel, self.tops[0]);
         // `k` steps below the top: short by more than the slack, and so is
         // every step above it.
         let k = search::past(0, last.saturating_add(1), &mut |k| {
-            Cursor::period_near(&mut cursor, &self.accel, last - k)
-                .is_some_and(|p: W| u64::from(p.into_ticks()) + slack < u64::from(ticks))
+            accel
+                .ticks(last - k)
+                .is_some_and(|p| u64::from(p) + slack < u64::from(ticks))
         });
         let Some(mut c) = Cursor::near(self.tops[0], &self.accel, last.saturating_sub(k)) else {
             return 0;
@@ -190,11 +191,12 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// longer than `current`; its top when none is.
     fn accel_entry(&self, current: u32) -> u32 {
         let (last, slack) = (self.accel_last, u64::from(self.accel_slack));
-        let mut cursor = self.tops[0];
+        let mut accel = Reader::new(&self.accel, self.tops[0]);
         // Longer by more than the slack, and so is every step before it.
         let pos = search::past(0, last, &mut |pos| {
-            Cursor::period_near(&mut cursor, &self.accel, pos)
-                .is_some_and(|p: W| u64::from(p.into_ticks()) > u64::from(current) + slack)
+            accel
+                .ticks(pos)
+                .is_some_and(|p| u64::from(p) > u64::from(current) + slack)
         });
         let Some(mut c) = Cursor::near(self.tops[0], &self.accel, pos) else {
             return last;

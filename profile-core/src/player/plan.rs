@@ -11,7 +11,7 @@
 use core::cell::Cell;
 use core::slice;
 
-use super::ramp::{Cursor, Ramp};
+use super::ramp::{Cursor, Ramp, Reader};
 use super::search;
 use crate::base::timer::TableWord;
 
@@ -71,21 +71,31 @@ impl<'a, W: TableWord> Run<'a, W> {
 /// cruise and the deceleration (within reach).
 pub(crate) const MAX_STRETCHES: usize = 8;
 
+/// What a stretch plays from.
+#[derive(Clone, Debug)]
+pub(crate) enum Source<'a, W> {
+    /// The stretch as one run, made when the move is planned: a per-step
+    /// table.
+    Run(Run<'a, W>),
+    /// That run, handed to the step path.
+    Taken,
+    /// Where it reads next, read as it plays: a held or segment table
+    /// entry by entry, compressed runs run by run.
+    At(Cursor),
+}
+
 /// Steps that read one ramp at positions moving the same way.
 #[derive(Clone, Debug)]
 #[repr(C)]
 pub(crate) struct Stretch<'a, W> {
-    /// The stretch as one run, made when the move is planned, for a
-    /// per-step table (a held or segment table plays entry by entry).
-    pub(crate) run: Option<Run<'a, W>>,
+    /// What it plays from.
+    pub(crate) source: Source<'a, W>,
     /// Steps not yet handed to a run.
     pub(crate) count: u32,
     /// Reads the deceleration ramp (else the acceleration ramp).
     pub(crate) decel: bool,
     /// The position it reads first.
     pub(crate) start: u32,
-    /// Where it reads next.
-    pub(crate) at: Cursor,
     /// Positions per step: -1, 0 or 1.
     pub(crate) dir: i8,
     /// Steps in all.
@@ -138,10 +148,9 @@ impl<'a, W: TableWord> Plan<'a, W> {
         len: 0,
         stretches: [const {
             Stretch {
-                run: None,
+                source: Source::Taken,
                 decel: false,
                 start: 0,
-                at: Cursor::ZERO,
                 dir: 0,
                 count: 0,
                 total: 0,
@@ -159,6 +168,7 @@ impl<'a, W: TableWord> Plan<'a, W> {
         self.len = 0;
     }
 
+    #[inline(always)]
     pub(crate) fn push(&mut self, stretch: Stretch<'a, W>) {
         if let Some(slot) = self.stretches.get_mut(self.len) {
             *slot = stretch;
@@ -197,6 +207,13 @@ pub(crate) struct Sides<'a, W> {
 
 impl<'a, W: TableWord> Sides<'a, W> {
     fn a(&self, pos: u32) -> u32 {
+        if let Ramp::Steps {
+            periods,
+            hold: 0..=1,
+        } = self.accel
+        {
+            return periods.get(pos as usize).map_or(0, |p| p.into_ticks());
+        }
         self.cursor(false, pos)
             .map_or(0, |c| c.period(&self.accel).into_ticks())
     }
@@ -233,7 +250,7 @@ impl<'a, W: TableWord> Sides<'a, W> {
     }
 
     /// One step of the acceleration side towards the cruise position.
-    fn toward(&self, p: u32) -> (u32, i8) {
+    pub(crate) fn toward(&self, p: u32) -> (u32, i8) {
         match p.cmp(&self.cruise) {
             core::cmp::Ordering::Less => (p + 1, 1),
             core::cmp::Ordering::Greater => (p - 1, -1),
@@ -247,6 +264,7 @@ impl<'a, W: TableWord> Sides<'a, W> {
         self.stretch(true, pos, -1, pos + 1, acc, 0)
     }
 
+    #[inline(always)]
     fn stretch(
         &self,
         decel: bool,
@@ -257,15 +275,16 @@ impl<'a, W: TableWord> Sides<'a, W> {
         acc_dir: i8,
     ) -> Stretch<'a, W> {
         let ramp = if decel { &self.decel } else { &self.accel };
-        let run = match *ramp {
-            Ramp::Steps { periods, hold } if hold <= 1 => Run::over(periods, pos, dir, count),
-            _ => None,
+        // A per-step table: one run, made now; else a cursor, read as the
+        // stretch plays.
+        let source = match ramp.per_step() {
+            Some(periods) => Run::over(periods, pos, dir, count).map_or(Source::Taken, Source::Run),
+            None => Source::At(self.cursor(decel, pos).unwrap_or(Cursor::ZERO)),
         };
         Stretch {
-            run,
+            source,
             decel,
             start: pos,
-            at: self.cursor(decel, pos).unwrap_or(Cursor::ZERO),
             dir,
             count,
             total: count,
@@ -368,6 +387,9 @@ impl<'a, W: TableWord> Sides<'a, W> {
     /// ([`search`]). Walking down, both get slower: those steps are read
     /// one by one.
     fn crossing(&self, p: u32, r: u32) -> u32 {
+        if let (Some(a), Some(d)) = (self.accel.per_step(), self.decel.per_step()) {
+            return self.crossing_direct(a, d, p, r);
+        }
         // Walking down, the steps one by one; then the search.
         let (walked_down, slack) = match self.toward(p).1 {
             -1 => ((p - self.cruise).min(r), self.slack),
@@ -380,12 +402,13 @@ impl<'a, W: TableWord> Sides<'a, W> {
             // `p` but for its slack: a deceleration step more than both
             // ramps' slack faster than that has every step before it faster
             // than the acceleration side.
-            let [_, mut d] = self.hints();
-            let at_p = self.a(p);
+            let [_, d] = self.hints();
+            let mut d = Reader::new(&self.decel, d);
+            let at_p = u64::from(self.a(p));
+            let slack = u64::from(self.slack);
             let from = search::past(0, walked_down, &mut |j| {
-                Cursor::period_near(&mut d, &self.decel, r - 1 - j).is_some_and(|dp: W| {
-                    u64::from(dp.into_ticks()) + u64::from(self.slack) < u64::from(at_p)
-                })
+                d.ticks(r - 1 - j)
+                    .is_some_and(|dp| u64::from(dp) + slack < at_p)
             });
             if let Some(j) = self.scan(p, r, from, walked_down - from) {
                 return j;
@@ -398,23 +421,28 @@ impl<'a, W: TableWord> Sides<'a, W> {
         // A step more than `slack` ticks short of not faster has every
         // step before it faster: the last of those is searched, and the
         // steps from there read one by one.
-        let [mut a, mut d] = self.hints();
-        let from = search::past(walked_down, r, &mut |j| {
-            let dp = Cursor::period_near(&mut d, &self.decel, r - 1 - j);
-            let ap = Cursor::period_near(&mut a, &self.accel, self.walked(p, j));
-            match (dp, ap) {
-                (Some(dp), Some(ap)) => {
-                    u64::from(dp.into_ticks()) + u64::from(slack) < u64::from(ap.into_ticks())
-                }
-                _ => false,
-            }
+        let [a, d] = self.hints();
+        let (mut a, mut d) = (Reader::new(&self.accel, a), Reader::new(&self.decel, d));
+        let (dir, slack) = (self.toward(p).1, u64::from(slack));
+        let from = search::past(walked_down, r, &mut |j| match (
+            d.ticks(r - 1 - j),
+            a.ticks(self.walked_by(p, dir, j)),
+        ) {
+            (Some(dp), Some(ap)) => u64::from(dp) + slack < u64::from(ap),
+            _ => false,
         });
         self.scan(p, r, from, r - from).unwrap_or(r)
     }
 
     /// Where the acceleration side stands `j` steps after `p`.
     fn walked(&self, p: u32, j: u32) -> u32 {
-        match self.toward(p).1 {
+        self.walked_by(p, self.toward(p).1, j)
+    }
+
+    /// [`Sides::walked`], the side moving `dir` (`toward(p)`'s).
+    #[inline]
+    pub(crate) fn walked_by(&self, p: u32, dir: i8, j: u32) -> u32 {
+        match dir {
             1 => p.saturating_add(j).min(self.cruise),
             -1 => p.saturating_sub(j).max(self.cruise),
             _ => p,

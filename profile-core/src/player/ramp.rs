@@ -105,6 +105,18 @@ impl<'a, W: TableWord> Ramp<'a, W> {
         Ramp::Runs(runs)
     }
 
+    /// The periods of a per-step table played entry by entry, else `None`.
+    #[inline]
+    pub(crate) fn per_step(&self) -> Option<&'a [W]> {
+        match *self {
+            Ramp::Steps {
+                periods,
+                hold: 0..=1,
+            } => Some(periods),
+            _ => None,
+        }
+    }
+
     /// Steps the ramp takes from rest to its top speed.
     pub fn len_steps(&self) -> u32 {
         match *self {
@@ -241,39 +253,6 @@ impl Cursor {
                 None
             }
         }
-    }
-
-    /// The period at `pos`, the cursor moved there from where it stands (or
-    /// placed, when `None`): on runs a whole run at a time, so that probes
-    /// near each other cost the runs between them, not the runs from the
-    /// start. The same cursor as [`Cursor::at`]; `None` past the ramp's end
-    /// (the cursor then stands nowhere useful: place it again). A per-step
-    /// table is read directly, the cursor left as it is.
-    #[inline]
-    pub(crate) fn period_near<W: TableWord>(
-        cursor: &mut Option<Cursor>,
-        ramp: &Ramp<'_, W>,
-        pos: u32,
-    ) -> Option<W> {
-        if let Ramp::Steps {
-            periods,
-            hold: 0..=1,
-        } = *ramp
-        {
-            return periods.get(pos as usize).copied();
-        }
-        Self::period_placed(cursor, ramp, pos)
-    }
-
-    /// [`Cursor::period_near`] on a ramp that is not a per-step table.
-    fn period_placed<W: TableWord>(
-        cursor: &mut Option<Cursor>,
-        ramp: &Ramp<'_, W>,
-        pos: u32,
-    ) -> Option<W> {
-        let c = Cursor::near(*cursor, ramp, pos)?;
-        *cursor = Some(c);
-        Some(c.period(ramp))
     }
 
     /// The cursor at `pos`: on runs moved there from `hint` (a cursor on
@@ -567,6 +546,46 @@ impl Cursor {
                     interval: period << RUN_FRACTION_BITS,
                     add: 0,
                 }
+            }
+        }
+    }
+}
+
+/// Reads a ramp's periods by position, in ticks, for the searches of a
+/// plan: a per-step table directly; any other ramp through a cursor moved
+/// from read to read (on runs a whole run at a time, so that reads near
+/// each other cost the runs between them, not the runs from the start).
+/// Chosen once per search, so that a read of a per-step table is a bounds
+/// check and a load.
+pub(crate) enum Reader<'r, 'a, W> {
+    /// A per-step table, each entry played once.
+    Table(&'a [W]),
+    /// Any other ramp, and the cursor of the last read.
+    Seek(&'r Ramp<'a, W>, Option<Cursor>),
+}
+
+impl<'r, 'a, W: TableWord> Reader<'r, 'a, W> {
+    /// A reader of `ramp`, its first read sought from `hint` when that is
+    /// nearer than the ramp's start.
+    pub(crate) fn new(ramp: &'r Ramp<'a, W>, hint: Option<Cursor>) -> Self {
+        match *ramp {
+            Ramp::Steps {
+                periods,
+                hold: 0..=1,
+            } => Reader::Table(periods),
+            _ => Reader::Seek(ramp, hint),
+        }
+    }
+
+    /// The period at step `pos`, in ticks; `None` past the ramp's end.
+    #[inline]
+    pub(crate) fn ticks(&mut self, pos: u32) -> Option<u32> {
+        match self {
+            Reader::Table(periods) => periods.get(pos as usize).map(|p| p.into_ticks()),
+            Reader::Seek(ramp, cursor) => {
+                let c = Cursor::near(*cursor, ramp, pos)?;
+                *cursor = Some(c);
+                Some(c.period(ramp).into_ticks())
             }
         }
     }

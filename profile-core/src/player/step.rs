@@ -3,7 +3,7 @@
 //! a buffered register ([`Buffered`](super::Buffered)).
 
 use super::buffered::Pulsed;
-use super::plan::Run;
+use super::plan::{Run, Source};
 use super::{Layout, Player, Ramp};
 use crate::base::timer::TableWord;
 
@@ -200,7 +200,10 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         let Ramp::Runs(runs) = (if s.decel { &self.decel } else { &self.accel }) else {
             return None;
         };
-        self.computed = s.at.take_run(runs, s.dir, s.count);
+        let Source::At(at) = &mut s.source else {
+            return None;
+        };
+        self.computed = at.take_run(runs, s.dir, s.count);
         s.count -= self.computed.left;
         Some(())
     }
@@ -215,8 +218,11 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         let next = self.plan.next;
         if next < self.plan.len {
             if let Some(s) = self.plan.stretches.get_mut(next) {
-                if s.run.is_some() && !(self.endless && s.decelerating) {
-                    self.run = s.run.take()?;
+                if matches!(s.source, Source::Run(_)) && !(self.endless && s.decelerating) {
+                    let Source::Run(run) = core::mem::replace(&mut s.source, Source::Taken) else {
+                        return None;
+                    };
+                    self.run = run;
                     s.count = 0;
                     self.plan.at = next;
                     self.plan.next = next + 1;
@@ -261,22 +267,27 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         let next = self.next_stretch()?;
         let s = self.plan.stretches.get_mut(next)?;
         // A whole run made when the move was planned.
-        if s.run.is_some() {
-            let run = s.run.take();
+        if let Source::Run(_) = s.source {
+            let Source::Run(run) = core::mem::replace(&mut s.source, Source::Taken) else {
+                return None;
+            };
             s.count = 0;
             self.plan.next = next + 1;
-            return run;
+            return Some(run);
         }
+        let Source::At(at) = &mut s.source else {
+            return None;
+        };
         let ramp = if s.decel { &self.decel } else { &self.accel };
         if let Ramp::Runs(runs) = *ramp {
             // A compressed table: one run at a time, played by the step path
             // from `computed` (behind an empty `Down` for any layout).
-            self.computed = s.at.take_run(runs, s.dir, s.count);
+            self.computed = at.take_run(runs, s.dir, s.count);
             s.count -= self.computed.left;
             return Some(Run::Down([].iter()));
         }
         // A held or segment table: one entry at a time.
-        let (period, n) = s.at.take_entry(ramp, s.dir, s.count)?;
+        let (period, n) = at.take_entry(ramp, s.dir, s.count)?;
         s.count -= n;
         Some(Run::Hold(*period, n))
     }

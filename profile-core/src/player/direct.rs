@@ -1,0 +1,110 @@
+//! Planning on per-step tables: the crossing of a plan ([`Sides::crossing`])
+//! found by reading both tables directly, a bounds check and a load per
+//! entry, no cursor.
+
+use super::plan::Sides;
+use super::search;
+use crate::base::timer::TableWord;
+
+/// The period of entry `i` of `table`, in ticks; `None` past its end.
+#[inline(always)]
+fn ticks<W: TableWord>(table: &[W], i: u32) -> Option<u32> {
+    table.get(i as usize).map(|p| p.into_ticks())
+}
+
+/// The first of `from..to` (steps of the last `r`) at which the
+/// deceleration table read at the steps that remain is not faster than
+/// `held`: `Some(to)` reached without one, `None` when the table ends.
+#[inline(always)]
+fn scan_held<W: TableWord>(d: &[W], r: u32, from: u32, to: u32, held: u32) -> Option<u32> {
+    // Steps `from..to` read the deceleration table from `r - 1 - from`
+    // down to `r - to`.
+    let read = d.get((r - to) as usize..(r - from) as usize)?;
+    Some(
+        match read.iter().rev().position(|x| x.into_ticks() >= held) {
+            Some(i) => from + i as u32,
+            None => to,
+        },
+    )
+}
+
+impl<W: TableWord> Sides<'_, W> {
+    /// [`Sides::crossing`] on two per-step tables `a` (acceleration) and
+    /// `d` (deceleration): the same steps read, the same answer.
+    pub(super) fn crossing_direct(&self, a: &[W], d: &[W], p: u32, r: u32) -> u32 {
+        let dir = self.toward(p).1;
+        let (walked_down, slack) = match dir {
+            -1 => ((p - self.cruise).min(r), self.slack),
+            1 => (0, self.slack),
+            _ => (0, self.decel_slack),
+        };
+        if walked_down > 0 {
+            // Walking down, the acceleration side is never faster than at
+            // `p` but for its slack: a deceleration step more than both
+            // ramps' slack faster than that has every step before it
+            // faster than the acceleration side.
+            let at_p = u64::from(ticks(a, p).unwrap_or(0));
+            let both = u64::from(self.slack);
+            let from = search::past(0, walked_down, &mut |j| {
+                ticks(d, r - 1 - j).is_some_and(|x| u64::from(x) + both < at_p)
+            });
+            for j in from..walked_down {
+                let (Some(x), Some(y)) = (ticks(d, r - 1 - j), ticks(a, p - j)) else {
+                    return r;
+                };
+                if x >= y {
+                    return j;
+                }
+            }
+            if walked_down == r {
+                return r;
+            }
+        }
+        let slack = u64::from(slack);
+        let p = self.walked_by(p, dir, walked_down);
+        let dir = self.toward(p).1;
+        if dir == 0 {
+            // Held: one period to compare the deceleration table with.
+            let Some(held) = ticks(a, p) else {
+                return r;
+            };
+            // Often the first: a long move's deceleration ramp joins at
+            // its top.
+            match scan_held(d, r, walked_down, walked_down + 1, held) {
+                Some(j) if j == walked_down => return j,
+                None => return r,
+                _ => {}
+            }
+            let from = search::past(walked_down, r, &mut |j| {
+                ticks(d, r - 1 - j).is_some_and(|x| u64::from(x) + slack < u64::from(held))
+            });
+            return scan_held(d, r, from, r, held).unwrap_or(r);
+        }
+        // Walking up to the cruise position, then held there.
+        let at = |j: u32| self.walked_by(p, dir, j - walked_down);
+        let faster = |j: u32| match (ticks(d, r - 1 - j), ticks(a, at(j))) {
+            (Some(x), Some(y)) => Some(x < y),
+            _ => None,
+        };
+        match faster(walked_down) {
+            Some(false) => return walked_down,
+            None => return r,
+            Some(true) => {}
+        }
+        let from = search::past(walked_down, r, &mut |j| match (
+            ticks(d, r - 1 - j),
+            ticks(a, at(j)),
+        ) {
+            (Some(x), Some(y)) => u64::from(x) + slack < u64::from(y),
+            _ => false,
+        });
+        for j in from..r {
+            match faster(j) {
+                Some(true) => {}
+                Some(false) => return j,
+                None => return r,
+            }
+        }
+        r
+    }
+}
