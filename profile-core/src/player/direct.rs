@@ -3,14 +3,9 @@
 //! entry, no cursor.
 
 use super::plan::Sides;
+use super::ramp::ticks_at;
 use super::search;
 use crate::base::timer::TableWord;
-
-/// The period of entry `i` of `table`, in ticks; `None` past its end.
-#[inline(always)]
-fn ticks<W: TableWord>(table: &[W], i: u32) -> Option<u32> {
-    table.get(i as usize).map(|p| p.into_ticks())
-}
 
 /// The first of `from..to` (steps of the last `r`) at which the
 /// deceleration table read at the steps that remain is not faster than
@@ -43,13 +38,13 @@ impl<W: TableWord> Sides<'_, W> {
             // `p` but for its slack: a deceleration step more than both
             // ramps' slack faster than that has every step before it
             // faster than the acceleration side.
-            let at_p = u64::from(ticks(a, p).unwrap_or(0));
+            let at_p = u64::from(ticks_at(a, p).unwrap_or(0));
             let both = u64::from(self.slack);
             let from = search::past(0, walked_down, &mut |j| {
-                ticks(d, r - 1 - j).is_some_and(|x| u64::from(x) + both < at_p)
+                ticks_at(d, r - 1 - j).is_some_and(|x| u64::from(x) + both < at_p)
             });
             for j in from..walked_down {
-                let (Some(x), Some(y)) = (ticks(d, r - 1 - j), ticks(a, p - j)) else {
+                let (Some(x), Some(y)) = (ticks_at(d, r - 1 - j), ticks_at(a, p - j)) else {
                     return r;
                 };
                 if x >= y {
@@ -65,7 +60,7 @@ impl<W: TableWord> Sides<'_, W> {
         let dir = self.toward(p).1;
         if dir == 0 {
             // Held: one period to compare the deceleration table with.
-            let Some(held) = ticks(a, p) else {
+            let Some(held) = ticks_at(a, p) else {
                 return r;
             };
             // Often the first: a long move's deceleration ramp joins at
@@ -76,13 +71,13 @@ impl<W: TableWord> Sides<'_, W> {
                 _ => {}
             }
             let from = search::past(walked_down, r, &mut |j| {
-                ticks(d, r - 1 - j).is_some_and(|x| u64::from(x) + slack < u64::from(held))
+                ticks_at(d, r - 1 - j).is_some_and(|x| u64::from(x) + slack < u64::from(held))
             });
             return scan_held(d, r, from, r, held).unwrap_or(r);
         }
         // Walking up to the cruise position, then held there.
         let at = |j: u32| self.walked_by(p, dir, j - walked_down);
-        let faster = |j: u32| match (ticks(d, r - 1 - j), ticks(a, at(j))) {
+        let faster = |j: u32| match (ticks_at(d, r - 1 - j), ticks_at(a, at(j))) {
             (Some(x), Some(y)) => Some(x < y),
             _ => None,
         };
@@ -92,8 +87,8 @@ impl<W: TableWord> Sides<'_, W> {
             Some(true) => {}
         }
         let from = search::past(walked_down, r, &mut |j| match (
-            ticks(d, r - 1 - j),
-            ticks(a, at(j)),
+            ticks_at(d, r - 1 - j),
+            ticks_at(a, at(j)),
         ) {
             (Some(x), Some(y)) => u64::from(x) + slack < u64::from(y),
             _ => false,

@@ -73,7 +73,7 @@ pub use buffered::{AxesStart, Buffered, Steps};
 pub use layout::{AnyLayout, Compressed, Layout};
 use plan::{Plan, Run, Sides, Source};
 pub use ramp::Ramp;
-use ramp::{Cursor, Reader, RunState};
+use ramp::{Cursor, Reader, RunState, ticks_at};
 pub use rated::Rated;
 #[cfg(feature = "fugit")]
 pub use rated::{OffsetMismatch, Timed};
@@ -330,29 +330,15 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// search, then a bounded look past the boundary for the ties of
     /// diffused tables.
     fn entry_point(&self, current: u32) -> u32 {
-        // Probes near each other: one cursor moves between them.
-        let mut decel = Reader::new(&self.decel, self.tops[1]);
-        let mut period_dec = |pos| decel.ticks(pos).unwrap_or(0);
-        let (mut lo, mut hi) = (0u32, self.decel_last);
-        if period_dec(hi) >= current {
-            lo = hi;
-        } else {
-            while hi - lo > 1 {
-                let mid = lo + (hi - lo) / 2;
-                if period_dec(mid) >= current {
-                    lo = mid;
-                } else {
-                    hi = mid;
-                }
+        let last = self.decel_last;
+        match self.decel.per_step() {
+            Some(d) => search::last_not_shorter(|pos| ticks_at(d, pos).unwrap_or(0), last, current),
+            None => {
+                // Probes near each other: one cursor moves between them.
+                let mut decel = Reader::new(&self.decel, self.tops[1]);
+                search::last_not_shorter(|pos| decel.ticks(pos).unwrap_or(0), last, current)
             }
         }
-        for _ in 0..16 {
-            if lo >= self.decel_last || period_dec(lo + 1) < current {
-                break;
-            }
-            lo += 1;
-        }
-        lo
     }
 
     fn period_dec(&self, pos: u32) -> u32 {
@@ -391,12 +377,16 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             _ => (s, played),
         };
         let ramp = if s.decel { &self.decel } else { &self.accel };
+        let pos = s.read_at(k - 1);
+        if let Some(periods) = ramp.per_step() {
+            return ticks_at(periods, pos).unwrap_or(0);
+        }
         // The stretch's cursor stands near: where it reads next.
         let hint = match s.source {
             Source::At(at) => Some(at),
             _ => None,
         };
-        Cursor::near(hint, ramp, s.read_at(k - 1)).map_or(0, |c| c.period(ramp).into_ticks())
+        Cursor::near(hint, ramp, pos).map_or(0, |c| c.period(ramp).into_ticks())
     }
 
     /// Steps left in the move.

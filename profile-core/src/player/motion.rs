@@ -2,7 +2,7 @@
 //! ([`Player::run`]), a cruise speed in ticks ([`Player::set_cruise_period`])
 //! and a new end ([`Player::retarget`]).
 
-use super::ramp::{Cursor, Reader};
+use super::ramp::{Reader, ticks_at};
 use super::search;
 use super::{Layout, Player};
 use crate::base::timer::TableWord;
@@ -105,24 +105,12 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// The position [`Player::set_cruise_period`] cruises at: the last
     /// whose period is not shorter than `ticks`, 0 when none is.
     fn cruise_position(&self, ticks: u32) -> u32 {
-        let (last, slack) = (self.accel_last, u64::from(self.accel_slack));
-        let mut accel = Reader::new(&self.accel, self.tops[0]);
-        // `k` steps below the top: short by more than the slack, and so is
-        // every step above it.
-        let k = search::past(0, last.saturating_add(1), &mut |k| {
-            accel
-                .ticks(last - k)
-                .is_some_and(|p| u64::from(p) + slack < u64::from(ticks))
-        });
-        let Some(mut c) = Cursor::near(self.tops[0], &self.accel, last.saturating_sub(k)) else {
-            return 0;
-        };
-        loop {
-            if c.period(&self.accel).into_ticks() >= ticks {
-                return c.pos;
-            }
-            if !c.backward(&self.accel) {
-                return 0;
+        let (last, slack) = (self.accel_last, self.accel_slack);
+        match self.accel.per_step() {
+            Some(a) => search::last_at_least(|pos| ticks_at(a, pos), last, slack, ticks),
+            None => {
+                let mut accel = Reader::new(&self.accel, self.tops[0]);
+                search::last_at_least(|pos| accel.ticks(pos), last, slack, ticks)
             }
         }
     }
@@ -163,15 +151,17 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// assert!(!{ player.start(6); player.next_period(); player.next_period(); player.retarget(1) });
     /// ```
     pub fn retarget(&mut self, steps: u32) -> bool {
-        if self.remaining() == 0 {
+        let remaining = self.remaining();
+        if remaining == 0 {
             self.start(steps);
             return true;
         }
-        if steps < self.steps_to_stop() {
+        // As `steps_to_stop`, the period played last read once.
+        let (current, needed) = self.stop_point();
+        if steps < needed.min(remaining) {
             return false;
         }
         self.endless = false;
-        let current = self.last_period();
         let (acc, decelerating) = self.state();
         let from = match (current, decelerating) {
             (0, _) => 0,
@@ -190,23 +180,12 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// The first position of the acceleration ramp whose period is not
     /// longer than `current`; its top when none is.
     fn accel_entry(&self, current: u32) -> u32 {
-        let (last, slack) = (self.accel_last, u64::from(self.accel_slack));
-        let mut accel = Reader::new(&self.accel, self.tops[0]);
-        // Longer by more than the slack, and so is every step before it.
-        let pos = search::past(0, last, &mut |pos| {
-            accel
-                .ticks(pos)
-                .is_some_and(|p| u64::from(p) > u64::from(current) + slack)
-        });
-        let Some(mut c) = Cursor::near(self.tops[0], &self.accel, pos) else {
-            return last;
-        };
-        loop {
-            if c.period(&self.accel).into_ticks() <= current {
-                return c.pos;
-            }
-            if !c.forward(&self.accel, last) {
-                return last;
+        let (last, slack) = (self.accel_last, self.accel_slack);
+        match self.accel.per_step() {
+            Some(a) => search::first_at_most(|pos| ticks_at(a, pos), last, slack, current),
+            None => {
+                let mut accel = Reader::new(&self.accel, self.tops[0]);
+                search::first_at_most(|pos| accel.ticks(pos), last, slack, current)
             }
         }
     }

@@ -92,20 +92,21 @@ pub(crate) struct Stretch<'a, W> {
     pub(crate) source: Source<'a, W>,
     /// Steps not yet handed to a run.
     pub(crate) count: u32,
+    // The four bytes together: one word.
     /// Reads the deceleration ramp (else the acceleration ramp).
     pub(crate) decel: bool,
-    /// The position it reads first.
-    pub(crate) start: u32,
     /// Positions per step: -1, 0 or 1.
     pub(crate) dir: i8,
-    /// Steps in all.
-    pub(crate) total: u32,
-    /// Where the acceleration side stands when the stretch begins.
-    pub(crate) acc: u32,
     /// How the acceleration side moves per step: -1, 0 or 1.
     pub(crate) acc_dir: i8,
     /// The deceleration ramp has taken over.
     pub(crate) decelerating: bool,
+    /// The position it reads first.
+    pub(crate) start: u32,
+    /// Steps in all.
+    pub(crate) total: u32,
+    /// Where the acceleration side stands when the stretch begins.
+    pub(crate) acc: u32,
 }
 
 impl<W: TableWord> Stretch<'_, W> {

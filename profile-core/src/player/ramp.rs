@@ -551,6 +551,13 @@ impl Cursor {
     }
 }
 
+/// The period of entry `i` of a per-step table, in ticks; `None` past its
+/// end.
+#[inline(always)]
+pub(crate) fn ticks_at<W: TableWord>(table: &[W], i: u32) -> Option<u32> {
+    table.get(i as usize).map(|p| p.into_ticks())
+}
+
 /// Reads a ramp's periods by position, in ticks, for the searches of a
 /// plan: a per-step table directly; any other ramp through a cursor moved
 /// from read to read (on runs a whole run at a time, so that reads near
@@ -581,7 +588,7 @@ impl<'r, 'a, W: TableWord> Reader<'r, 'a, W> {
     #[inline]
     pub(crate) fn ticks(&mut self, pos: u32) -> Option<u32> {
         match self {
-            Reader::Table(periods) => periods.get(pos as usize).map(|p| p.into_ticks()),
+            Reader::Table(periods) => ticks_at(periods, pos),
             Reader::Seek(ramp, cursor) => {
                 let c = Cursor::near(*cursor, ramp, pos)?;
                 *cursor = Some(c);

@@ -36,6 +36,88 @@ pub(crate) fn past(mut lo: u32, mut hi: u32, before: &mut impl FnMut(u32) -> boo
     lo
 }
 
+/// The largest position up to `last` whose period (`read`, in ticks) is
+/// not shorter than `current`, on a ramp whose periods fall but for ties
+/// and the slack of diffused tables: a bisection (position 0 taken as not
+/// shorter), then a look of at most 16 steps past the boundary for the
+/// ties.
+#[inline(always)]
+pub(crate) fn last_not_shorter(mut read: impl FnMut(u32) -> u32, last: u32, current: u32) -> u32 {
+    let (mut lo, mut hi) = (0u32, last);
+    if read(hi) >= current {
+        lo = hi;
+    } else {
+        while hi - lo > 1 {
+            let mid = lo + (hi - lo) / 2;
+            if read(mid) >= current {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+    }
+    for _ in 0..16 {
+        if lo >= last || read(lo + 1) < current {
+            break;
+        }
+        lo += 1;
+    }
+    lo
+}
+
+/// The last position up to `last` whose period (`read`, in ticks) is not
+/// shorter than `ticks`, 0 when none is; `slack` the ramp's
+/// ([`slack`]). Exactly the first such position a walk down from `last`
+/// finds.
+#[inline(always)]
+pub(crate) fn last_at_least(
+    mut read: impl FnMut(u32) -> Option<u32>,
+    last: u32,
+    slack: u32,
+    ticks: u32,
+) -> u32 {
+    let slack = u64::from(slack);
+    // `k` steps below the top: short by more than the slack, and so is
+    // every step above it.
+    let k = past(0, last.saturating_add(1), &mut |k| {
+        read(last - k).is_some_and(|p| u64::from(p) + slack < u64::from(ticks))
+    });
+    let mut pos = last.saturating_sub(k);
+    loop {
+        match read(pos) {
+            Some(p) if p >= ticks => return pos,
+            None => return 0,
+            _ if pos == 0 => return 0,
+            _ => pos -= 1,
+        }
+    }
+}
+
+/// The first position up to `last` whose period (`read`, in ticks) is not
+/// longer than `current`; `last` when none is; `slack` the ramp's
+/// ([`slack`]). Exactly the first such position a walk up from 0 finds.
+#[inline(always)]
+pub(crate) fn first_at_most(
+    mut read: impl FnMut(u32) -> Option<u32>,
+    last: u32,
+    slack: u32,
+    current: u32,
+) -> u32 {
+    let (slack, current) = (u64::from(slack), u64::from(current));
+    // Longer by more than the slack, and so is every step before it.
+    let mut pos = past(0, last, &mut |pos| {
+        read(pos).is_some_and(|p| u64::from(p) > current + slack)
+    });
+    loop {
+        match read(pos) {
+            Some(p) if u64::from(p) <= current => return pos,
+            None => return last,
+            _ if pos >= last => return last,
+            _ => pos += 1,
+        }
+    }
+}
+
 /// The most a step's period exceeds the shortest period before it, in
 /// ticks: 0 for a ramp ordered slow to fast, a tick or so for a table
 /// rounded by diffusion (neighbours may differ by a tick either way).
