@@ -7,6 +7,13 @@ use super::ramp::ticks_at;
 use super::search;
 use crate::base::timer::TableWord;
 
+/// `x` shorter than `y` by more than `slack` ticks.
+#[inline(always)]
+fn faster_by(x: u32, slack: u32, y: u32) -> bool {
+    // Saturated, `x + slack` is not below any `y`, as the exact sum.
+    x.saturating_add(slack) < y
+}
+
 /// The first of `from..to` (steps of the last `r`) at which the
 /// deceleration table read at the steps that remain is not faster than
 /// `held`: `Some(to)` reached without one, `None` when the table ends.
@@ -23,7 +30,7 @@ fn scan_held<W: TableWord>(d: &[W], r: u32, from: u32, to: u32, held: u32) -> Op
     )
 }
 
-impl<W: TableWord> Sides<'_, W> {
+impl<W: TableWord> Sides<'_, '_, W> {
     /// [`Sides::crossing`] on two per-step tables `a` (acceleration) and
     /// `d` (deceleration): the same steps read, the same answer.
     pub(super) fn crossing_direct(&self, a: &[W], d: &[W], p: u32, r: u32) -> u32 {
@@ -38,10 +45,10 @@ impl<W: TableWord> Sides<'_, W> {
             // `p` but for its slack: a deceleration step more than both
             // ramps' slack faster than that has every step before it
             // faster than the acceleration side.
-            let at_p = u64::from(ticks_at(a, p).unwrap_or(0));
-            let both = u64::from(self.slack);
+            let at_p = ticks_at(a, p).unwrap_or(0);
+            let both = self.slack;
             let from = search::past(0, walked_down, &mut |j| {
-                ticks_at(d, r - 1 - j).is_some_and(|x| u64::from(x) + both < at_p)
+                ticks_at(d, r - 1 - j).is_some_and(|x| faster_by(x, both, at_p))
             });
             for j in from..walked_down {
                 let (Some(x), Some(y)) = (ticks_at(d, r - 1 - j), ticks_at(a, p - j)) else {
@@ -55,7 +62,6 @@ impl<W: TableWord> Sides<'_, W> {
                 return r;
             }
         }
-        let slack = u64::from(slack);
         let p = self.walked_by(p, dir, walked_down);
         let dir = self.toward(p).1;
         if dir == 0 {
@@ -71,7 +77,7 @@ impl<W: TableWord> Sides<'_, W> {
                 _ => {}
             }
             let from = search::past(walked_down, r, &mut |j| {
-                ticks_at(d, r - 1 - j).is_some_and(|x| u64::from(x) + slack < u64::from(held))
+                ticks_at(d, r - 1 - j).is_some_and(|x| faster_by(x, slack, held))
             });
             return scan_held(d, r, from, r, held).unwrap_or(r);
         }
@@ -90,7 +96,7 @@ impl<W: TableWord> Sides<'_, W> {
             ticks_at(d, r - 1 - j),
             ticks_at(a, at(j)),
         ) {
-            (Some(x), Some(y)) => u64::from(x) + slack < u64::from(y),
+            (Some(x), Some(y)) => faster_by(x, slack, y),
             _ => false,
         });
         for j in from..r {

@@ -184,6 +184,27 @@ impl<'a, W: TableWord> Player<'a, W, Compressed> {
     }
 }
 
+/// What the planner knows of a player ([`Sides`]), borrowed field by
+/// field, so that the player's plan stays free to be written (the ramps'
+/// tops by reference: they are large to copy).
+macro_rules! sides {
+    ($player:expr) => {
+        Sides {
+            accel: $player.accel,
+            decel: $player.decel,
+            accel_last: $player.accel_last,
+            decel_last: $player.decel_last,
+            decel_fastest: $player.decel_fastest,
+            cap: $player.cap,
+            cruise: $player.cruise,
+            slack: $player.slack,
+            decel_slack: $player.decel_slack,
+            tops: &$player.tops,
+            recent: core::cell::Cell::new([None; 2]),
+        }
+    };
+}
+
 impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     fn build(accel: Ramp<'a, W>, decel: Ramp<'a, W>) -> Self {
         let accel_last = accel.len_steps().saturating_sub(1);
@@ -214,27 +235,18 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         }
     }
 
-    fn sides(&self) -> Sides<'a, W> {
-        Sides {
-            accel: self.accel,
-            decel: self.decel,
-            accel_last: self.accel_last,
-            decel_last: self.decel_last,
-            decel_fastest: self.decel_fastest,
-            cap: self.cap,
-            cruise: self.cruise,
-            slack: self.slack,
-            decel_slack: self.decel_slack,
-            tops: self.tops,
-            recent: core::cell::Cell::new([None; 2]),
-        }
+    /// Plans `r` steps from `p` (the acceleration side's position) into
+    /// the player's plan.
+    fn plan_steps(&mut self, p: u32, r: u32) {
+        // The planner borrows the fields it reads, not the plan.
+        let sides = sides!(self);
+        sides.plan(&mut self.plan, p, r);
     }
 
     /// Plans `r` steps from `p` (the acceleration side's position) and
     /// follows the plan, `before` the period played before it.
     fn replan(&mut self, p: u32, r: u32, before: u32) {
-        let sides = self.sides();
-        sides.plan(&mut self.plan, p, r);
+        self.plan_steps(p, r);
         self.follow(before);
     }
 
@@ -279,11 +291,12 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// ramp up or down one step per step. Clamped to the ramp.
     pub fn set_cruise(&mut self, pos: u32) {
         self.cruise = pos.min(self.accel_last);
-        let (acc, decelerating) = self.state();
         let remaining = self.remaining();
-        if remaining > 0 && !decelerating {
-            let last = self.last_period();
-            self.replan(acc, remaining, last);
+        if remaining > 0 {
+            let (acc, decelerating, last) = self.now();
+            if !decelerating {
+                self.replan(acc, remaining, last);
+            }
         }
     }
 
@@ -306,7 +319,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             self.follow(current);
         } else if needed < remaining {
             let (acc, _) = self.state();
-            let stretch = self.sides().decelerate(needed - 1, acc);
+            let stretch = sides!(self).decelerate(needed - 1, acc);
             self.plan.clear();
             self.plan.push(stretch);
             self.follow(current);
@@ -318,7 +331,12 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// that is not faster down to rest; 0 steps before the first step or
     /// when the motor already runs slower than the ramp's slowest entry.
     fn stop_point(&self) -> (u32, u32) {
-        let current = self.last_period();
+        self.stop_at(self.last_period())
+    }
+
+    /// [`Player::stop_point`], the period of the last step played
+    /// `current`.
+    fn stop_at(&self, current: u32) -> (u32, u32) {
         if current == 0 || self.period_dec(0) < current {
             return (current, 0);
         }
@@ -342,42 +360,50 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     }
 
     fn period_dec(&self, pos: u32) -> u32 {
-        Cursor::near(self.tops[1], &self.decel, pos)
-            .map_or(0, |c| c.period(&self.decel).into_ticks())
+        Reader::new(&self.decel, self.tops[1])
+            .ticks(pos)
+            .unwrap_or(0)
     }
 
     /// Where the acceleration side stands after the steps played, and
     /// whether the deceleration ramp has taken over.
     fn state(&self) -> (u32, bool) {
-        let Some(s) = self
-            .plan
-            .stretches
-            .get(self.plan.at)
-            .filter(|_| self.plan.at < self.plan.len)
-        else {
-            return (0, false);
-        };
-        let played = s.total - s.count - self.run.left() - self.computed.left;
-        (s.acc_after(played), s.decelerating)
+        let (acc, decelerating, _) = self.now();
+        (acc, decelerating)
     }
 
     /// The period of the last step played, in ticks (0 at rest): read off
     /// the plan, where the stretch being played (or the one before it) read it.
     fn last_period(&self) -> u32 {
+        self.now().2
+    }
+
+    /// Where the move stands, read off the plan once: where the
+    /// acceleration side stands after the steps played, whether the
+    /// deceleration ramp has taken over, and the period of the last step
+    /// played, in ticks (0 at rest; read where the stretch being played,
+    /// or the one before it, read it).
+    #[inline(always)]
+    fn now(&self) -> (u32, bool, u32) {
         let stretches = &self.plan.stretches[..self.plan.len];
         let Some(s) = stretches.get(self.plan.at) else {
-            return self.before;
+            return (0, false, self.before);
         };
         let played = s.total - s.count - self.run.left() - self.computed.left;
+        let (acc, decelerating) = (s.acc_after(played), s.decelerating);
         let (s, k) = match played {
             0 => match self.plan.at.checked_sub(1).and_then(|i| stretches.get(i)) {
                 Some(prev) => (prev, prev.total),
-                None => return self.before,
+                None => return (acc, decelerating, self.before),
             },
             _ => (s, played),
         };
+        (acc, decelerating, self.period_read(s, s.read_at(k - 1)))
+    }
+
+    /// The period `s` reads at position `pos`, in ticks.
+    fn period_read(&self, s: &plan::Stretch<'a, W>, pos: u32) -> u32 {
         let ramp = if s.decel { &self.decel } else { &self.accel };
-        let pos = s.read_at(k - 1);
         if let Some(periods) = ramp.per_step() {
             return ticks_at(periods, pos).unwrap_or(0);
         }

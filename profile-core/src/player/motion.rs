@@ -58,11 +58,9 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             self.endless = false;
             return;
         }
-        let (acc, _) = self.state();
-        let last = self.last_period();
+        let (acc, _, last) = self.now();
         let before = self.remaining();
-        let sides = self.sides();
-        sides.plan(&mut self.plan, acc, LAP);
+        self.plan_steps(acc, LAP);
         self.extended += u64::from(LAP - before);
         self.before = last;
     }
@@ -156,13 +154,13 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             self.start(steps);
             return true;
         }
-        // As `steps_to_stop`, the period played last read once.
-        let (current, needed) = self.stop_point();
+        // As `steps_to_stop`, where the move stands read once.
+        let (acc, decelerating, current) = self.now();
+        let (_, needed) = self.stop_at(current);
         if steps < needed.min(remaining) {
             return false;
         }
         self.endless = false;
-        let (acc, decelerating) = self.state();
         let from = match (current, decelerating) {
             (0, _) => 0,
             (_, true) => self.accel_entry(current),

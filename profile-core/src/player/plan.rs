@@ -184,7 +184,7 @@ impl<'a, W: TableWord> Plan<'a, W> {
 }
 
 /// What the planner knows of a player.
-pub(crate) struct Sides<'a, W> {
+pub(crate) struct Sides<'t, 'a, W> {
     pub(crate) accel: Ramp<'a, W>,
     pub(crate) decel: Ramp<'a, W>,
     pub(crate) accel_last: u32,
@@ -200,13 +200,13 @@ pub(crate) struct Sides<'a, W> {
     /// The deceleration ramp's slack alone.
     pub(crate) decel_slack: u32,
     /// Cursors at the tops of the acceleration and deceleration ramps.
-    pub(crate) tops: [Option<Cursor>; 2],
+    pub(crate) tops: &'t [Option<Cursor>; 2],
     /// The cursors placed last on each ramp: a plan's stretches begin near
     /// each other.
     pub(crate) recent: Cell<[Option<Cursor>; 2]>,
 }
 
-impl<'a, W: TableWord> Sides<'a, W> {
+impl<'a, W: TableWord> Sides<'_, 'a, W> {
     fn a(&self, pos: u32) -> u32 {
         if let Ramp::Steps {
             periods,
