@@ -30,6 +30,35 @@ fn scan_held<W: TableWord>(d: &[W], r: u32, from: u32, to: u32, held: u32) -> Op
     )
 }
 
+/// [`search::past`] over steps `lo..hi` of the last `r`, each ruled out
+/// (with every step before it) when the deceleration table read at the
+/// steps that remain is shorter than `value` by more than `slack`: the
+/// table's entries for those steps sliced once, so that a probe is a load
+/// and a compare.
+#[inline(always)]
+fn past_shorter<W: TableWord>(d: &[W], r: u32, lo: u32, hi: u32, slack: u32, value: u32) -> u32 {
+    // Steps `lo..hi` read the table from `r - 1 - lo` down to `r - hi`.
+    let Some(read) = d.get((r - hi) as usize..(r - lo) as usize) else {
+        return search::past(lo, hi, &mut |j| {
+            ticks_at(d, r - 1 - j).is_some_and(|x| faster_by(x, slack, value))
+        });
+    };
+    let n = read.len();
+    let (mut a, mut b) = (0usize, n);
+    while a < b {
+        let mid = a + (b - a) / 2;
+        let before = read
+            .get(n - 1 - mid)
+            .is_some_and(|x| faster_by(x.into_ticks(), slack, value));
+        if before {
+            a = mid + 1;
+        } else {
+            b = mid;
+        }
+    }
+    lo + a as u32
+}
+
 impl<W: TableWord> Sides<'_, '_, W> {
     /// [`Sides::crossing`] on two per-step tables `a` (acceleration) and
     /// `d` (deceleration): the same steps read, the same answer.
@@ -47,9 +76,7 @@ impl<W: TableWord> Sides<'_, '_, W> {
             // faster than the acceleration side.
             let at_p = ticks_at(a, p).unwrap_or(0);
             let both = self.slack;
-            let from = search::past(0, walked_down, &mut |j| {
-                ticks_at(d, r - 1 - j).is_some_and(|x| faster_by(x, both, at_p))
-            });
+            let from = past_shorter(d, r, 0, walked_down, both, at_p);
             for j in from..walked_down {
                 let (Some(x), Some(y)) = (ticks_at(d, r - 1 - j), ticks_at(a, p - j)) else {
                     return r;
@@ -76,9 +103,7 @@ impl<W: TableWord> Sides<'_, '_, W> {
                 None => return r,
                 _ => {}
             }
-            let from = search::past(walked_down, r, &mut |j| {
-                ticks_at(d, r - 1 - j).is_some_and(|x| faster_by(x, slack, held))
-            });
+            let from = past_shorter(d, r, walked_down, r, slack, held);
             return scan_held(d, r, from, r, held).unwrap_or(r);
         }
         // Walking up to the cruise position, then held there.
