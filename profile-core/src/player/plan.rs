@@ -458,46 +458,8 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
             return None;
         }
         let to_end = (from + n == r).then_some(r);
+        // (Two per-step tables are read by `crossing_direct`.)
         let p = self.walked(p, from);
-        if let (
-            Ramp::Steps {
-                periods: a,
-                hold: 0..=1,
-            },
-            Ramp::Steps {
-                periods: d,
-                hold: 0..=1,
-            },
-        ) = (self.accel, self.decel)
-        {
-            // Per-step tables: read them directly.
-            let top = (r - 1 - from) as usize;
-            if self.toward(p).1 == 0 {
-                // Held: one period to compare the deceleration table with,
-                // read down from `top`.
-                let (Some(&held), Some(d)) = (a.get(p as usize), d.get(top + 1 - n as usize..=top))
-                else {
-                    return Some(r);
-                };
-                let held = held.into_ticks();
-                return match d.iter().rev().position(|x| x.into_ticks() >= held) {
-                    Some(i) => Some(from + i as u32),
-                    None => to_end,
-                };
-            }
-            let (mut pa, mut di) = (p as usize, top);
-            for j in from..from + n {
-                let (Some(da), Some(aa)) = (d.get(di), a.get(pa)) else {
-                    return Some(r);
-                };
-                if da.into_ticks() >= aa.into_ticks() {
-                    return Some(j);
-                }
-                di = di.wrapping_sub(1);
-                pa = self.toward(pa as u32).0 as usize;
-            }
-            return to_end;
-        }
         let mut d = self.cursor(true, r - 1 - from).unwrap_or(Cursor::ZERO);
         let mut a = self.cursor(false, p).unwrap_or(Cursor::ZERO);
         for j in from..from + n {
