@@ -134,3 +134,106 @@ impl<W: TableWord> Sides<'_, '_, W> {
         r
     }
 }
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use super::super::plan::Sides;
+    use super::super::ramp::{Cursor, Ramp};
+    use super::super::search;
+    use proptest::prelude::*;
+    use std::vec::Vec;
+
+    /// The crossing as its definition reads it, one step at a time: the
+    /// first of the last `r` steps at which the deceleration table, read at
+    /// the steps that remain, is not faster than the acceleration side
+    /// walking one step a step from `p` towards `cruise`; `r` when none is
+    /// or a table ends first.
+    fn walked(a: &[u16], d: &[u16], p: u32, cruise: u32, r: u32) -> u32 {
+        let mut at = p;
+        for j in 0..r {
+            let (Some(&x), Some(&y)) = (d.get((r - 1 - j) as usize), a.get(at as usize)) else {
+                return r;
+            };
+            if x >= y {
+                return j;
+            }
+            at = match at.cmp(&cruise) {
+                core::cmp::Ordering::Less => at + 1,
+                core::cmp::Ordering::Greater => at - 1,
+                core::cmp::Ordering::Equal => at,
+            };
+        }
+        r
+    }
+
+    /// A table falling from about `start` ticks, each entry `drop` below
+    /// the one before give or take `jitter` (a table rounded by diffusion
+    /// when `jitter` is 1, flat stretches where `drop` is 0).
+    fn table(len: usize) -> impl Strategy<Value = Vec<u16>> {
+        (
+            1000u16..3000,
+            proptest::collection::vec(
+                (
+                    prop_oneof![3 => Just(0u16), 2 => 0u16..3, 1 => 0u16..40],
+                    0u16..3,
+                ),
+                len,
+            ),
+        )
+            .prop_map(|(start, steps)| {
+                let mut p = start;
+                steps
+                    .iter()
+                    .map(|&(drop, jitter)| {
+                        p = p.saturating_sub(drop).max(20);
+                        p + jitter
+                    })
+                    .collect()
+            })
+    }
+
+    fn sides<'t>(
+        accel: Ramp<'t, u16>,
+        decel: Ramp<'t, u16>,
+        cruise: u32,
+        tops: &'t [Option<Cursor>; 2],
+    ) -> Sides<'t, 't, u16> {
+        let decel_fastest = decel.fastest();
+        Sides {
+            accel,
+            decel,
+            accel_last: accel.len_steps() - 1,
+            decel_last: decel.len_steps() - 1,
+            decel_fastest,
+            cap: accel.first_faster_than(decel_fastest),
+            cruise,
+            slack: search::slack(&accel) + search::slack(&decel),
+            decel_slack: search::slack(&decel),
+            tops,
+            recent: core::cell::Cell::new([None; 2]),
+        }
+    }
+
+    proptest! {
+        /// The direct crossing on two per-step tables, and the cursors'
+        /// crossing on the same periods as segments of one step each,
+        /// answer as the step-by-step definition does: tables with flat
+        /// stretches and a tick of diffusion, the acceleration side
+        /// walking up, down or held, any number of steps within reach.
+        #[test]
+        fn the_crossing_is_the_walks(
+            a in table(40), d in table(40),
+            p in 0u32..40, cruise in 0u32..40, r in 1u32..=40,
+        ) {
+            let want = walked(&a, &d, p, cruise, r);
+            let tops = [None; 2];
+            let direct = sides(Ramp::steps(&a), Ramp::steps(&d), cruise, &tops);
+            prop_assert_eq!(direct.crossing_direct(&a, &d, p, r), want);
+            let pairs = |t: &[u16]| -> Vec<(u16, u16)> { t.iter().map(|&x| (x, 1)).collect() };
+            let (sa, sd) = (pairs(&a), pairs(&d));
+            let cursors = sides(Ramp::segments(&sa), Ramp::segments(&sd), cruise, &tops);
+            prop_assert_eq!(cursors.crossing(p, r), want);
+        }
+    }
+}

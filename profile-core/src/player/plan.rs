@@ -387,7 +387,7 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
     /// side only faster, but for the ramps' slack: the step is searched
     /// ([`search`]). Walking down, both get slower: those steps are read
     /// one by one.
-    fn crossing(&self, p: u32, r: u32) -> u32 {
+    pub(crate) fn crossing(&self, p: u32, r: u32) -> u32 {
         if let (Some(a), Some(d)) = (self.accel.per_step(), self.decel.per_step()) {
             return self.crossing_direct(a, d, p, r);
         }
