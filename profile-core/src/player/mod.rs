@@ -311,14 +311,14 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         if remaining == 0 {
             return;
         }
-        let (current, needed) = self.stop_point();
+        let (acc, _, current) = self.now();
+        let needed = self.stop_steps(current);
         if needed == 0 {
             // Not moving yet, or already slower than the ramp's slowest
             // entry: at rest now.
             self.plan.clear();
             self.follow(current);
         } else if needed < remaining {
-            let (acc, _) = self.state();
             let stretch = sides!(self).decelerate(needed - 1, acc);
             self.plan.clear();
             self.plan.push(stretch);
@@ -326,21 +326,15 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         }
     }
 
-    /// Where a stop now enters the deceleration ramp: the period of the
-    /// last step played, and the steps from the ramp's entry nearest it
-    /// that is not faster down to rest; 0 steps before the first step or
-    /// when the motor already runs slower than the ramp's slowest entry.
-    fn stop_point(&self) -> (u32, u32) {
-        self.stop_at(self.last_period())
-    }
-
-    /// [`Player::stop_point`], the period of the last step played
-    /// `current`.
-    fn stop_at(&self, current: u32) -> (u32, u32) {
+    /// The steps a stop plays when the period of the last step played is
+    /// `current`: from the deceleration ramp's entry nearest it that is not
+    /// faster down to rest; 0 before the first step (`current` 0) or when
+    /// the motor already runs slower than the ramp's slowest entry.
+    fn stop_steps(&self, current: u32) -> u32 {
         if current == 0 || self.period_dec(0) < current {
-            return (current, 0);
+            return 0;
         }
-        (current, self.entry_point(current) + 1)
+        self.entry_point(current) + 1
     }
 
     /// The largest position of the deceleration ramp whose period is not
@@ -365,25 +359,11 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             .unwrap_or(0)
     }
 
-    /// Where the acceleration side stands after the steps played, and
-    /// whether the deceleration ramp has taken over.
-    fn state(&self) -> (u32, bool) {
-        let (acc, decelerating, _) = self.now();
-        (acc, decelerating)
-    }
-
-    /// The period of the last step played, in ticks (0 at rest): read off
-    /// the plan, where the stretch being played (or the one before it) read it.
-    fn last_period(&self) -> u32 {
-        self.now().2
-    }
-
     /// Where the move stands, read off the plan once: where the
     /// acceleration side stands after the steps played, whether the
     /// deceleration ramp has taken over, and the period of the last step
     /// played, in ticks (0 at rest; read where the stretch being played,
     /// or the one before it, read it).
-    #[inline(always)]
     fn now(&self) -> (u32, bool, u32) {
         let stretches = &self.plan.stretches[..self.plan.len];
         let Some(s) = stretches.get(self.plan.at) else {

@@ -120,7 +120,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     pub fn steps_to_stop(&self) -> u32 {
         match self.remaining() {
             0 => 0,
-            remaining => self.stop_point().1.min(remaining),
+            remaining => self.stop_steps(self.now().2).min(remaining),
         }
     }
 
@@ -156,7 +156,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         }
         // As `steps_to_stop`, where the move stands read once.
         let (acc, decelerating, current) = self.now();
-        let (_, needed) = self.stop_at(current);
+        let needed = self.stop_steps(current);
         if steps < needed.min(remaining) {
             return false;
         }
