@@ -11,7 +11,7 @@
 use core::cell::Cell;
 use core::slice;
 
-use super::ramp::{Cursor, Ramp, Reader};
+use super::ramp::{Cursor, Ramp, Reader, ticks_at};
 use super::search;
 use crate::base::timer::TableWord;
 
@@ -208,12 +208,8 @@ pub(crate) struct Sides<'t, 'a, W> {
 
 impl<'a, W: TableWord> Sides<'_, 'a, W> {
     fn a(&self, pos: u32) -> u32 {
-        if let Ramp::Steps {
-            periods,
-            hold: 0..=1,
-        } = self.accel
-        {
-            return periods.get(pos as usize).map_or(0, |p| p.into_ticks());
+        if let Some(periods) = self.accel.per_step() {
+            return ticks_at(periods, pos).unwrap_or(0);
         }
         self.cursor(false, pos)
             .map_or(0, |c| c.period(&self.accel).into_ticks())

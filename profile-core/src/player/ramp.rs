@@ -575,12 +575,9 @@ impl<'r, 'a, W: TableWord> Reader<'r, 'a, W> {
     /// A reader of `ramp`, its first read sought from `hint` when that is
     /// nearer than the ramp's start.
     pub(crate) fn new(ramp: &'r Ramp<'a, W>, hint: Option<Cursor>) -> Self {
-        match *ramp {
-            Ramp::Steps {
-                periods,
-                hold: 0..=1,
-            } => Reader::Table(periods),
-            _ => Reader::Seek(ramp, hint),
+        match ramp.per_step() {
+            Some(periods) => Reader::Table(periods),
+            None => Reader::Seek(ramp, hint),
         }
     }
 
