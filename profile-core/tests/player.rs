@@ -3,7 +3,7 @@
 //! `PROPTEST_CASES` sets the number of cases (default 256 per property here).
 
 use profile_core::player::{Compressed, Player, Ramp};
-use profile_core::runs::Expand;
+use profile_core::runs::{Expand, RunIndex};
 use proptest::prelude::*;
 
 /// A non-increasing table (slow to fast), as generated tables are.
@@ -333,10 +333,23 @@ fn compare<W: TableWord + core::fmt::Debug + PartialEq>(
         ramp(accel, &a_steps, &a_pairs, false),
         ramp(decel, &d_steps, &d_pairs, false),
     );
-    // Two compressed ramps: the player of compressed tables as well.
-    let mut compressed: Option<Player<'_, W, Compressed>> = match (accel, decel) {
-        (Shape::Runs(a), Shape::Runs(d)) => Some(Player::compressed_with_decel(a, d)),
-        _ => None,
+    // Two compressed ramps: the player of compressed tables as well, and
+    // the one of the same runs indexed (padded to 12 with runs of no step).
+    let pad = |shape: &Shape| -> [[u16; 5]; 12] {
+        let mut runs = [[0u16; 5]; 12];
+        if let Shape::Runs(r) = shape {
+            runs[..r.len()].copy_from_slice(r);
+        }
+        runs
+    };
+    let (a_padded, d_padded) = (pad(accel), pad(decel));
+    let (a_index, d_index) = (RunIndex::new(&a_padded), RunIndex::new(&d_padded));
+    let mut compressed: Vec<Player<'_, W, Compressed>> = match (accel, decel) {
+        (Shape::Runs(a), Shape::Runs(d)) => vec![
+            Player::compressed_with_decel(a, d),
+            Player::compressed_indexed_with_decel(&a_index, &d_index),
+        ],
+        _ => vec![],
     };
     let mut steps = 0u64;
     for (i, op) in ops.iter().enumerate() {
@@ -360,9 +373,17 @@ fn compare<W: TableWord + core::fmt::Debug + PartialEq>(
                 for k in 0..n {
                     let (got, want) = (planned.next_period(), model.next_period());
                     prop_assert_eq!(got, want, "op {} ({:?}), step {}", i, op, k);
-                    if let Some(c) = compressed.as_mut() {
+                    for (which, c) in compressed.iter_mut().enumerate() {
                         let got = c.next_period();
-                        prop_assert_eq!(got, want, "compressed: op {} ({:?}), step {}", i, op, k);
+                        prop_assert_eq!(
+                            got,
+                            want,
+                            "compressed {}: op {} ({:?}), step {}",
+                            which,
+                            i,
+                            op,
+                            k
+                        );
                     }
                     steps += 1;
                     if want.is_none() {
@@ -378,11 +399,12 @@ fn compare<W: TableWord + core::fmt::Debug + PartialEq>(
             i,
             op
         );
-        if let Some(c) = &compressed {
+        for (which, c) in compressed.iter().enumerate() {
             prop_assert_eq!(
                 c.remaining(),
                 model.remaining(),
-                "compressed: after op {}",
+                "compressed {}: after op {}",
+                which,
                 i
             );
         }

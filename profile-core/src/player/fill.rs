@@ -2,7 +2,7 @@
 //! them to the timer (ping-pong halves), or a PIO or RMT queue.
 
 use super::plan::Run;
-use super::ramp::RunState;
+use super::runs::RunState;
 use super::{Layout, Player};
 use crate::base::timer::TableWord;
 use crate::table::runs::{FRACTION_MASK, RUN_FRACTION_BITS};

@@ -61,22 +61,27 @@ mod motion;
 mod plan;
 mod ramp;
 mod rated;
+mod reader;
+mod runs;
 mod search;
 mod step;
 
 use core::marker::PhantomData;
 
 use crate::base::timer::TableWord;
+use crate::table::runs::RunIndex;
 pub use axes::Axes;
 pub use axis::{Axis, Direction, Moving};
 pub use buffered::{AxesStart, Buffered, Steps};
 pub use layout::{AnyLayout, Compressed, Layout};
 use plan::{Plan, Run, Sides, Source};
 pub use ramp::Ramp;
-use ramp::{Cursor, Reader, RunState, ticks_at};
+use ramp::{Cursor, ticks_at};
 pub use rated::Rated;
 #[cfg(feature = "fugit")]
 pub use rated::{OffsetMismatch, Timed};
+use reader::Reader;
+use runs::RunState;
 
 /// Plays moves from an acceleration ramp and a deceleration ramp.
 ///
@@ -181,6 +186,22 @@ impl<'a, W: TableWord> Player<'a, W, Compressed> {
     /// decelerate (also ordered slow to fast).
     pub fn compressed_with_decel(accel: &'a [[u16; 5]], decel: &'a [[u16; 5]]) -> Self {
         Self::build(Ramp::runs(accel), Ramp::runs(decel))
+    }
+
+    /// A player of an indexed compressed table ([`RunIndex`]), decelerating
+    /// along it read backwards: it plays what [`Player::compressed`] plays
+    /// of the same runs, and plans its moves (start, stop, a new cruise or
+    /// target) by bisection over the runs instead of a walk over them.
+    pub fn compressed_indexed<const N: usize>(index: &'a RunIndex<N>) -> Self {
+        Self::build(Ramp::indexed(index), Ramp::indexed(index))
+    }
+
+    /// [`Player::compressed_indexed`] with a deceleration table of its own.
+    pub fn compressed_indexed_with_decel<const A: usize, const D: usize>(
+        accel: &'a RunIndex<A>,
+        decel: &'a RunIndex<D>,
+    ) -> Self {
+        Self::build(Ramp::indexed(accel), Ramp::indexed(decel))
     }
 }
 
@@ -354,9 +375,11 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     }
 
     fn period_dec(&self, pos: u32) -> u32 {
-        Reader::new(&self.decel, self.tops[1])
-            .ticks(pos)
-            .unwrap_or(0)
+        match self.decel.per_step() {
+            Some(d) => ticks_at(d, pos),
+            None => Reader::new(&self.decel, self.tops[1]).ticks(pos),
+        }
+        .unwrap_or(0)
     }
 
     /// Where the move stands, read off the plan once: where the

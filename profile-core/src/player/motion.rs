@@ -2,7 +2,8 @@
 //! ([`Player::run`]), a cruise speed in ticks ([`Player::set_cruise_period`])
 //! and a new end ([`Player::retarget`]).
 
-use super::ramp::{Reader, ticks_at};
+use super::ramp::ticks_at;
+use super::reader::Reader;
 use super::search;
 use super::{Layout, Player};
 use crate::base::timer::TableWord;

@@ -11,7 +11,8 @@
 use core::cell::Cell;
 use core::slice;
 
-use super::ramp::{Cursor, Ramp, Reader, ticks_at};
+use super::ramp::{Cursor, Ramp, ticks_at};
+use super::reader::Reader;
 use super::search;
 use crate::base::timer::TableWord;
 
@@ -223,7 +224,7 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
         } else {
             (&self.accel, 0)
         };
-        if !matches!(ramp, Ramp::Runs(_)) {
+        if !matches!(ramp, Ramp::Runs(_) | Ramp::Indexed(_)) {
             return Cursor::at(ramp, pos);
         }
         let mut recent = self.recent.get();

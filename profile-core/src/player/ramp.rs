@@ -1,67 +1,11 @@
 //! A ramp to play, and positions along it.
 
+use super::runs::{RunState, RunWords, run_at, run_holding};
 use crate::base::timer::TableWord;
-use crate::table::runs::{Expand, FRACTION_MASK, LinearRun, RUN_FRACTION_BITS, RUN_START_FRACTION};
-
-/// Run `index` of `runs`, decoded.
-fn run_at(runs: &[[u16; 5]], index: u32) -> Option<LinearRun> {
-    runs.get(index as usize).map(LinearRun::decode)
-}
-
-/// `n (n - 1) / 2`, exact for any `n` up to 65 536 (a run's count is at
-/// most 65 535), in 32-bit arithmetic.
-fn triangle(n: u32) -> u32 {
-    n.wrapping_mul(n.saturating_sub(1)) >> 1
-}
-
-/// A run's state `(frac, interval)` `n` steps later.
-fn ahead(frac: u32, interval: u32, add: u32, n: u32) -> (u32, u32) {
-    let frac = frac
-        .wrapping_add(n.wrapping_mul(interval))
-        .wrapping_add(triangle(n).wrapping_mul(add));
-    (
-        frac & FRACTION_MASK,
-        interval.wrapping_add(n.wrapping_mul(add)),
-    )
-}
-
-/// A run's state `(frac, interval)` `n` steps earlier.
-fn behind(frac: u32, interval: u32, add: u32, n: u32) -> (u32, u32) {
-    let start = interval.wrapping_sub(n.wrapping_mul(add));
-    let frac = frac
-        .wrapping_sub(n.wrapping_mul(start))
-        .wrapping_sub(triangle(n).wrapping_mul(add));
-    (frac & FRACTION_MASK, start)
-}
-
-/// Where a run of a compressed ramp stands: `left` steps to play, the
-/// next one's period `(frac + interval) >> 16`. Either way along the ramp
-/// the same recurrence plays it (see [`Cursor::take_run`]). The step path
-/// of a player of any layout plays it behind an empty `Down` run, so that
-/// tables pay nothing for it; a compressed player's step path plays it
-/// first.
-#[derive(Clone, Copy, Debug, Default)]
-pub(crate) struct RunState {
-    pub(crate) left: u32,
-    pub(crate) frac: u32,
-    pub(crate) interval: u32,
-    pub(crate) add: u32,
-}
-
-impl RunState {
-    /// The next step's period, in ticks, or `None` when the run is played.
-    #[inline(always)]
-    pub(crate) fn next(&mut self) -> Option<u32> {
-        if self.left == 0 {
-            return None;
-        }
-        self.left -= 1;
-        let x = self.frac.wrapping_add(self.interval);
-        self.frac = x & FRACTION_MASK;
-        self.interval = self.interval.wrapping_add(self.add);
-        Some(x >> RUN_FRACTION_BITS)
-    }
-}
+use crate::table::runs::{
+    Expand, FRACTION_MASK, IndexedRuns, LinearRun, RUN_FRACTION_BITS, RUN_START_FRACTION, RunIndex,
+    ahead, behind,
+};
 
 /// A ramp to play: a table ordered from slow (rest) to fast.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -80,6 +24,11 @@ pub enum Ramp<'a, W> {
     /// A compressed table (`compress = E`): runs of fixed-point periods,
     /// five words each (see [`runs`](crate::runs)), slowest first.
     Runs(&'a [[u16; 5]]),
+    /// A compressed table with its index ([`RunIndex`]): played as
+    /// [`Ramp::Runs`] plays its runs, any step of it found by bisection
+    /// over the runs, so that planning a move costs tens of instructions
+    /// a search, not a walk over the runs.
+    Indexed(IndexedRuns<'a>),
 }
 
 impl<'a, W: TableWord> Ramp<'a, W> {
@@ -103,6 +52,22 @@ impl<'a, W: TableWord> Ramp<'a, W> {
     /// [`runs::Expand`](crate::runs::Expand) plays them.
     pub const fn runs(runs: &'a [[u16; 5]]) -> Self {
         Ramp::Runs(runs)
+    }
+
+    /// A compressed table and its index: `static INDEX: RunIndex<'static,
+    /// { RUN_COUNT }> = RunIndex::new(&RUNS);` beside a profile's `RUNS`.
+    pub const fn indexed<const N: usize>(index: &'a RunIndex<N>) -> Self {
+        Ramp::Indexed(index.indexed())
+    }
+
+    /// The runs of a compressed table, indexed or not, else `None`.
+    #[inline]
+    pub(crate) fn run_words(&self) -> Option<RunWords<'a>> {
+        match *self {
+            Ramp::Runs(runs) => Some(RunWords::Plain(runs)),
+            Ramp::Indexed(index) => Some(RunWords::Indexed(index.runs())),
+            _ => None,
+        }
     }
 
     /// The periods of a per-step table played entry by entry, else `None`.
@@ -129,6 +94,10 @@ impl<'a, W: TableWord> Ramp<'a, W> {
             Ramp::Runs(runs) => runs
                 .iter()
                 .fold(0u32, |n, r| n.saturating_add(u32::from(r[0]))),
+            Ramp::Indexed(index) => index
+                .runs()
+                .last()
+                .map_or(0, |r| r.step().saturating_add(u32::from(r.words()[0]))),
         }
     }
 
@@ -148,6 +117,7 @@ impl<'a, W: TableWord> Ramp<'a, W> {
                 .map(|p| p.0.into_ticks())
                 .min(),
             Ramp::Runs(runs) => Expand::new(runs).min(),
+            Ramp::Indexed(index) => super::runs::periods(index).min(),
         }
         .unwrap_or(0)
     }
@@ -227,6 +197,7 @@ impl Cursor {
                 }
                 None
             }
+            Ramp::Indexed(index) => Cursor::indexed(index, pos),
             Ramp::Runs(runs) => {
                 // The remainder carried through every run before.
                 let (mut start, mut frac) = (0u32, RUN_START_FRACTION);
@@ -255,6 +226,26 @@ impl Cursor {
         }
     }
 
+    /// The cursor at step `pos` of an indexed ramp: its run found by
+    /// bisection, the step within it in closed form.
+    fn indexed(index: IndexedRuns<'_>, pos: u32) -> Option<Cursor> {
+        let (entry, run, decoded) = run_holding(index.runs(), pos)?;
+        let within = pos - run.step;
+        let (frac, interval) = ahead(
+            u32::from(run.frac),
+            decoded.interval,
+            decoded.add as u32,
+            within,
+        );
+        Some(Cursor {
+            pos,
+            entry,
+            within,
+            frac,
+            interval,
+        })
+    }
+
     /// The cursor at `pos`: on runs moved there from `hint` (a cursor on
     /// the same ramp) when that is nearer than the ramp's start, a run at a
     /// time; else placed as [`Cursor::at`] places it.
@@ -265,9 +256,20 @@ impl Cursor {
     ) -> Option<Cursor> {
         match (hint, *ramp) {
             (Some(mut c), Ramp::Runs(runs)) if c.pos.abs_diff(pos) < pos => {
+                let runs = RunWords::Plain(runs);
                 c.seek_runs(runs, pos);
                 // Past the last run: no step there.
                 run_at(runs, c.entry).filter(|_| c.pos == pos)?;
+                Some(c)
+            }
+            // Indexed: within the hint's run in closed form, else by the
+            // index.
+            (Some(mut c), Ramp::Indexed(index))
+                if pos >= c.pos - c.within
+                    && run_at(RunWords::Indexed(index.runs()), c.entry)
+                        .is_some_and(|r| pos - (c.pos - c.within) < u32::from(r.count)) =>
+            {
+                c.seek_runs(RunWords::Indexed(index.runs()), pos);
                 Some(c)
             }
             _ => Cursor::at(ramp, pos),
@@ -277,7 +279,7 @@ impl Cursor {
     /// Moves the cursor to step `pos` of `runs` (which holds it), a run at a
     /// time: within a run in closed form ([`ahead`], [`behind`]), across runs
     /// by their ends, the remainder carried as [`Cursor::at`] carries it.
-    fn seek_runs(&mut self, runs: &[[u16; 5]], pos: u32) {
+    pub(crate) fn seek_runs(&mut self, runs: RunWords<'_>, pos: u32) {
         while self.pos < pos {
             let Some(run) = run_at(runs, self.entry) else {
                 return;
@@ -317,7 +319,7 @@ impl Cursor {
         let found = match *ramp {
             Ramp::Steps { periods, .. } => periods.get(self.entry as usize).copied(),
             Ramp::Segments(pairs) => pairs.get(self.entry as usize).map(|p| p.0),
-            Ramp::Runs(_) => Some(W::from_ticks(
+            Ramp::Runs(_) | Ramp::Indexed(_) => Some(W::from_ticks(
                 self.frac.wrapping_add(self.interval) >> RUN_FRACTION_BITS,
             )),
         };
@@ -332,7 +334,8 @@ impl Cursor {
         self.pos += 1;
         self.within += 1;
         match *ramp {
-            Ramp::Runs(runs) => {
+            Ramp::Runs(_) | Ramp::Indexed(_) => {
+                let runs = ramp.run_words().unwrap_or(RunWords::Plain(&[]));
                 let run = run_at(runs, self.entry);
                 let add = run.map_or(0, |r| r.add as u32);
                 (self.frac, self.interval) = ahead(self.frac, self.interval, add, 1);
@@ -367,7 +370,7 @@ impl Cursor {
             return false;
         }
         self.pos -= 1;
-        if let Ramp::Runs(runs) = *ramp {
+        if let Some(runs) = ramp.run_words() {
             self.run_backward(runs);
             return true;
         }
@@ -388,7 +391,7 @@ impl Cursor {
                 self.entry = self.entry.saturating_sub(1);
                 self.within = hold.max(1) - 1;
             }
-            Ramp::Runs(_) => {}
+            Ramp::Runs(_) | Ramp::Indexed(_) => {}
             Ramp::Segments(pairs) => {
                 while self.entry > 0 {
                     self.entry -= 1;
@@ -406,7 +409,7 @@ impl Cursor {
 
     /// On to the first step of the next run that holds one, the remainder
     /// carried.
-    fn enter_next_run(&mut self, runs: &[[u16; 5]]) {
+    fn enter_next_run(&mut self, runs: RunWords<'_>) {
         self.within = 0;
         loop {
             self.entry += 1;
@@ -421,7 +424,7 @@ impl Cursor {
 
     /// One step back on runs: within the run, or to the last step of the
     /// previous run that holds one.
-    fn run_backward(&mut self, runs: &[[u16; 5]]) {
+    fn run_backward(&mut self, runs: RunWords<'_>) {
         if self.within > 0 {
             self.within -= 1;
             let add = run_at(runs, self.entry).map_or(0, |r| r.add as u32);
@@ -461,7 +464,7 @@ impl Cursor {
                 let pair = pairs.get(self.entry as usize)?;
                 (&pair.0, pair.1.into_ticks())
             }
-            Ramp::Runs(_) => return None,
+            Ramp::Runs(_) | Ramp::Indexed(_) => return None,
         };
         let n = match dir {
             1 => size.saturating_sub(self.within).max(1).min(limit),
@@ -499,7 +502,7 @@ impl Cursor {
     /// Backwards, the periods are the ceiling differences of the reflected
     /// edges, which the same recurrence gives from the remainder's
     /// complement after this step, this step's interval and `-add`.
-    pub(crate) fn take_run(&mut self, runs: &[[u16; 5]], dir: i8, limit: u32) -> RunState {
+    pub(crate) fn take_run(&mut self, runs: RunWords<'_>, dir: i8, limit: u32) -> RunState {
         let run = run_at(runs, self.entry);
         let add = run.map_or(0, |r| r.add as u32);
         let (frac, interval) = (self.frac, self.interval);
@@ -556,41 +559,4 @@ impl Cursor {
 #[inline(always)]
 pub(crate) fn ticks_at<W: TableWord>(table: &[W], i: u32) -> Option<u32> {
     table.get(i as usize).map(|p| p.into_ticks())
-}
-
-/// Reads a ramp's periods by position, in ticks, for the searches of a
-/// plan: a per-step table directly; any other ramp through a cursor moved
-/// from read to read (on runs a whole run at a time, so that reads near
-/// each other cost the runs between them, not the runs from the start).
-/// Chosen once per search, so that a read of a per-step table is a bounds
-/// check and a load.
-pub(crate) enum Reader<'r, 'a, W> {
-    /// A per-step table, each entry played once.
-    Table(&'a [W]),
-    /// Any other ramp, and the cursor of the last read.
-    Seek(&'r Ramp<'a, W>, Option<Cursor>),
-}
-
-impl<'r, 'a, W: TableWord> Reader<'r, 'a, W> {
-    /// A reader of `ramp`, its first read sought from `hint` when that is
-    /// nearer than the ramp's start.
-    pub(crate) fn new(ramp: &'r Ramp<'a, W>, hint: Option<Cursor>) -> Self {
-        match ramp.per_step() {
-            Some(periods) => Reader::Table(periods),
-            None => Reader::Seek(ramp, hint),
-        }
-    }
-
-    /// The period at step `pos`, in ticks; `None` past the ramp's end.
-    #[inline]
-    pub(crate) fn ticks(&mut self, pos: u32) -> Option<u32> {
-        match self {
-            Reader::Table(periods) => ticks_at(periods, pos),
-            Reader::Seek(ramp, cursor) => {
-                let c = Cursor::near(*cursor, ramp, pos)?;
-                *cursor = Some(c);
-                Some(c.period(ramp).into_ticks())
-            }
-        }
-    }
 }

@@ -143,6 +143,7 @@ pub(crate) fn slack<W: TableWord>(ramp: &Ramp<'_, W>) -> u32 {
                 .map(|p| p.0.into_ticks()),
         ),
         Ramp::Runs(runs) => rise(Expand::new(runs)),
+        Ramp::Indexed(index) => rise(super::runs::periods(index)),
     }
 }
 

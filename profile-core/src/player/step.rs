@@ -4,7 +4,7 @@
 
 use super::buffered::Pulsed;
 use super::plan::{Run, Source};
-use super::{Layout, Player, Ramp};
+use super::{Layout, Player};
 use crate::base::timer::TableWord;
 
 impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
@@ -197,9 +197,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     fn begin_runs(&mut self) -> Option<()> {
         let next = self.next_stretch()?;
         let s = self.plan.stretches.get_mut(next)?;
-        let Ramp::Runs(runs) = (if s.decel { &self.decel } else { &self.accel }) else {
-            return None;
-        };
+        let runs = (if s.decel { &self.decel } else { &self.accel }).run_words()?;
         let Source::At(at) = &mut s.source else {
             return None;
         };
@@ -279,7 +277,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             return None;
         };
         let ramp = if s.decel { &self.decel } else { &self.accel };
-        if let Ramp::Runs(runs) = *ramp {
+        if let Some(runs) = ramp.run_words() {
             // A compressed table: one run at a time, played by the step path
             // from `computed` (behind an empty `Down` for any layout).
             self.computed = at.take_run(runs, s.dir, s.count);

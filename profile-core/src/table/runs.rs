@@ -112,6 +112,135 @@ impl Iterator for Expand<'_> {
     }
 }
 
+/// `n (n - 1) / 2`, exact for any `n` up to 65 536 (a run's count is at
+/// most 65 535), in 32-bit arithmetic.
+pub(crate) const fn triangle(n: u32) -> u32 {
+    n.wrapping_mul(n.saturating_sub(1)) >> 1
+}
+
+/// A run's state `(frac, interval)` `n` steps later: the remainder after
+/// `n` more steps and the period of the step after them, in closed form.
+pub(crate) const fn ahead(frac: u32, interval: u32, add: u32, n: u32) -> (u32, u32) {
+    let frac = frac
+        .wrapping_add(n.wrapping_mul(interval))
+        .wrapping_add(triangle(n).wrapping_mul(add));
+    (
+        frac & FRACTION_MASK,
+        interval.wrapping_add(n.wrapping_mul(add)),
+    )
+}
+
+/// A run's state `(frac, interval)` `n` steps earlier.
+pub(crate) const fn behind(frac: u32, interval: u32, add: u32, n: u32) -> (u32, u32) {
+    let start = interval.wrapping_sub(n.wrapping_mul(add));
+    let frac = frac
+        .wrapping_sub(n.wrapping_mul(start))
+        .wrapping_sub(triangle(n).wrapping_mul(add));
+    (frac & FRACTION_MASK, start)
+}
+
+/// A run of an indexed table ([`RunIndex`]): its five words, its first step
+/// along the table (the counts of the runs before it added) and the
+/// edges' sub-tick remainder carried into it from every run before. 16
+/// bytes, where a run alone is 10.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct IndexedRun {
+    pub(crate) step: u32,
+    pub(crate) words: [u16; 5],
+    pub(crate) frac: u16,
+}
+
+impl IndexedRun {
+    /// The run's five words, as [`LinearRun::encode`] gives them.
+    pub const fn words(&self) -> &[u16; 5] {
+        &self.words
+    }
+
+    /// The run's first step along the table (0 = the slowest).
+    pub const fn step(&self) -> u32 {
+        self.step
+    }
+
+    /// The remainder before that step, in 1/65 536 ticks.
+    pub const fn frac(&self) -> u16 {
+        self.frac
+    }
+}
+
+/// A compressed table with where each of its runs begins, computed at
+/// compile time: with it the player finds any step of the table by
+/// bisection over the runs, where without it a step's remainder is carried
+/// through every run before it, and plans a move on a ramp of a hundred
+/// runs in a fraction of the instructions. 16 bytes of flash a run: the
+/// runs' own words are copied in, so that a firmware that plays the index
+/// alone keeps no other copy of them.
+///
+/// ```
+/// use profile_core::player::Player;
+/// use profile_core::runs::RunIndex;
+///
+/// static RUNS: [[u16; 5]; 2] = [[3, 4000, 0x8000, 0xFE0C, 0], [2, 2000, 0, 0, 0]];
+/// static INDEX: RunIndex<2> = RunIndex::new(&RUNS);
+/// let mut player = Player::<u16, _>::compressed_indexed(&INDEX);
+/// player.start(5);
+/// assert_eq!(player.next_period(), Some(4001));
+/// assert_eq!(INDEX.runs()[1].step(), 3);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct RunIndex<const N: usize> {
+    runs: [IndexedRun; N],
+}
+
+impl<const N: usize> RunIndex<N> {
+    /// The index of `runs`, in a `const` or a `static`.
+    pub const fn new(runs: &[[u16; 5]; N]) -> Self {
+        let mut indexed = [IndexedRun {
+            step: 0,
+            words: [0; 5],
+            frac: 0,
+        }; N];
+        let (mut step, mut frac) = (0u32, RUN_START_FRACTION);
+        let mut i = 0;
+        while i < N {
+            indexed[i] = IndexedRun {
+                step,
+                words: runs[i],
+                frac: frac as u16,
+            };
+            let run = LinearRun::decode(&runs[i]);
+            let count = run.count as u32;
+            frac = ahead(frac, run.interval, run.add as u32, count).0;
+            step = step.saturating_add(count);
+            i += 1;
+        }
+        RunIndex { runs: indexed }
+    }
+
+    /// The runs, each with where it begins.
+    pub const fn runs(&self) -> &[IndexedRun; N] {
+        &self.runs
+    }
+
+    /// The runs, whatever their number, for a
+    /// [`Ramp`](crate::player::Ramp).
+    pub const fn indexed(&self) -> IndexedRuns<'_> {
+        IndexedRuns(&self.runs)
+    }
+}
+
+/// The runs of a [`RunIndex`], whatever their number: what
+/// [`Ramp::Indexed`](crate::player::Ramp::Indexed) holds. Made only from a
+/// `RunIndex`, so that each run's start is that of the runs before it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct IndexedRuns<'a>(&'a [IndexedRun]);
+
+impl<'a> IndexedRuns<'a> {
+    /// The runs, each with where it begins.
+    pub const fn runs(&self) -> &'a [IndexedRun] {
+        self.0
+    }
+}
+
 /// `words` with every period it plays `offset` ticks longer (shorter when
 /// negative): `offset * 2^16` added to its `interval`, which moves every
 /// `x = frac + interval` by whole ticks and leaves the edges' sub-tick
@@ -180,5 +309,35 @@ mod tests {
             Expand::new(&more).collect::<std::vec::Vec<_>>(),
             [6, 5, 6, 4, 4]
         );
+    }
+
+    /// Each run's start against the steps added one by one: the step
+    /// count before it, and the low 16 bits of the sum, in fixed point, of
+    /// the half tick and every interval played before it.
+    #[test]
+    fn the_index_holds_each_runs_first_step_and_remainder() {
+        let runs = [
+            [3, 4000, 0x8000, 0xFE0C, 0],
+            [0, 0, 0, 0, 0],
+            [5, 2000, 0x1234, 0xFFFF, 0xF000],
+            [2, 1500, 0x9999, 0, 0x0777],
+        ];
+        let index = RunIndex::new(&runs);
+        let (mut step, mut edge) = (0u32, u64::from(RUN_START_FRACTION));
+        for (run, indexed) in runs.iter().zip(index.runs()) {
+            assert_eq!(indexed.step(), step);
+            assert_eq!(u64::from(indexed.frac()), edge & 0xFFFF);
+            assert_eq!(indexed.words(), run);
+            let run = LinearRun::decode(run);
+            let mut interval = i64::from(run.interval);
+            for _ in 0..run.count {
+                edge += interval as u64;
+                interval += i64::from(run.add);
+                step += 1;
+            }
+        }
+        assert_eq!(index.runs()[2].step(), 3);
+        assert_eq!(index.indexed().runs().len(), 4);
+        assert_eq!(core::mem::size_of::<IndexedRun>(), 16);
     }
 }

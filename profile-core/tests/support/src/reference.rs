@@ -30,7 +30,9 @@ impl Cursor {
     /// The cursor at step `pos`, or `None` past the end or on an empty ramp.
     fn at<W: TableWord>(ramp: &Ramp<'_, W>, pos: u32) -> Option<Cursor> {
         match *ramp {
-            Ramp::Runs(_) => unreachable!("the reference plays runs as their expansion"),
+            Ramp::Runs(_) | Ramp::Indexed(_) => {
+                unreachable!("the reference plays runs as their expansion")
+            }
             Ramp::Steps { periods, hold } => {
                 let hold = hold.max(1);
                 let entry = pos / hold;
@@ -64,7 +66,9 @@ impl Cursor {
     #[inline(always)]
     fn period<W: TableWord>(&self, ramp: &Ramp<'_, W>) -> W {
         let found = match *ramp {
-            Ramp::Runs(_) => unreachable!("the reference plays runs as their expansion"),
+            Ramp::Runs(_) | Ramp::Indexed(_) => {
+                unreachable!("the reference plays runs as their expansion")
+            }
             Ramp::Steps { periods, .. } => periods.get(self.entry as usize).copied(),
             Ramp::Segments(pairs) => pairs.get(self.entry as usize).map(|p| p.0),
         };
@@ -81,7 +85,9 @@ impl Cursor {
         self.pos += 1;
         self.within += 1;
         match *ramp {
-            Ramp::Runs(_) => unreachable!("the reference plays runs as their expansion"),
+            Ramp::Runs(_) | Ramp::Indexed(_) => {
+                unreachable!("the reference plays runs as their expansion")
+            }
             Ramp::Steps { periods, hold } => {
                 // `hold` 0 counts as 1: `within` is at least 1 here.
                 if self.within < hold {
@@ -124,7 +130,9 @@ impl Cursor {
             return None;
         }
         match *ramp {
-            Ramp::Runs(_) => unreachable!("the reference plays runs as their expansion"),
+            Ramp::Runs(_) | Ramp::Indexed(_) => {
+                unreachable!("the reference plays runs as their expansion")
+            }
             Ramp::Steps { periods, hold } => {
                 // `pos > 0` with `within == 0`: there is an entry before.
                 self.entry = self.entry.saturating_sub(1);
@@ -151,7 +159,9 @@ impl Cursor {
 /// The shortest period of a ramp (O(n), once per player).
 fn fastest<W: TableWord>(ramp: &Ramp<'_, W>) -> u32 {
     match *ramp {
-        Ramp::Runs(_) => unreachable!("the reference plays runs as their expansion"),
+        Ramp::Runs(_) | Ramp::Indexed(_) => {
+            unreachable!("the reference plays runs as their expansion")
+        }
         Ramp::Steps { periods, .. } => periods.iter().map(|p| p.into_ticks()).min(),
         Ramp::Segments(pairs) => pairs
             .iter()

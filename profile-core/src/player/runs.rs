@@ -1,0 +1,81 @@
+//! The runs of a compressed ramp as the player reads them, indexed
+//! ([`RunIndex`](crate::runs::RunIndex): each run knows its first step and
+//! the remainder carried into it, so that any step is found by bisection
+//! over the runs) or not, and where a run being played stands.
+
+use crate::table::runs::{FRACTION_MASK, IndexedRun, IndexedRuns, LinearRun, RUN_FRACTION_BITS};
+
+/// The runs of a compressed ramp: plain words, or indexed.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum RunWords<'a> {
+    Plain(&'a [[u16; 5]]),
+    Indexed(&'a [IndexedRun]),
+}
+
+/// Run `index` of `runs`, decoded.
+#[inline]
+pub(crate) fn run_at(runs: RunWords<'_>, index: u32) -> Option<LinearRun> {
+    let words = match runs {
+        RunWords::Plain(runs) => runs.get(index as usize)?,
+        RunWords::Indexed(runs) => &runs.get(index as usize)?.words,
+    };
+    Some(LinearRun::decode(words))
+}
+
+/// The run of `runs` that holds step `pos`, decoded, and its index; `None`
+/// past the ramp's end. A bisection over the runs' first steps: the last
+/// run that begins at or before `pos` (a run of no steps begins where the
+/// next one does, so the one found holds a step unless the ramp ends
+/// first).
+#[inline]
+pub(crate) fn run_holding(runs: &[IndexedRun], pos: u32) -> Option<(u32, &IndexedRun, LinearRun)> {
+    let entry = runs.partition_point(|r| r.step <= pos).checked_sub(1)?;
+    let run = runs.get(entry)?;
+    let decoded = LinearRun::decode(&run.words);
+    (pos - run.step < u32::from(decoded.count)).then_some((entry as u32, run, decoded))
+}
+
+/// The periods an indexed ramp plays, in ticks: each run played from its
+/// own remainder, as the index gives it (not carried from the run before,
+/// as [`Expand`](crate::runs::Expand) carries it).
+pub(crate) fn periods(index: IndexedRuns<'_>) -> impl Iterator<Item = u32> + '_ {
+    index.runs().iter().flat_map(|r| {
+        let run = LinearRun::decode(&r.words);
+        let mut state = RunState {
+            left: u32::from(run.count),
+            frac: u32::from(r.frac),
+            interval: run.interval,
+            add: run.add as u32,
+        };
+        core::iter::from_fn(move || state.next())
+    })
+}
+
+/// Where a run of a compressed ramp stands: `left` steps to play, the
+/// next one's period `(frac + interval) >> 16`. Either way along the ramp
+/// the same recurrence plays it (see [`Cursor::take_run`]). The step path
+/// of a player of any layout plays it behind an empty `Down` run, so that
+/// tables pay nothing for it; a compressed player's step path plays it
+/// first.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct RunState {
+    pub(crate) left: u32,
+    pub(crate) frac: u32,
+    pub(crate) interval: u32,
+    pub(crate) add: u32,
+}
+
+impl RunState {
+    /// The next step's period, in ticks, or `None` when the run is played.
+    #[inline(always)]
+    pub(crate) fn next(&mut self) -> Option<u32> {
+        if self.left == 0 {
+            return None;
+        }
+        self.left -= 1;
+        let x = self.frac.wrapping_add(self.interval);
+        self.frac = x & FRACTION_MASK;
+        self.interval = self.interval.wrapping_add(self.add);
+        Some(x >> RUN_FRACTION_BITS)
+    }
+}
