@@ -325,16 +325,7 @@ fn compare<W: TableWord + core::fmt::Debug + PartialEq>(
             Shape::Runs(_) => Ramp::steps(steps),
         }
     }
-    let mut planned = Player::with_decel(
-        ramp(accel, &a_steps, &a_pairs, true),
-        ramp(decel, &d_steps, &d_pairs, true),
-    );
-    let mut model = Reference::with_decel(
-        ramp(accel, &a_steps, &a_pairs, false),
-        ramp(decel, &d_steps, &d_pairs, false),
-    );
-    // Two compressed ramps: the player of compressed tables as well, and
-    // the one of the same runs indexed (padded to 12 with runs of no step).
+    // Compressed ramps indexed (padded to 12 runs with runs of no step).
     let pad = |shape: &Shape| -> [[u16; 5]; 12] {
         let mut runs = [[0u16; 5]; 12];
         if let Shape::Runs(r) = shape {
@@ -344,6 +335,30 @@ fn compare<W: TableWord + core::fmt::Debug + PartialEq>(
     };
     let (a_padded, d_padded) = (pad(accel), pad(decel));
     let (a_index, d_index) = (RunIndex::new(&a_padded), RunIndex::new(&d_padded));
+    let mut planned = Player::with_decel(
+        ramp(accel, &a_steps, &a_pairs, true),
+        ramp(decel, &d_steps, &d_pairs, true),
+    );
+    // Every compressed ramp indexed, beside the other layouts.
+    fn indexed<'t, W: TableWord>(
+        shape: &'t Shape,
+        index: &'t RunIndex<12>,
+        steps: &'t [W],
+        pairs: &'t [(W, W)],
+    ) -> Ramp<'t, W> {
+        match shape {
+            Shape::Runs(_) => Ramp::indexed(index),
+            _ => ramp(shape, steps, pairs, true),
+        }
+    }
+    let mut any_indexed = Player::with_decel(
+        indexed(accel, &a_index, &a_steps, &a_pairs),
+        indexed(decel, &d_index, &d_steps, &d_pairs),
+    );
+    let mut model = Reference::with_decel(
+        ramp(accel, &a_steps, &a_pairs, false),
+        ramp(decel, &d_steps, &d_pairs, false),
+    );
     let mut compressed: Vec<Player<'_, W, Compressed>> = match (accel, decel) {
         (Shape::Runs(a), Shape::Runs(d)) => vec![
             Player::compressed_with_decel(a, d),
@@ -356,22 +371,34 @@ fn compare<W: TableWord + core::fmt::Debug + PartialEq>(
         match *op {
             Op::Start(n) => {
                 planned.start(n);
+                any_indexed.start(n);
                 model.start(n);
                 compressed.iter_mut().for_each(|c| c.start(n));
             }
             Op::Stop => {
                 planned.stop();
+                any_indexed.stop();
                 model.stop();
                 compressed.iter_mut().for_each(|c| c.stop());
             }
             Op::Cruise(pos) => {
                 planned.set_cruise(pos);
+                any_indexed.set_cruise(pos);
                 model.set_cruise(pos);
                 compressed.iter_mut().for_each(|c| c.set_cruise(pos));
             }
             Op::Play(n) => {
                 for k in 0..n {
                     let (got, want) = (planned.next_period(), model.next_period());
+                    let got_indexed = any_indexed.next_period();
+                    prop_assert_eq!(
+                        got_indexed,
+                        want,
+                        "indexed: op {} ({:?}), step {}",
+                        i,
+                        op,
+                        k
+                    );
                     prop_assert_eq!(got, want, "op {} ({:?}), step {}", i, op, k);
                     for (which, c) in compressed.iter_mut().enumerate() {
                         let got = c.next_period();
@@ -392,6 +419,12 @@ fn compare<W: TableWord + core::fmt::Debug + PartialEq>(
                 }
             }
         }
+        prop_assert_eq!(
+            any_indexed.remaining(),
+            model.remaining(),
+            "indexed: after op {}",
+            i
+        );
         prop_assert_eq!(
             planned.remaining(),
             model.remaining(),

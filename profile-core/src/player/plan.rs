@@ -212,6 +212,9 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
         if let Some(periods) = self.accel.per_step() {
             return ticks_at(periods, pos).unwrap_or(0);
         }
+        if let Ramp::Indexed(_) = self.accel {
+            return Reader::new(&self.accel, None).ticks(pos).unwrap_or(0);
+        }
         self.cursor(false, pos)
             .map_or(0, |c| c.period(&self.accel).into_ticks())
     }
@@ -224,7 +227,9 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
         } else {
             (&self.accel, 0)
         };
-        if !matches!(ramp, Ramp::Runs(_) | Ramp::Indexed(_)) {
+        // Held and segment tables place a cursor directly, and so does an
+        // index.
+        if !matches!(ramp, Ramp::Runs(_)) {
             return Cursor::at(ramp, pos);
         }
         let mut recent = self.recent.get();
@@ -455,6 +460,9 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
             return None;
         }
         let to_end = (from + n == r).then_some(r);
+        if read_directly(&self.accel) && read_directly(&self.decel) {
+            return self.scan_read(p, r, from, n).or(to_end);
+        }
         // (Two per-step tables are read by `crossing_direct`.)
         let p = self.walked(p, from);
         let mut d = self.cursor(true, r - 1 - from).unwrap_or(Cursor::ZERO);
@@ -476,4 +484,31 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
         }
         to_end
     }
+
+    /// [`Sides::scan`] on ramps read by position ([`read_directly`]): the
+    /// step found, `Some(r)` when a ramp ends, `None` when none of the `n`
+    /// steps is.
+    fn scan_read(&self, p: u32, r: u32, from: u32, n: u32) -> Option<u32> {
+        let (mut a, mut d) = (
+            Reader::new(&self.accel, None),
+            Reader::new(&self.decel, None),
+        );
+        let mut q = self.walked(p, from);
+        for j in from..from + n {
+            let (Some(x), Some(y)) = (d.ticks(r - 1 - j), a.ticks(q)) else {
+                return Some(r);
+            };
+            if x >= y {
+                return Some(j);
+            }
+            q = self.toward(q).0;
+        }
+        None
+    }
+}
+
+/// A ramp whose periods are read by position at little cost: a per-step
+/// table or an indexed compressed one.
+fn read_directly<W: TableWord>(ramp: &Ramp<'_, W>) -> bool {
+    ramp.per_step().is_some() || matches!(ramp, Ramp::Indexed(_))
 }

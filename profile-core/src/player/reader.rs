@@ -3,15 +3,17 @@
 use super::ramp::{Cursor, Ramp, ticks_at};
 use super::runs::run_holding;
 use crate::base::timer::TableWord;
-use crate::table::runs::{IndexedRun, RUN_FRACTION_BITS, ahead};
+use crate::table::runs::{IndexedRun, LinearRun, RUN_FRACTION_BITS, ahead};
 
 /// Reads an indexed ramp by position: the run read last kept, so that
 /// reads within it are closed-form, and any other run found by bisection.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct RunRead<'a> {
     runs: &'a [IndexedRun],
-    /// The run read last: its first step, its count (0 before the first
-    /// read), its remainder and interval at its first step, its change.
+    /// The run read last: its index, its first step, its count (0 before
+    /// the first read), its remainder and interval at its first step, its
+    /// change.
+    entry: u32,
     first: u32,
     count: u32,
     frac: u32,
@@ -23,6 +25,8 @@ impl<'a> RunRead<'a> {
     pub(crate) fn new(runs: &'a [IndexedRun]) -> Self {
         RunRead {
             runs,
+            // Before the first read: every run is after this one.
+            entry: u32::MAX,
             first: 0,
             count: 0,
             frac: 0,
@@ -36,19 +40,42 @@ impl<'a> RunRead<'a> {
     pub(crate) fn ticks(&mut self, pos: u32) -> Option<u32> {
         let mut within = pos.wrapping_sub(self.first);
         if within >= self.count {
-            let (_, run, decoded) = run_holding(self.runs, pos)?;
-            *self = RunRead {
-                runs: self.runs,
-                first: run.step,
-                count: u32::from(decoded.count),
-                frac: u32::from(run.frac),
-                interval: decoded.interval,
-                add: decoded.add as u32,
-            };
-            within = pos - run.step;
+            within = self.enter(pos)?;
         }
         let (frac, interval) = ahead(self.frac, self.interval, self.add, within);
         Some(frac.wrapping_add(interval) >> RUN_FRACTION_BITS)
+    }
+
+    /// Keeps the run that holds step `pos` (the next or the previous run
+    /// first, else by bisection over the runs on that side); `pos`'s step
+    /// within it.
+    #[inline(never)]
+    fn enter(&mut self, pos: u32) -> Option<u32> {
+        let after = pos >= self.first;
+        let next = self.entry.wrapping_add(1);
+        let side = if after {
+            self.runs.get(next as usize..)?
+        } else {
+            self.runs.get(..self.entry as usize)?
+        };
+        let (entry, run, decoded) = match side.first() {
+            Some(next)
+                if after && next.step <= pos && pos - next.step < u32::from(next.words[0]) =>
+            {
+                (0, next, LinearRun::decode(&next.words))
+            }
+            _ => run_holding(side, pos)?,
+        };
+        *self = RunRead {
+            runs: self.runs,
+            entry: if after { next + entry } else { entry },
+            first: run.step,
+            count: u32::from(decoded.count),
+            frac: u32::from(run.frac),
+            interval: decoded.interval,
+            add: decoded.add as u32,
+        };
+        Some(pos - run.step)
     }
 }
 
