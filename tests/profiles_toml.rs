@@ -245,6 +245,14 @@ macro_rules! runs {
 
         let played: Vec<u32> = profile_core::runs::Expand::new(&$name::RUNS).collect();
         assert_eq!(played.len(), len, "`{name}`: LEN is the sum of the counts");
+        // The index: each run's words and first step (the counts before
+        // it added).
+        let mut first = 0u32;
+        for (run, indexed) in $name::RUNS.iter().zip($name::RUN_INDEX.runs()) {
+            assert_eq!(indexed.words(), run, "`{name}`: RUN_INDEX words");
+            assert_eq!(indexed.step(), first, "`{name}`: RUN_INDEX first step");
+            first += u32::from(run[0]);
+        }
         assert_eq!(
             played.iter().map(|&p| u64::from(p)).sum::<u64>(),
             total_ticks,

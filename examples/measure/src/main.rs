@@ -16,7 +16,6 @@ use cortex_m_semihosting::{debug, hprintln};
 use panic_semihosting as _;
 use stepgen::Stepgen;
 use stepper_profiles::player::{Axes, Axis, Buffered, Compressed, Direction, Layout, Player, Ramp};
-use stepper_profiles::runs::RunIndex;
 
 /// The tables of the root `profiles.toml`.
 mod profiles {
@@ -255,10 +254,6 @@ planning_calls!(
     player_runs_plan_retarget,
     player_runs_plan_stop
 );
-
-/// The microstep ramp's runs, indexed.
-static MICROSTEP_INDEX: RunIndex<{ microstep_runs::RUN_COUNT }> =
-    RunIndex::new(&microstep_runs::RUNS);
 
 /// Plays `n` steps of a player, not measured.
 fn skip<L: Layout>(player: &mut Player<'_, u16, L>, n: u32) {
@@ -615,7 +610,7 @@ fn main() -> ! {
     );
     planning!(
         "indexed compressed ramp (microstep_runs, 7192 steps)",
-        Player::<u16, _>::compressed_indexed(&MICROSTEP_INDEX),
+        Player::<u16, _>::compressed_indexed(&microstep_runs::RUN_INDEX),
         microstep_runs::LEN as u32,
         last_run(&microstep_runs::RUNS) as u16,
         player_runs_plan_start,

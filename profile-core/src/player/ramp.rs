@@ -1,6 +1,6 @@
 //! A ramp to play, and positions along it.
 
-use super::runs::{RunState, RunWords, run_at, run_holding};
+use super::runs::{RunList, RunState, run_at, run_holding};
 use crate::base::timer::TableWord;
 use crate::table::runs::{
     Expand, FRACTION_MASK, IndexedRuns, LinearRun, RUN_FRACTION_BITS, RUN_START_FRACTION, RunIndex,
@@ -58,16 +58,6 @@ impl<'a, W: TableWord> Ramp<'a, W> {
     /// { RUN_COUNT }> = RunIndex::new(&RUNS);` beside a profile's `RUNS`.
     pub const fn indexed<const N: usize>(index: &'a RunIndex<N>) -> Self {
         Ramp::Indexed(index.indexed())
-    }
-
-    /// The runs of a compressed table, indexed or not, else `None`.
-    #[inline]
-    pub(crate) fn run_words(&self) -> Option<RunWords<'a>> {
-        match *self {
-            Ramp::Runs(runs) => Some(RunWords::Plain(runs)),
-            Ramp::Indexed(index) => Some(RunWords::Indexed(index.runs())),
-            _ => None,
-        }
     }
 
     /// The periods of a per-step table played entry by entry, else `None`.
@@ -256,7 +246,6 @@ impl Cursor {
     ) -> Option<Cursor> {
         match (hint, *ramp) {
             (Some(mut c), Ramp::Runs(runs)) if c.pos.abs_diff(pos) < pos => {
-                let runs = RunWords::Plain(runs);
                 c.seek_runs(runs, pos);
                 // Past the last run: no step there.
                 run_at(runs, c.entry).filter(|_| c.pos == pos)?;
@@ -266,10 +255,10 @@ impl Cursor {
             // index.
             (Some(mut c), Ramp::Indexed(index))
                 if pos >= c.pos - c.within
-                    && run_at(RunWords::Indexed(index.runs()), c.entry)
+                    && run_at(index.runs(), c.entry)
                         .is_some_and(|r| pos - (c.pos - c.within) < u32::from(r.count)) =>
             {
-                c.seek_runs(RunWords::Indexed(index.runs()), pos);
+                c.seek_runs(index.runs(), pos);
                 Some(c)
             }
             _ => Cursor::at(ramp, pos),
@@ -279,7 +268,7 @@ impl Cursor {
     /// Moves the cursor to step `pos` of `runs` (which holds it), a run at a
     /// time: within a run in closed form ([`ahead`], [`behind`]), across runs
     /// by their ends, the remainder carried as [`Cursor::at`] carries it.
-    pub(crate) fn seek_runs(&mut self, runs: RunWords<'_>, pos: u32) {
+    pub(crate) fn seek_runs(&mut self, runs: impl RunList, pos: u32) {
         while self.pos < pos {
             let Some(run) = run_at(runs, self.entry) else {
                 return;
@@ -334,15 +323,8 @@ impl Cursor {
         self.pos += 1;
         self.within += 1;
         match *ramp {
-            Ramp::Runs(_) | Ramp::Indexed(_) => {
-                let runs = ramp.run_words().unwrap_or(RunWords::Plain(&[]));
-                let run = run_at(runs, self.entry);
-                let add = run.map_or(0, |r| r.add as u32);
-                (self.frac, self.interval) = ahead(self.frac, self.interval, add, 1);
-                if self.within >= run.map_or(u32::MAX, |r| u32::from(r.count)) {
-                    self.enter_next_run(runs);
-                }
-            }
+            Ramp::Runs(runs) => self.run_forward(runs),
+            Ramp::Indexed(index) => self.run_forward(index.runs()),
             Ramp::Steps { hold, .. } => {
                 if self.within >= hold.max(1) {
                     self.within = 0;
@@ -370,16 +352,28 @@ impl Cursor {
             return false;
         }
         self.pos -= 1;
-        if let Some(runs) = ramp.run_words() {
-            self.run_backward(runs);
-            return true;
+        match *ramp {
+            Ramp::Runs(runs) => self.run_backward(runs),
+            Ramp::Indexed(index) => self.run_backward(index.runs()),
+            _ => {
+                if self.within > 0 {
+                    self.within -= 1;
+                } else {
+                    self.enter_previous_entry(ramp);
+                }
+            }
         }
-        if self.within > 0 {
-            self.within -= 1;
-            return true;
-        }
-        self.enter_previous_entry(ramp);
         true
+    }
+
+    /// [`Cursor::forward`] on runs, past the step's position and within.
+    fn run_forward(&mut self, runs: impl RunList) {
+        let run = run_at(runs, self.entry);
+        let add = run.map_or(0, |r| r.add as u32);
+        (self.frac, self.interval) = ahead(self.frac, self.interval, add, 1);
+        if self.within >= run.map_or(u32::MAX, |r| u32::from(r.count)) {
+            self.enter_next_run(runs);
+        }
     }
 
     /// Back to the last step of the previous entry of a held or segment
@@ -409,7 +403,7 @@ impl Cursor {
 
     /// On to the first step of the next run that holds one, the remainder
     /// carried.
-    fn enter_next_run(&mut self, runs: RunWords<'_>) {
+    fn enter_next_run(&mut self, runs: impl RunList) {
         self.within = 0;
         loop {
             self.entry += 1;
@@ -424,7 +418,7 @@ impl Cursor {
 
     /// One step back on runs: within the run, or to the last step of the
     /// previous run that holds one.
-    fn run_backward(&mut self, runs: RunWords<'_>) {
+    fn run_backward(&mut self, runs: impl RunList) {
         if self.within > 0 {
             self.within -= 1;
             let add = run_at(runs, self.entry).map_or(0, |r| r.add as u32);
@@ -502,7 +496,7 @@ impl Cursor {
     /// Backwards, the periods are the ceiling differences of the reflected
     /// edges, which the same recurrence gives from the remainder's
     /// complement after this step, this step's interval and `-add`.
-    pub(crate) fn take_run(&mut self, runs: RunWords<'_>, dir: i8, limit: u32) -> RunState {
+    pub(crate) fn take_run(&mut self, runs: impl RunList, dir: i8, limit: u32) -> RunState {
         let run = run_at(runs, self.entry);
         let add = run.map_or(0, |r| r.add as u32);
         let (frac, interval) = (self.frac, self.interval);

@@ -5,21 +5,32 @@
 
 use crate::table::runs::{FRACTION_MASK, IndexedRun, IndexedRuns, LinearRun, RUN_FRACTION_BITS};
 
-/// The runs of a compressed ramp: plain words, or indexed.
-#[derive(Clone, Copy, Debug)]
-pub(crate) enum RunWords<'a> {
-    Plain(&'a [[u16; 5]]),
-    Indexed(&'a [IndexedRun]),
+/// The runs of a compressed ramp, plain words or indexed: the code that
+/// reads them is made for each, so that neither pays for the other.
+pub(crate) trait RunList: Copy {
+    /// Run `index`, decoded; `None` past the last.
+    fn run(self, index: u32) -> Option<LinearRun>;
+}
+
+impl RunList for &[[u16; 5]] {
+    #[inline(always)]
+    fn run(self, index: u32) -> Option<LinearRun> {
+        self.get(index as usize).map(LinearRun::decode)
+    }
+}
+
+impl RunList for &[IndexedRun] {
+    #[inline(always)]
+    fn run(self, index: u32) -> Option<LinearRun> {
+        self.get(index as usize)
+            .map(|r| LinearRun::decode(&r.words))
+    }
 }
 
 /// Run `index` of `runs`, decoded.
-#[inline]
-pub(crate) fn run_at(runs: RunWords<'_>, index: u32) -> Option<LinearRun> {
-    let words = match runs {
-        RunWords::Plain(runs) => runs.get(index as usize)?,
-        RunWords::Indexed(runs) => &runs.get(index as usize)?.words,
-    };
-    Some(LinearRun::decode(words))
+#[inline(always)]
+pub(crate) fn run_at(runs: impl RunList, index: u32) -> Option<LinearRun> {
+    runs.run(index)
 }
 
 /// The run of `runs` that holds step `pos`, decoded, and its index; `None`

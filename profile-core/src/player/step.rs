@@ -4,7 +4,7 @@
 
 use super::buffered::Pulsed;
 use super::plan::{Run, Source};
-use super::{Layout, Player};
+use super::{Layout, Player, Ramp};
 use crate::base::timer::TableWord;
 
 impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
@@ -197,11 +197,15 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     fn begin_runs(&mut self) -> Option<()> {
         let next = self.next_stretch()?;
         let s = self.plan.stretches.get_mut(next)?;
-        let runs = (if s.decel { &self.decel } else { &self.accel }).run_words()?;
+        let ramp = if s.decel { &self.decel } else { &self.accel };
         let Source::At(at) = &mut s.source else {
             return None;
         };
-        self.computed = at.take_run(runs, s.dir, s.count);
+        self.computed = match *ramp {
+            Ramp::Runs(runs) => at.take_run(runs, s.dir, s.count),
+            Ramp::Indexed(index) => at.take_run(index.runs(), s.dir, s.count),
+            _ => return None,
+        };
         s.count -= self.computed.left;
         Some(())
     }
@@ -277,16 +281,19 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             return None;
         };
         let ramp = if s.decel { &self.decel } else { &self.accel };
-        if let Some(runs) = ramp.run_words() {
-            // A compressed table: one run at a time, played by the step path
-            // from `computed` (behind an empty `Down` for any layout).
-            self.computed = at.take_run(runs, s.dir, s.count);
-            s.count -= self.computed.left;
-            return Some(Run::Down([].iter()));
-        }
-        // A held or segment table: one entry at a time.
-        let (period, n) = at.take_entry(ramp, s.dir, s.count)?;
-        s.count -= n;
-        Some(Run::Hold(*period, n))
+        // A held or segment table: one entry at a time. A compressed table:
+        // one run at a time, played by the step path from `computed`
+        // (behind an empty `Down` for any layout).
+        self.computed = match *ramp {
+            Ramp::Steps { .. } | Ramp::Segments(_) => {
+                let (period, n) = at.take_entry(ramp, s.dir, s.count)?;
+                s.count -= n;
+                return Some(Run::Hold(*period, n));
+            }
+            Ramp::Runs(runs) => at.take_run(runs, s.dir, s.count),
+            Ramp::Indexed(index) => at.take_run(index.runs(), s.dir, s.count),
+        };
+        s.count -= self.computed.left;
+        Some(Run::Down([].iter()))
     }
 }
