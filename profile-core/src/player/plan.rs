@@ -12,9 +12,10 @@ use core::cell::Cell;
 use core::slice;
 
 use super::ramp::{Cursor, Ramp, ticks_at};
-use super::reader::Reader;
+use super::reader::{Reader, RunWalk};
 use super::search;
 use crate::base::timer::TableWord;
+use crate::table::runs::IndexedRun;
 
 /// A run of steps, as the step path plays it. Its tag a word, so that
 /// runs are copied word by word (with a 16-bit tag, a held period packs
@@ -489,6 +490,9 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
     /// step found, `Some(r)` when a ramp ends, `None` when none of the `n`
     /// steps is.
     fn scan_read(&self, p: u32, r: u32, from: u32, n: u32) -> Option<u32> {
+        if let (Ramp::Indexed(a), Ramp::Indexed(d)) = (self.accel, self.decel) {
+            return self.scan_runs(a.runs(), d.runs(), p, r, from, n);
+        }
         let (mut a, mut d) = (
             Reader::new(&self.accel, None),
             Reader::new(&self.decel, None),
@@ -502,6 +506,43 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
                 return Some(j);
             }
             q = self.toward(q).0;
+        }
+        None
+    }
+
+    /// [`Sides::scan_read`] on two indexed ramps, each walked a step at a
+    /// time.
+    fn scan_runs(
+        &self,
+        a: &[IndexedRun],
+        d: &[IndexedRun],
+        p: u32,
+        r: u32,
+        from: u32,
+        n: u32,
+    ) -> Option<u32> {
+        let mut q = self.walked(p, from);
+        let (Some(mut a), Some(mut d)) = (RunWalk::at(a, q), RunWalk::at(d, r - 1 - from)) else {
+            return Some(r);
+        };
+        let to = from + n;
+        for j in from..to {
+            if d.ticks() >= a.ticks() {
+                return Some(j);
+            }
+            if j + 1 == to {
+                break;
+            }
+            let (next, dir) = self.toward(q);
+            let moved = match dir {
+                1 => a.forward(),
+                -1 => a.backward(),
+                _ => Some(()),
+            };
+            if moved.and(d.backward()).is_none() {
+                return Some(r);
+            }
+            q = next;
         }
         None
     }

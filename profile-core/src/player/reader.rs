@@ -3,7 +3,7 @@
 use super::ramp::{Cursor, Ramp, ticks_at};
 use super::runs::run_holding;
 use crate::base::timer::TableWord;
-use crate::table::runs::{IndexedRun, LinearRun, RUN_FRACTION_BITS, ahead};
+use crate::table::runs::{FRACTION_MASK, IndexedRun, LinearRun, RUN_FRACTION_BITS, ahead};
 
 /// Reads an indexed ramp by position: the run read last kept, so that
 /// reads within it are closed-form, and any other run found by bisection.
@@ -58,11 +58,14 @@ impl<'a> RunRead<'a> {
         } else {
             self.runs.get(..self.entry as usize)?
         };
-        let (entry, run, decoded) = match side.first() {
-            Some(next)
-                if after && next.step <= pos && pos - next.step < u32::from(next.words[0]) =>
-            {
-                (0, next, LinearRun::decode(&next.words))
+        let neighbour = if after {
+            side.first().map(|r| (0, r))
+        } else {
+            side.last().map(|r| (side.len() - 1, r))
+        };
+        let (entry, run, decoded) = match neighbour {
+            Some((i, r)) if r.step <= pos && pos - r.step < u32::from(r.words[0]) => {
+                (i as u32, r, LinearRun::decode(&r.words))
             }
             _ => run_holding(side, pos)?,
         };
@@ -76,6 +79,71 @@ impl<'a> RunRead<'a> {
             add: decoded.add as u32,
         };
         Some(pos - run.step)
+    }
+}
+
+/// Walks an indexed ramp a step at a time either way, by the run's
+/// recurrence (an addition and a mask a step), into the next or previous
+/// run through the index.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct RunWalk<'a> {
+    read: RunRead<'a>,
+    /// The step within the run, the remainder before it and its interval.
+    within: u32,
+    frac: u32,
+    interval: u32,
+}
+
+impl<'a> RunWalk<'a> {
+    /// At step `pos` of `runs`; `None` past the ramp's end.
+    pub(crate) fn at(runs: &'a [IndexedRun], pos: u32) -> Option<Self> {
+        let mut walk = RunWalk {
+            read: RunRead::new(runs),
+            within: 0,
+            frac: 0,
+            interval: 0,
+        };
+        walk.enter(pos)?;
+        Some(walk)
+    }
+
+    /// The period of the step it stands at, in ticks.
+    #[inline(always)]
+    pub(crate) fn ticks(&self) -> u32 {
+        self.frac.wrapping_add(self.interval) >> RUN_FRACTION_BITS
+    }
+
+    /// One step towards the fast end; `None` past the ramp's end.
+    #[inline(always)]
+    pub(crate) fn forward(&mut self) -> Option<()> {
+        if self.within + 1 < self.read.count {
+            self.within += 1;
+            self.frac = self.frac.wrapping_add(self.interval) & FRACTION_MASK;
+            self.interval = self.interval.wrapping_add(self.read.add);
+            return Some(());
+        }
+        self.enter(self.read.first + self.within + 1)
+    }
+
+    /// One step towards the slow end; `None` at step 0.
+    #[inline(always)]
+    pub(crate) fn backward(&mut self) -> Option<()> {
+        if self.within > 0 {
+            self.within -= 1;
+            self.interval = self.interval.wrapping_sub(self.read.add);
+            self.frac = self.frac.wrapping_sub(self.interval) & FRACTION_MASK;
+            return Some(());
+        }
+        self.enter(self.read.first.checked_sub(1)?)
+    }
+
+    /// To step `pos`, through the index.
+    #[inline(never)]
+    fn enter(&mut self, pos: u32) -> Option<()> {
+        self.within = self.read.enter(pos)?;
+        let r = &self.read;
+        (self.frac, self.interval) = ahead(r.frac, r.interval, r.add, self.within);
+        Some(())
     }
 }
 
