@@ -213,8 +213,8 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
         if let Some(periods) = self.accel.per_step() {
             return ticks_at(periods, pos).unwrap_or(0);
         }
-        if let Ramp::Indexed(_) = self.accel {
-            return Reader::new(&self.accel, None).ticks(pos).unwrap_or(0);
+        if let Ramp::Indexed(index) = self.accel {
+            return RunWalk::at(index.runs(), pos).map_or(0, |w| w.ticks());
         }
         self.cursor(false, pos)
             .map_or(0, |c| c.period(&self.accel).into_ticks())

@@ -5,14 +5,21 @@ use super::runs::run_holding;
 use crate::base::timer::TableWord;
 use crate::table::runs::{FRACTION_MASK, IndexedRun, LinearRun, RUN_FRACTION_BITS, ahead};
 
+/// A run of no steps: what a reader of no runs keeps.
+static EMPTY: IndexedRun = IndexedRun {
+    step: 0,
+    words: [0; 5],
+    frac: 0,
+};
+
 /// Reads an indexed ramp by position: the run read last kept, so that
 /// reads within it are closed-form, and any other run found by bisection.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct RunRead<'a> {
     runs: &'a [IndexedRun],
-    /// The run read last: its index, its first step, its count (0 before
-    /// the first read), its remainder and interval at its first step, its
-    /// change.
+    /// The run read last (the first before any read): its index, its
+    /// first step, its count, its remainder and interval at its first
+    /// step, its change.
     entry: u32,
     first: u32,
     count: u32,
@@ -22,16 +29,25 @@ pub(crate) struct RunRead<'a> {
 }
 
 impl<'a> RunRead<'a> {
+    /// A reader of `runs`, its first run kept (none when there is none).
     pub(crate) fn new(runs: &'a [IndexedRun]) -> Self {
+        match runs.first() {
+            Some(run) => RunRead::keep(runs, 0, run, LinearRun::decode(&run.words)),
+            None => RunRead::keep(runs, 0, &EMPTY, LinearRun::decode(&EMPTY.words)),
+        }
+    }
+
+    /// A reader of `runs` keeping run `entry`, `run` (decoded).
+    #[inline(always)]
+    fn keep(runs: &'a [IndexedRun], entry: u32, run: &IndexedRun, decoded: LinearRun) -> Self {
         RunRead {
             runs,
-            // Before the first read: every run is after this one.
-            entry: u32::MAX,
-            first: 0,
-            count: 0,
-            frac: 0,
-            interval: 0,
-            add: 0,
+            entry,
+            first: run.step,
+            count: u32::from(decoded.count),
+            frac: u32::from(run.frac),
+            interval: decoded.interval,
+            add: decoded.add as u32,
         }
     }
 
@@ -69,15 +85,8 @@ impl<'a> RunRead<'a> {
             }
             _ => run_holding(side, pos)?,
         };
-        *self = RunRead {
-            runs: self.runs,
-            entry: if after { next + entry } else { entry },
-            first: run.step,
-            count: u32::from(decoded.count),
-            frac: u32::from(run.frac),
-            interval: decoded.interval,
-            add: decoded.add as u32,
-        };
+        let entry = if after { next + entry } else { entry };
+        *self = RunRead::keep(self.runs, entry, run, decoded);
         Some(pos - run.step)
     }
 }
@@ -97,14 +106,16 @@ pub(crate) struct RunWalk<'a> {
 impl<'a> RunWalk<'a> {
     /// At step `pos` of `runs`; `None` past the ramp's end.
     pub(crate) fn at(runs: &'a [IndexedRun], pos: u32) -> Option<Self> {
-        let mut walk = RunWalk {
-            read: RunRead::new(runs),
-            within: 0,
-            frac: 0,
-            interval: 0,
-        };
-        walk.enter(pos)?;
-        Some(walk)
+        let (entry, run, decoded) = run_holding(runs, pos)?;
+        let read = RunRead::keep(runs, entry, run, decoded);
+        let within = pos - run.step;
+        let (frac, interval) = ahead(read.frac, read.interval, read.add, within);
+        Some(RunWalk {
+            read,
+            within,
+            frac,
+            interval,
+        })
     }
 
     /// The period of the step it stands at, in ticks.
