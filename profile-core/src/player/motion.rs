@@ -3,9 +3,9 @@
 //! and a new end ([`Player::retarget`]).
 
 use super::ramp::ticks_at;
-use super::reader::Reader;
+use super::reader::{Reader, RunRead};
 use super::search;
-use super::{Layout, Player};
+use super::{Layout, Player, Ramp};
 use crate::base::timer::TableWord;
 
 /// Steps a run plans at a time: when they are played but for the
@@ -105,9 +105,21 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// whose period is not shorter than `ticks`, 0 when none is.
     fn cruise_position(&self, ticks: u32) -> u32 {
         let (last, slack) = (self.accel_last, self.accel_slack);
-        match self.accel.per_step() {
-            Some(a) => search::last_at_least(|pos| ticks_at(a, pos), last, slack, ticks),
-            None => {
+        match (self.accel.per_step(), self.accel) {
+            (Some(a), _) => search::last_at_least(|pos| ticks_at(a, pos), last, slack, ticks),
+            (None, Ramp::Indexed(index)) => {
+                // The runs' first steps first: `k` steps below the top is
+                // ruled out where the period is short by more than the
+                // slack.
+                let mut accel = RunRead::new(index.runs());
+                let short = |t: u32| u64::from(t) + u64::from(slack) < u64::from(ticks);
+                let end = last.saturating_add(1);
+                let (long, short) = accel.bracket(0, end, short);
+                let lo = if short < end { last - short + 1 } else { 0 };
+                let hi = if long > 0 { last - long } else { end };
+                search::last_at_least_in(|pos| accel.ticks(pos), lo, hi, last, slack, ticks)
+            }
+            (None, _) => {
                 let mut accel = Reader::new(&self.accel, self.tops[0]);
                 search::last_at_least(|pos| accel.ticks(pos), last, slack, ticks)
             }
@@ -180,9 +192,18 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// longer than `current`; its top when none is.
     fn accel_entry(&self, current: u32) -> u32 {
         let (last, slack) = (self.accel_last, self.accel_slack);
-        match self.accel.per_step() {
-            Some(a) => search::first_at_most(|pos| ticks_at(a, pos), last, slack, current),
-            None => {
+        match (self.accel.per_step(), self.accel) {
+            (Some(a), _) => search::first_at_most(|pos| ticks_at(a, pos), last, slack, current),
+            (None, Ramp::Indexed(index)) => {
+                // The runs' first steps first: a step longer by more than
+                // the slack is ruled out with every step before it.
+                let mut accel = RunRead::new(index.runs());
+                let near = |t: u32| u64::from(t) <= u64::from(current) + u64::from(slack);
+                let (long, near) = accel.bracket(0, last, near);
+                let lo = if long > 0 { long + 1 } else { 0 };
+                search::first_at_most_in(|pos| accel.ticks(pos), lo, near, last, slack, current)
+            }
+            (None, _) => {
                 let mut accel = Reader::new(&self.accel, self.tops[0]);
                 search::first_at_most(|pos| accel.ticks(pos), last, slack, current)
             }

@@ -62,6 +62,52 @@ impl<'a> RunRead<'a> {
         Some(frac.wrapping_add(interval) >> RUN_FRACTION_BITS)
     }
 
+    /// Probes the runs' first steps strictly between `lo` and `hi`, by
+    /// bisection, for where `fast` (of a period, in ticks) stops being
+    /// false: the largest probed step where it is false (`lo` if none) and
+    /// the smallest probed step after it where it is true (`hi` if none).
+    /// Each probe's period is read off the index, no run entered; the run
+    /// of the first kept. Only probes: the caller's search holds whatever
+    /// order the ramp's periods are in.
+    pub(crate) fn bracket(&mut self, lo: u32, hi: u32, fast: impl Fn(u32) -> bool) -> (u32, u32) {
+        let runs = self.runs;
+        let (mut a, mut b) = (
+            runs.partition_point(|r| r.step <= lo),
+            runs.partition_point(|r| r.step < hi),
+        );
+        let (mut lo, mut hi, mut kept) = (lo, hi, None);
+        while a < b {
+            let mid = a + (b - a) / 2;
+            let Some(run) = runs.get(mid) else {
+                break;
+            };
+            let decoded = LinearRun::decode(&run.words);
+            // A run of no steps: its first step is the next run's.
+            let period = if decoded.count == 0 {
+                self.ticks(run.step)
+            } else {
+                Some(u32::from(run.frac).wrapping_add(decoded.interval) >> RUN_FRACTION_BITS)
+            };
+            match period {
+                Some(t) if fast(t) => {
+                    hi = run.step;
+                    b = mid;
+                }
+                Some(_) => {
+                    (lo, kept) = (run.step, Some((mid, run, decoded)));
+                    a = mid + 1;
+                }
+                None => break,
+            }
+        }
+        if let Some((entry, run, decoded)) = kept {
+            if decoded.count > 0 {
+                *self = RunRead::keep(runs, entry as u32, run, decoded);
+            }
+        }
+        (lo, hi)
+    }
+
     /// Keeps the run that holds step `pos` (the next or the previous run
     /// first, else by bisection over the runs on that side); `pos`'s step
     /// within it.

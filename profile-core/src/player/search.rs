@@ -71,7 +71,22 @@ pub(crate) fn last_not_shorter(mut read: impl FnMut(u32) -> u32, last: u32, curr
 /// finds.
 #[inline(always)]
 pub(crate) fn last_at_least(
+    read: impl FnMut(u32) -> Option<u32>,
+    last: u32,
+    slack: u32,
+    ticks: u32,
+) -> u32 {
+    last_at_least_in(read, 0, last.saturating_add(1), last, slack, ticks)
+}
+
+/// [`last_at_least`], its bisection over `k` steps below the top begun
+/// within `lo..hi` (`lo - 1` ruled out when `lo > 0`; `hi` not when it is
+/// below `last + 1`).
+#[inline(always)]
+pub(crate) fn last_at_least_in(
     mut read: impl FnMut(u32) -> Option<u32>,
+    lo: u32,
+    hi: u32,
     last: u32,
     slack: u32,
     ticks: u32,
@@ -79,7 +94,7 @@ pub(crate) fn last_at_least(
     let slack = u64::from(slack);
     // `k` steps below the top: short by more than the slack, and so is
     // every step above it.
-    let k = past(0, last.saturating_add(1), &mut |k| {
+    let k = past(lo, hi, &mut |k| {
         read(last - k).is_some_and(|p| u64::from(p) + slack < u64::from(ticks))
     });
     let mut pos = last.saturating_sub(k);
@@ -98,14 +113,28 @@ pub(crate) fn last_at_least(
 /// ([`slack`]). Exactly the first such position a walk up from 0 finds.
 #[inline(always)]
 pub(crate) fn first_at_most(
+    read: impl FnMut(u32) -> Option<u32>,
+    last: u32,
+    slack: u32,
+    current: u32,
+) -> u32 {
+    first_at_most_in(read, 0, last, last, slack, current)
+}
+
+/// [`first_at_most`], its bisection begun within `lo..hi` (`lo - 1` ruled
+/// out when `lo > 0`; `hi` not when it is below `last`).
+#[inline(always)]
+pub(crate) fn first_at_most_in(
     mut read: impl FnMut(u32) -> Option<u32>,
+    lo: u32,
+    hi: u32,
     last: u32,
     slack: u32,
     current: u32,
 ) -> u32 {
     let (slack, current) = (u64::from(slack), u64::from(current));
     // Longer by more than the slack, and so is every step before it.
-    let mut pos = past(0, last, &mut |pos| {
+    let mut pos = past(lo, hi, &mut |pos| {
         read(pos).is_some_and(|p| u64::from(p) > current + slack)
     });
     loop {

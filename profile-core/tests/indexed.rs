@@ -1,0 +1,140 @@
+//! Compressed ramps played as their expansion through every call that
+//! plans: random runs (runs of no step included) and random sequences of
+//! starts, stops, cruise positions, cruise periods, new targets and steps.
+//! The player of the per-step table the runs expand to is the reference
+//! here (its moves are checked against the per-step model in `player.rs`
+//! and against rules computed from the table alone in `motion.rs`); the
+//! players of the runs (`Player::compressed`, `Player::compressed_indexed`,
+//! and `Player::new` of an indexed ramp) must play every period it plays,
+//! keep as many steps and take the same new targets, after every call.
+//!
+//! `PROPTEST_CASES` sets the number of cases (default 256).
+
+use core_test_support as common;
+
+use common::{any_runs, cases};
+use profile_core::player::{Player, Ramp};
+use profile_core::runs::{Expand, RunIndex};
+use proptest::prelude::*;
+
+#[derive(Clone, Debug)]
+enum Op {
+    Start(u32),
+    Stop,
+    Cruise(u32),
+    CruisePeriod(u16),
+    Retarget(u32),
+    Play(u32),
+}
+
+fn ops() -> impl Strategy<Value = Vec<Op>> {
+    let op = prop_oneof![
+        3 => (0u32..600).prop_map(Op::Start),
+        1 => Just(Op::Stop),
+        1 => (0u32..300).prop_map(Op::Cruise),
+        2 => prop_oneof![0u16..5000, any::<u16>()].prop_map(Op::CruisePeriod),
+        2 => (0u32..800).prop_map(Op::Retarget),
+        6 => (0u32..200).prop_map(Op::Play),
+    ];
+    proptest::collection::vec(op, 1..16)
+}
+
+/// Up to 12 runs, padded with runs of no step to 12 for an index.
+fn padded(runs: &[[u16; 5]]) -> [[u16; 5]; 12] {
+    let mut all = [[0u16; 5]; 12];
+    all[..runs.len()].copy_from_slice(runs);
+    all
+}
+
+fn check(accel: &[[u16; 5]], decel: &[[u16; 5]], ops: &[Op]) -> Result<u64, TestCaseError> {
+    let expand = |runs: &[[u16; 5]]| -> Vec<u16> { Expand::new(runs).map(|p| p as u16).collect() };
+    let (a_steps, d_steps) = (expand(accel), expand(decel));
+    let (a_all, d_all) = (padded(accel), padded(decel));
+    let (a_index, d_index) = (RunIndex::new(&a_all), RunIndex::new(&d_all));
+    let mut reference = Player::with_decel(Ramp::steps(&a_steps), Ramp::steps(&d_steps));
+    let mut plain = Player::<u16, _>::compressed_with_decel(accel, decel);
+    let mut indexed = Player::<u16, _>::compressed_indexed_with_decel(&a_index, &d_index);
+    let mut any = Player::with_decel(Ramp::indexed(&a_index), Ramp::indexed(&d_index));
+    let mut steps = 0u64;
+    for (i, op) in ops.iter().enumerate() {
+        match *op {
+            Op::Start(n) => {
+                reference.start(n);
+                plain.start(n);
+                indexed.start(n);
+                any.start(n);
+            }
+            Op::Stop => {
+                reference.stop();
+                plain.stop();
+                indexed.stop();
+                any.stop();
+            }
+            Op::Cruise(pos) => {
+                reference.set_cruise(pos);
+                plain.set_cruise(pos);
+                indexed.set_cruise(pos);
+                any.set_cruise(pos);
+            }
+            Op::CruisePeriod(p) => {
+                reference.set_cruise_period(p);
+                plain.set_cruise_period(p);
+                indexed.set_cruise_period(p);
+                any.set_cruise_period(p);
+            }
+            Op::Retarget(n) => {
+                let want = reference.retarget(n);
+                let got = [plain.retarget(n), indexed.retarget(n), any.retarget(n)];
+                prop_assert_eq!(got, [want; 3], "op {} ({:?}): taken", i, op);
+            }
+            Op::Play(n) => {
+                for k in 0..n {
+                    let want = reference.next_period();
+                    let got = [
+                        plain.next_period(),
+                        indexed.next_period(),
+                        any.next_period(),
+                    ];
+                    prop_assert_eq!(got, [want; 3], "op {} ({:?}), step {}", i, op, k);
+                    steps += 1;
+                    if want.is_none() {
+                        break;
+                    }
+                }
+            }
+        }
+        let want = reference.remaining();
+        let got = [plain.remaining(), indexed.remaining(), any.remaining()];
+        prop_assert_eq!(got, [want; 3], "after op {} ({:?})", i, op);
+    }
+    Ok(steps)
+}
+
+/// Every call that plans, on runs plain and indexed, plays what the
+/// per-step player plays on their expansion.
+#[test]
+fn runs_plain_and_indexed_play_as_their_expansion() {
+    use proptest::test_runner::{Config, TestRunner};
+    let mut runner = TestRunner::new(Config {
+        cases: cases() * 4,
+        failure_persistence: None,
+        ..Config::default()
+    });
+    let steps = std::cell::Cell::new(0u64);
+    let ramps = (
+        any_runs(),
+        prop_oneof![Just(None), any_runs().prop_map(Some)],
+    );
+    runner
+        .run(&(ramps, ops()), |((accel, decel), ops)| {
+            let decel = decel.unwrap_or_else(|| accel.clone());
+            steps.set(steps.get() + check(&accel, &decel, &ops)?);
+            Ok(())
+        })
+        .unwrap();
+    println!(
+        "runs plain and indexed == their expansion: {} random sequences, {} steps compared",
+        cases() * 4,
+        steps.get()
+    );
+}
