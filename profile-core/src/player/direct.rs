@@ -9,7 +9,7 @@ use crate::base::timer::TableWord;
 
 /// `x` shorter than `y` by more than `slack` ticks.
 #[inline(always)]
-fn faster_by(x: u32, slack: u32, y: u32) -> bool {
+pub(super) fn faster_by(x: u32, slack: u32, y: u32) -> bool {
     // Saturated, `x + slack` is not below any `y`, as the exact sum.
     x.saturating_add(slack) < y
 }
@@ -36,7 +36,14 @@ fn scan_held<W: TableWord>(d: &[W], r: u32, from: u32, to: u32, held: u32) -> Op
 /// table's entries for those steps sliced once, so that a probe is a load
 /// and a compare.
 #[inline(always)]
-fn past_shorter<W: TableWord>(d: &[W], r: u32, lo: u32, hi: u32, slack: u32, value: u32) -> u32 {
+pub(super) fn past_shorter<W: TableWord>(
+    d: &[W],
+    r: u32,
+    lo: u32,
+    hi: u32,
+    slack: u32,
+    value: u32,
+) -> u32 {
     // Steps `lo..hi` read the table from `r - 1 - lo` down to `r - hi`.
     let Some(read) = d.get((r - hi) as usize..(r - lo) as usize) else {
         return search::past(lo, hi, &mut |j| {

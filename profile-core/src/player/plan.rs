@@ -408,12 +408,7 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
             // than the acceleration side.
             let [_, d] = self.hints();
             let mut d = Reader::new(&self.decel, d);
-            let at_p = u64::from(self.a(p));
-            let slack = u64::from(self.slack);
-            let from = search::past(0, walked_down, &mut |j| {
-                d.ticks(r - 1 - j)
-                    .is_some_and(|dp| u64::from(dp) + slack < at_p)
-            });
+            let from = d.past_shorter(r, 0, walked_down, self.slack, self.a(p));
             if let Some(j) = self.scan(p, r, from, walked_down - from) {
                 return j;
             }
@@ -426,8 +421,15 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
         // step before it faster: the last of those is searched, and the
         // steps from there read one by one.
         let [a, d] = self.hints();
+        let dir = self.toward(p).1;
+        if dir <= 0 {
+            // Held from `walked_down` on: one period to compare with.
+            let held = self.a(self.walked_by(p, dir, walked_down));
+            let from = Reader::new(&self.decel, d).past_shorter(r, walked_down, r, slack, held);
+            return self.scan(p, r, from, r - from).unwrap_or(r);
+        }
         let (mut a, mut d) = (Reader::new(&self.accel, a), Reader::new(&self.decel, d));
-        let (dir, slack) = (self.toward(p).1, u64::from(slack));
+        let slack = u64::from(slack);
         let from = search::past(walked_down, r, &mut |j| match (
             d.ticks(r - 1 - j),
             a.ticks(self.walked_by(p, dir, j)),

@@ -1,7 +1,9 @@
 //! Reading a ramp's periods by position for the searches of a plan.
 
+use super::direct::{self, faster_by};
 use super::ramp::{Cursor, Ramp, ticks_at};
 use super::runs::run_holding;
+use super::search;
 use crate::base::timer::TableWord;
 use crate::table::runs::{FRACTION_MASK, IndexedRun, LinearRun, RUN_FRACTION_BITS, ahead};
 
@@ -228,6 +230,40 @@ impl<'r, 'a, W: TableWord> Reader<'r, 'a, W> {
             (None, Ramp::Indexed(index)) => Reader::Indexed(RunRead::new(index.runs())),
             (None, _) => Reader::Seek(ramp, hint),
         }
+    }
+
+    /// [`search::past`] over steps `lo..hi` of the last `r`, each ruled
+    /// out (with every step before it) when the ramp read at the steps
+    /// that remain (`r - 1 - j`) is shorter than `value` by more than
+    /// `slack`: a per-step table sliced once, an indexed ramp's runs
+    /// probed at their first steps first.
+    pub(crate) fn past_shorter(&mut self, r: u32, lo: u32, hi: u32, slack: u32, value: u32) -> u32 {
+        if lo >= hi {
+            return lo;
+        }
+        let (mut lo, mut hi) = (lo, hi);
+        match self {
+            Reader::Table(periods) => {
+                return direct::past_shorter(periods, r, lo, hi, slack, value);
+            }
+            Reader::Indexed(run) => {
+                // Positions `r - hi + 1..=r - 1 - lo`; the fast end is ruled
+                // out.
+                let short = |t: u32| faster_by(t, slack, value);
+                let (long, shorter) = run.bracket(r - hi, r - lo, short);
+                if shorter < r - lo {
+                    lo = r - shorter;
+                }
+                if long > r - hi {
+                    hi = r - 1 - long;
+                }
+            }
+            Reader::Seek(..) => {}
+        }
+        search::past(lo, hi, &mut |j| {
+            self.ticks(r - 1 - j)
+                .is_some_and(|x| faster_by(x, slack, value))
+        })
     }
 
     /// The period at step `pos`, in ticks; `None` past the ramp's end.
