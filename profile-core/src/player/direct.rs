@@ -4,15 +4,8 @@
 
 use super::plan::Sides;
 use super::ramp::ticks_at;
-use super::search;
+use super::search::{self, faster_by, past_shorter};
 use crate::base::timer::TableWord;
-
-/// `x` shorter than `y` by more than `slack` ticks.
-#[inline(always)]
-pub(super) fn faster_by(x: u32, slack: u32, y: u32) -> bool {
-    // Saturated, `x + slack` is not below any `y`, as the exact sum.
-    x.saturating_add(slack) < y
-}
 
 /// The first of `from..to` (steps of the last `r`) at which the
 /// deceleration table read at the steps that remain is not faster than
@@ -28,42 +21,6 @@ fn scan_held<W: TableWord>(d: &[W], r: u32, from: u32, to: u32, held: u32) -> Op
             None => to,
         },
     )
-}
-
-/// [`search::past`] over steps `lo..hi` of the last `r`, each ruled out
-/// (with every step before it) when the deceleration table read at the
-/// steps that remain is shorter than `value` by more than `slack`: the
-/// table's entries for those steps sliced once, so that a probe is a load
-/// and a compare.
-#[inline(always)]
-pub(super) fn past_shorter<W: TableWord>(
-    d: &[W],
-    r: u32,
-    lo: u32,
-    hi: u32,
-    slack: u32,
-    value: u32,
-) -> u32 {
-    // Steps `lo..hi` read the table from `r - 1 - lo` down to `r - hi`.
-    let Some(read) = d.get((r - hi) as usize..(r - lo) as usize) else {
-        return search::past(lo, hi, &mut |j| {
-            ticks_at(d, r - 1 - j).is_some_and(|x| faster_by(x, slack, value))
-        });
-    };
-    let n = read.len();
-    let (mut a, mut b) = (0usize, n);
-    while a < b {
-        let mid = a + (b - a) / 2;
-        let before = read
-            .get(n - 1 - mid)
-            .is_some_and(|x| faster_by(x.into_ticks(), slack, value));
-        if before {
-            a = mid + 1;
-        } else {
-            b = mid;
-        }
-    }
-    lo + a as u32
 }
 
 impl<W: TableWord> Sides<'_, '_, W> {

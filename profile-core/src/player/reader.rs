@@ -1,9 +1,8 @@
 //! Reading a ramp's periods by position for the searches of a plan.
 
-use super::direct::{self, faster_by};
 use super::ramp::{Cursor, Ramp, ticks_at};
 use super::runs::run_holding;
-use super::search;
+use super::search::{self, faster_by};
 use crate::base::timer::TableWord;
 use crate::table::runs::{FRACTION_MASK, IndexedRun, LinearRun, RUN_FRACTION_BITS, ahead};
 
@@ -244,7 +243,7 @@ impl<'r, 'a, W: TableWord> Reader<'r, 'a, W> {
         let (mut lo, mut hi) = (lo, hi);
         match self {
             Reader::Table(periods) => {
-                return direct::past_shorter(periods, r, lo, hi, slack, value);
+                return search::past_shorter(periods, r, lo, hi, slack, value);
             }
             Reader::Indexed(run) => {
                 // Positions `r - hi + 1..=r - 1 - lo`; the fast end is ruled

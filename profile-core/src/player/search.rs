@@ -15,7 +15,7 @@
 //! reads are the bisection's and the steps within the slack of the
 //! boundary.
 
-use super::ramp::Ramp;
+use super::ramp::{Ramp, ticks_at};
 use crate::base::timer::TableWord;
 use crate::table::runs::Expand;
 
@@ -34,6 +34,49 @@ pub(crate) fn past(mut lo: u32, mut hi: u32, before: &mut impl FnMut(u32) -> boo
         }
     }
     lo
+}
+
+/// `x` shorter than `y` by more than `slack` ticks.
+#[inline(always)]
+pub(crate) fn faster_by(x: u32, slack: u32, y: u32) -> bool {
+    // Saturated, `x + slack` is not below any `y`, as the exact sum.
+    x.saturating_add(slack) < y
+}
+
+/// [`past`] over steps `lo..hi` of the last `r`, each ruled out
+/// (with every step before it) when the deceleration table read at the
+/// steps that remain is shorter than `value` by more than `slack`: the
+/// table's entries for those steps sliced once, so that a probe is a load
+/// and a compare.
+#[inline(always)]
+pub(crate) fn past_shorter<W: TableWord>(
+    d: &[W],
+    r: u32,
+    lo: u32,
+    hi: u32,
+    slack: u32,
+    value: u32,
+) -> u32 {
+    // Steps `lo..hi` read the table from `r - 1 - lo` down to `r - hi`.
+    let Some(read) = d.get((r - hi) as usize..(r - lo) as usize) else {
+        return past(lo, hi, &mut |j| {
+            ticks_at(d, r - 1 - j).is_some_and(|x| faster_by(x, slack, value))
+        });
+    };
+    let n = read.len();
+    let (mut a, mut b) = (0usize, n);
+    while a < b {
+        let mid = a + (b - a) / 2;
+        let before = read
+            .get(n - 1 - mid)
+            .is_some_and(|x| faster_by(x.into_ticks(), slack, value));
+        if before {
+            a = mid + 1;
+        } else {
+            b = mid;
+        }
+    }
+    lo + a as u32
 }
 
 /// The largest position up to `last` whose period (`read`, in ticks) is
