@@ -597,27 +597,29 @@ fn main() -> ! {
         player_plan_retarget,
         player_plan_stop
     );
-    planning!(
+    // The compressed microstep ramp, plain and indexed.
+    macro_rules! planning_runs {
+        ($label:expr, $player:expr) => {
+            planning!(
+                $label,
+                $player,
+                microstep_runs::LEN as u32,
+                last_run(&microstep_runs::RUNS) as u16,
+                player_runs_plan_start,
+                player_runs_plan_set_cruise,
+                player_runs_plan_set_cruise_period,
+                player_runs_plan_retarget,
+                player_runs_plan_stop
+            )
+        };
+    }
+    planning_runs!(
         "compressed ramp (microstep_runs, 7192 steps)",
-        Player::<u16, _>::compressed(&microstep_runs::RUNS),
-        microstep_runs::LEN as u32,
-        last_run(&microstep_runs::RUNS) as u16,
-        player_runs_plan_start,
-        player_runs_plan_set_cruise,
-        player_runs_plan_set_cruise_period,
-        player_runs_plan_retarget,
-        player_runs_plan_stop
+        Player::<u16, _>::compressed(&microstep_runs::RUNS)
     );
-    planning!(
+    planning_runs!(
         "indexed compressed ramp (microstep_runs, 7192 steps)",
-        Player::<u16, _>::compressed_indexed(&microstep_runs::RUN_INDEX),
-        microstep_runs::LEN as u32,
-        last_run(&microstep_runs::RUNS) as u16,
-        player_runs_plan_start,
-        player_runs_plan_set_cruise,
-        player_runs_plan_set_cruise_period,
-        player_runs_plan_retarget,
-        player_runs_plan_stop
+        Player::<u16, _>::compressed_indexed(&microstep_runs::RUN_INDEX)
     );
 
     handler::measure();
