@@ -26,8 +26,7 @@ pub enum Ramp<'a, W> {
     Runs(&'a [[u16; 5]]),
     /// A compressed table with its index ([`RunIndex`]): played as
     /// [`Ramp::Runs`] plays its runs, any step of it found by bisection
-    /// over the runs, so that planning a move costs tens of instructions
-    /// a search, not a walk over the runs.
+    /// over the runs instead of a walk over them when a move is planned.
     Indexed(IndexedRuns<'a>),
 }
 
