@@ -206,11 +206,12 @@ impl<'a> RunWalk<'a> {
 }
 
 /// Reads a ramp's periods by position, in ticks, for the searches of a
-/// plan: a per-step table directly; any other ramp through a cursor moved
-/// from read to read (on runs a whole run at a time, so that reads near
-/// each other cost the runs between them, not the runs from the start).
-/// Chosen once per search, so that a read of a per-step table is a bounds
-/// check and a load.
+/// plan: a per-step table directly; an indexed ramp through its index
+/// ([`RunRead`]); any other ramp through a cursor moved from read to read
+/// (on runs a whole run at a time, so that reads near each other cost the
+/// runs between them, not the runs from the start). Chosen once per
+/// search, so that a read of a per-step table is a bounds check and a
+/// load.
 pub(crate) enum Reader<'r, 'a, W> {
     /// A per-step table, each entry played once.
     Table(&'a [W]),
@@ -246,8 +247,9 @@ impl<'r, 'a, W: TableWord> Reader<'r, 'a, W> {
                 return search::past_shorter(periods, r, lo, hi, slack, value);
             }
             Reader::Indexed(run) => {
-                // Positions `r - hi + 1..=r - 1 - lo`; the fast end is ruled
-                // out.
+                // The steps read positions `r - hi..=r - 1 - lo`: the runs
+                // that begin strictly inside are probed; the fast end is
+                // ruled out.
                 let short = |t: u32| faster_by(t, slack, value);
                 let (long, shorter) = run.bracket(r - hi, r - lo, short);
                 if shorter < r - lo {
