@@ -53,8 +53,9 @@ impl<'a, W: TableWord> Ramp<'a, W> {
         Ramp::Runs(runs)
     }
 
-    /// A compressed table and its index: `static INDEX: RunIndex<'static,
-    /// { RUN_COUNT }> = RunIndex::new(&RUNS);` beside a profile's `RUNS`.
+    /// A compressed table and its index: a profile's `RUN_INDEX`, or
+    /// `static INDEX: RunIndex<97> = RunIndex::new(&RUNS);` for 97 runs of
+    /// your own.
     pub const fn indexed<const N: usize>(index: &'a RunIndex<N>) -> Self {
         Ramp::Indexed(index.indexed())
     }
