@@ -33,6 +33,22 @@ pub(crate) fn run_at(runs: impl RunList, index: u32) -> Option<LinearRun> {
     runs.run(index)
 }
 
+/// The run of a whole indexed ramp (its first run at step 0) that holds
+/// step `pos`, as [`run_holding`] finds it: the slowest run and the
+/// fastest, where a move starts and where it cruises, without a search.
+#[inline]
+pub(crate) fn run_of(runs: &[IndexedRun], pos: u32) -> Option<(u32, &IndexedRun, LinearRun)> {
+    let entry = match runs {
+        [_, next, ..] if pos < next.step => 0,
+        [.., last] if last.step <= pos => runs.len() - 1,
+        _ => return run_holding(runs, pos),
+    };
+    let run = runs.get(entry)?;
+    let decoded = LinearRun::decode(&run.words);
+    let within = pos.checked_sub(run.step)?;
+    (within < u32::from(decoded.count)).then_some((entry as u32, run, decoded))
+}
+
 /// The run of `runs` that holds step `pos`, decoded, and its index; `None`
 /// past the ramp's end. A bisection over the runs' first steps: the last
 /// run that begins at or before `pos` (a run of no steps begins where the
