@@ -1,6 +1,6 @@
 //! A ramp to play, and positions along it.
 
-use super::runs::{RunList, RunState, run_at, run_of};
+use super::runs::{RunList, RunState, place, run_at};
 use crate::base::timer::TableWord;
 use crate::table::runs::{
     Expand, FRACTION_MASK, IndexedRuns, LinearRun, RUN_FRACTION_BITS, RUN_START_FRACTION, RunIndex,
@@ -216,23 +216,15 @@ impl Cursor {
         }
     }
 
-    /// The cursor at step `pos` of an indexed ramp: its run found by
-    /// bisection, the step within it in closed form.
+    /// The cursor at step `pos` of an indexed ramp, placed by [`place`].
     fn indexed(index: IndexedRuns<'_>, pos: u32) -> Option<Cursor> {
-        let (entry, run, decoded) = run_of(index.runs(), pos)?;
-        let within = pos - run.step;
-        let (frac, interval) = ahead(
-            u32::from(run.frac),
-            decoded.interval,
-            decoded.add as u32,
-            within,
-        );
+        let at = place(index.runs(), pos)?;
         Some(Cursor {
             pos,
-            entry,
-            within,
-            frac,
-            interval,
+            entry: at.entry,
+            within: at.within,
+            frac: at.frac,
+            interval: at.interval,
         })
     }
 

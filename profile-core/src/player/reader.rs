@@ -1,7 +1,7 @@
 //! Reading a ramp's periods by position for the searches of a plan.
 
 use super::ramp::{Cursor, Ramp, ticks_at};
-use super::runs::{run_holding, run_of};
+use super::runs::{place, run_holding};
 use super::search::{self, faster_by};
 use crate::base::timer::TableWord;
 use crate::table::runs::{FRACTION_MASK, IndexedRun, LinearRun, RUN_FRACTION_BITS, ahead};
@@ -153,15 +153,12 @@ pub(crate) struct RunWalk<'a> {
 impl<'a> RunWalk<'a> {
     /// At step `pos` of `runs`; `None` past the ramp's end.
     pub(crate) fn at(runs: &'a [IndexedRun], pos: u32) -> Option<Self> {
-        let (entry, run, decoded) = run_of(runs, pos)?;
-        let read = RunRead::keep(runs, entry, run, decoded);
-        let within = pos - run.step;
-        let (frac, interval) = ahead(read.frac, read.interval, read.add, within);
+        let at = place(runs, pos)?;
         Some(RunWalk {
-            read,
-            within,
-            frac,
-            interval,
+            read: RunRead::keep(runs, at.entry, at.run, at.decoded),
+            within: at.within,
+            frac: at.frac,
+            interval: at.interval,
         })
     }
 

@@ -3,7 +3,9 @@
 //! the remainder carried into it, so that any step is found by bisection
 //! over the runs) or not, and where a run being played stands.
 
-use crate::table::runs::{FRACTION_MASK, IndexedRun, IndexedRuns, LinearRun, RUN_FRACTION_BITS};
+use crate::table::runs::{
+    FRACTION_MASK, IndexedRun, IndexedRuns, LinearRun, RUN_FRACTION_BITS, ahead,
+};
 
 /// The runs of a compressed ramp, plain words or indexed: the code that
 /// reads them is made for each, so that neither pays for the other.
@@ -33,20 +35,54 @@ pub(crate) fn run_at(runs: impl RunList, index: u32) -> Option<LinearRun> {
     runs.run(index)
 }
 
-/// The run of a whole indexed ramp (its first run at step 0) that holds
-/// step `pos`, as [`run_holding`] finds it: the slowest run and the
-/// fastest, where a move starts and where it cruises, without a search.
-#[inline]
-pub(crate) fn run_of(runs: &[IndexedRun], pos: u32) -> Option<(u32, &IndexedRun, LinearRun)> {
-    let entry = match runs {
-        [_, next, ..] if pos < next.step => 0,
-        [.., last] if last.step <= pos => runs.len() - 1,
-        _ => return run_holding(runs, pos),
+/// Step `pos` of a whole indexed ramp (its first run at step 0): the run
+/// that holds it as [`run_holding`] finds it, but the slowest run and the
+/// fastest (where a move starts and where it cruises) without a search;
+/// the step within the run and the run's state there in closed form.
+/// `None` past the ramp's end.
+#[inline(always)]
+pub(crate) fn place(runs: &[IndexedRun], pos: u32) -> Option<Placed<'_>> {
+    let (entry, run, decoded) = match runs {
+        [_, next, ..] if pos < next.step => end_run(runs, 0, pos)?,
+        [.., last] if last.step <= pos => end_run(runs, runs.len() - 1, pos)?,
+        _ => run_holding(runs, pos)?,
     };
+    let within = pos - run.step;
+    let (frac, interval) = ahead(
+        u32::from(run.frac),
+        decoded.interval,
+        decoded.add as u32,
+        within,
+    );
+    Some(Placed {
+        entry,
+        run,
+        decoded,
+        within,
+        frac,
+        interval,
+    })
+}
+
+/// Run `entry` of `runs`, decoded, if it holds step `pos`.
+#[inline(always)]
+fn end_run(runs: &[IndexedRun], entry: usize, pos: u32) -> Option<(u32, &IndexedRun, LinearRun)> {
     let run = runs.get(entry)?;
     let decoded = LinearRun::decode(&run.words);
     let within = pos.checked_sub(run.step)?;
     (within < u32::from(decoded.count)).then_some((entry as u32, run, decoded))
+}
+
+/// A step of an indexed ramp ([`place`]): its run's index, the run and its
+/// decoding, the step within the run, the remainder before it and its
+/// interval.
+pub(crate) struct Placed<'r> {
+    pub(crate) entry: u32,
+    pub(crate) run: &'r IndexedRun,
+    pub(crate) decoded: LinearRun,
+    pub(crate) within: u32,
+    pub(crate) frac: u32,
+    pub(crate) interval: u32,
 }
 
 /// The run of `runs` that holds step `pos`, decoded, and its index; `None`
