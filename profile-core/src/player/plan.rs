@@ -429,12 +429,11 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
             return self.scan(p, r, from, r - from).unwrap_or(r);
         }
         let (mut a, mut d) = (Reader::new(&self.accel, a), Reader::new(&self.decel, d));
-        let slack = u64::from(slack);
         let from = search::past(walked_down, r, &mut |j| match (
             d.ticks(r - 1 - j),
             a.ticks(self.walked_by(p, dir, j)),
         ) {
-            (Some(dp), Some(ap)) => u64::from(dp) + slack < u64::from(ap),
+            (Some(dp), Some(ap)) => search::faster_by(dp, slack, ap),
             _ => false,
         });
         self.scan(p, r, from, r - from).unwrap_or(r)
