@@ -512,7 +512,9 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
     }
 
     /// [`Sides::scan_read`] on two indexed ramps, each walked a step at a
-    /// time.
+    /// time: the steps within both walks' runs compared in one loop
+    /// ([`RunWalk::first_not_shorter`]), a step into another run through
+    /// the index.
     fn scan_runs(
         &self,
         a: &[IndexedRun],
@@ -526,15 +528,32 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
         let (Some(mut a), Some(mut d)) = (RunWalk::at(a, q), RunWalk::at(d, r - 1 - from)) else {
             return Some(r);
         };
-        let to = from + n;
-        for j in from..to {
+        let (to, mut j) = (from + n, from);
+        loop {
+            let (next, dir) = self.toward(q);
+            // The steps both walks take within their runs, the acceleration
+            // side's direction holding, compared in one loop.
+            let to_cruise = match dir {
+                1 => self.cruise - q,
+                -1 => q - self.cruise,
+                _ => u32::MAX,
+            };
+            let moves = (to - 1 - j).min(to_cruise).min(a.room(dir)).min(d.room(-1));
+            if moves > 0 {
+                if let Some(k) = a.first_not_shorter(dir, &mut d, moves) {
+                    return Some(j + k);
+                }
+                j += moves;
+                q = self.walked_by(q, dir, moves);
+                continue;
+            }
+            // A step into another run, or the last.
             if d.ticks() >= a.ticks() {
                 return Some(j);
             }
             if j + 1 == to {
-                break;
+                return None;
             }
-            let (next, dir) = self.toward(q);
             let moved = match dir {
                 1 => a.forward(),
                 -1 => a.backward(),
@@ -543,9 +562,8 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
             if moved.and(d.backward()).is_none() {
                 return Some(r);
             }
-            q = next;
+            (q, j) = (next, j + 1);
         }
-        None
     }
 }
 

@@ -192,6 +192,72 @@ impl<'a> RunWalk<'a> {
         self.enter(self.read.first.checked_sub(1)?)
     }
 
+    /// The steps it can take `dir` (1 towards the fast end, -1 towards
+    /// the slow end) without leaving its run; any number when `dir` is 0.
+    #[inline(always)]
+    pub(crate) fn room(&self, dir: i8) -> u32 {
+        match dir {
+            1 => self.read.count - 1 - self.within,
+            -1 => self.within,
+            _ => u32::MAX,
+        }
+    }
+
+    /// Compares `decel`, walking towards the slow end, with `self`, walking
+    /// `dir` (held when 0), before each of `moves` steps that both take
+    /// within their runs ([`RunWalk::room`]): the first of those compared
+    /// where `decel`'s period is not shorter than this one's, both walks
+    /// moved to it; `None` when none is, both walks moved `moves` steps.
+    /// One loop for each direction, the runs' state in registers.
+    pub(crate) fn first_not_shorter(
+        &mut self,
+        dir: i8,
+        decel: &mut RunWalk<'_>,
+        moves: u32,
+    ) -> Option<u32> {
+        let (mut df, mut di, da) = (decel.frac, decel.interval, decel.read.add);
+        let (mut af, mut ai, aa) = (self.frac, self.interval, self.read.add);
+        let ticks = |f: u32, i: u32| f.wrapping_add(i) >> RUN_FRACTION_BITS;
+        let mut left = moves;
+        match dir {
+            1 => {
+                while left > 0 && ticks(df, di) < ticks(af, ai) {
+                    af = af.wrapping_add(ai) & FRACTION_MASK;
+                    ai = ai.wrapping_add(aa);
+                    di = di.wrapping_sub(da);
+                    df = df.wrapping_sub(di) & FRACTION_MASK;
+                    left -= 1;
+                }
+            }
+            -1 => {
+                while left > 0 && ticks(df, di) < ticks(af, ai) {
+                    ai = ai.wrapping_sub(aa);
+                    af = af.wrapping_sub(ai) & FRACTION_MASK;
+                    di = di.wrapping_sub(da);
+                    df = df.wrapping_sub(di) & FRACTION_MASK;
+                    left -= 1;
+                }
+            }
+            _ => {
+                let held = ticks(af, ai);
+                while left > 0 && ticks(df, di) < held {
+                    di = di.wrapping_sub(da);
+                    df = df.wrapping_sub(di) & FRACTION_MASK;
+                    left -= 1;
+                }
+            }
+        }
+        let k = moves - left;
+        (decel.frac, decel.interval, decel.within) = (df, di, decel.within - k);
+        (self.frac, self.interval) = (af, ai);
+        self.within = match dir {
+            1 => self.within + k,
+            -1 => self.within - k,
+            _ => self.within,
+        };
+        (left > 0).then_some(k)
+    }
+
     /// To step `pos`, through the index.
     #[inline(never)]
     fn enter(&mut self, pos: u32) -> Option<()> {
@@ -275,6 +341,63 @@ impl<'r, 'a, W: TableWord> Reader<'r, 'a, W> {
                 *cursor = Some(c);
                 Some(c.period(ramp).into_ticks())
             }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::table::runs::{Expand, RunIndex};
+    use core_test_support::any_runs;
+    use proptest::prelude::*;
+
+    /// Up to 12 runs, padded with runs of no step to 12 for an index.
+    fn padded(runs: &[[u16; 5]]) -> [[u16; 5]; 12] {
+        let mut all = [[0u16; 5]; 12];
+        all[..runs.len()].copy_from_slice(runs);
+        all
+    }
+
+    fn state(w: &RunWalk<'_>) -> (u32, u32, u32, u32) {
+        (w.read.entry, w.within, w.frac, w.interval)
+    }
+
+    proptest! {
+        /// The walks compared in one loop stop at the first step where the
+        /// expansions of the runs (`Expand`, step by step from the first
+        /// run) have the deceleration side's period not shorter than the
+        /// acceleration side's, and stand where the index places those
+        /// steps in closed form.
+        #[test]
+        fn walks_compared_in_one_loop_stop_as_the_expansions_say(
+            a in any_runs(),
+            // The same runs on both sides half the time: equal periods.
+            d in prop_oneof![Just(None), any_runs().prop_map(Some)],
+            ap in any::<prop::sample::Index>(),
+            dp in any::<prop::sample::Index>(),
+            dir in -1i8..=1,
+            moves in 0u32..40,
+        ) {
+            let d = d.unwrap_or_else(|| a.clone());
+            let (a_all, d_all) = (padded(&a), padded(&d));
+            let (a_index, d_index) = (RunIndex::new(&a_all), RunIndex::new(&d_all));
+            let (a_runs, d_runs) = (a_index.indexed().runs(), d_index.indexed().runs());
+            let (a_steps, d_steps): (std::vec::Vec<u32>, std::vec::Vec<u32>) =
+                (Expand::new(&a).collect(), Expand::new(&d).collect());
+            prop_assume!(!a_steps.is_empty() && !d_steps.is_empty());
+            let (ap, dp) = (ap.index(a_steps.len()) as u32, dp.index(d_steps.len()) as u32);
+            let (mut wa, mut wd) = (RunWalk::at(a_runs, ap).unwrap(), RunWalk::at(d_runs, dp).unwrap());
+            let moves = moves.min(wa.room(dir)).min(wd.room(-1));
+            let a_at = |k: u32| (i64::from(ap) + i64::from(dir) * i64::from(k)) as u32;
+            let expected = (0..moves).find(|&k| d_steps[(dp - k) as usize] >= a_steps[a_at(k) as usize]);
+            let found = wa.first_not_shorter(dir, &mut wd, moves);
+            prop_assert_eq!(found, expected);
+            let k = found.unwrap_or(moves);
+            prop_assert_eq!(state(&wa), state(&RunWalk::at(a_runs, a_at(k)).unwrap()));
+            prop_assert_eq!(state(&wd), state(&RunWalk::at(d_runs, dp - k).unwrap()));
+            prop_assert_eq!(wa.ticks(), a_steps[a_at(k) as usize]);
+            prop_assert_eq!(wd.ticks(), d_steps[(dp - k) as usize]);
         }
     }
 }
