@@ -36,7 +36,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         Err(write)
     }
 
-    /// A buffered register's step ([`Buffered`]): `Pulsed::Ended` when the
+    /// A buffered register's step ([`Buffered`](super::Buffered)): `Pulsed::Ended` when the
     /// player has handed out nothing since it last returned `false` (no
     /// step is ahead of the pin); else calls `pulse`, then plays the next
     /// step of the run being played, or hands `write` back when the run is
@@ -87,7 +87,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         Pulsed::Empty(write)
     }
 
-    /// A buffered register's step without a pulse ([`Buffered::step`]):
+    /// A buffered register's step without a pulse ([`Buffered::step`](super::Buffered::step)):
     /// the run being played, then past it whether a step is ahead of the
     /// pin, so that the step path is the player's own.
     #[inline(always)]
@@ -99,7 +99,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     }
 
     /// Plays the next step of the run being played (a compressed run for
-    /// a [`Compressed`] player), or hands `write` back when it is played.
+    /// a [`Compressed`](super::Compressed) player), or hands `write` back when it is played.
     #[inline(always)]
     pub(super) fn play<F: FnOnce(W)>(&mut self, write: F) -> Result<(), F> {
         if L::COMPRESSED {
@@ -180,7 +180,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
 
     /// Begins the plan's next run of a compressed table; `None`, the run
     /// [`Run::Ended`], when the plan is played (or a ramp is not
-    /// compressed, which the constructors of a [`Compressed`] player rule
+    /// compressed, which the constructors of a [`Compressed`](super::Compressed) player rule
     /// out).
     #[cold]
     #[inline(never)]
