@@ -1,6 +1,8 @@
 //! Compressed ramps played as their expansion through every call that
-//! plans: random runs (runs of no step included) and random sequences of
-//! starts, stops, cruise positions, cruise periods, new targets and steps.
+//! plans: random runs (runs of no step included), runs that fall as
+//! generated ramps do (up to 40, whose steps a plan finds through the
+//! index), and random sequences of starts, stops, cruise positions, cruise
+//! periods, new targets and steps.
 //! The player of the per-step table the runs expand to is the reference
 //! here (its moves are checked against the per-step model in `player.rs`
 //! and against rules computed from the table alone in `motion.rs`); the
@@ -12,7 +14,7 @@
 
 use core_test_support as common;
 
-use common::{any_runs, cases};
+use common::{any_runs, cases, falling_runs};
 use profile_core::player::{Player, Ramp};
 use profile_core::runs::{Expand, RunIndex};
 use proptest::prelude::*;
@@ -39,9 +41,9 @@ fn ops() -> impl Strategy<Value = Vec<Op>> {
     proptest::collection::vec(op, 1..16)
 }
 
-/// Up to 12 runs, padded with runs of no step to 12 for an index.
-fn padded(runs: &[[u16; 5]]) -> [[u16; 5]; 12] {
-    let mut all = [[0u16; 5]; 12];
+/// Up to 40 runs, padded with runs of no step to 40 for an index.
+fn padded(runs: &[[u16; 5]]) -> [[u16; 5]; 40] {
+    let mut all = [[0u16; 5]; 40];
     all[..runs.len()].copy_from_slice(runs);
     all
 }
@@ -121,10 +123,16 @@ fn runs_plain_and_indexed_play_as_their_expansion() {
         ..Config::default()
     });
     let steps = std::cell::Cell::new(0u64);
-    let ramps = (
-        any_runs(),
-        prop_oneof![Just(None), any_runs().prop_map(Some)],
-    );
+    // Any runs, or runs that fall as generated ramps do (a plan finds their
+    // steps through the index), by up to a tick a step or by little.
+    let runs = || {
+        prop_oneof![
+            2 => any_runs(),
+            1 => falling_runs(1 << 16),
+            1 => falling_runs(1 << 10),
+        ]
+    };
+    let ramps = (runs(), prop_oneof![Just(None), runs().prop_map(Some)]);
     runner
         .run(&(ramps, ops()), |((accel, decel), ops)| {
             let decel = decel.unwrap_or_else(|| accel.clone());

@@ -65,6 +65,43 @@ pub fn any_runs() -> impl Strategy<Value = Vec<[u16; 5]>> {
     })
 }
 
+/// Compressed runs as generated ramps are: slow to fast, each run going on
+/// from where the one before ended (a fraction of a tick lower at most),
+/// its periods falling by up to `max_fall` 1/65 536 ticks a step, 8 to 40
+/// runs of up to 60 steps (a run of no step now and then), none shorter
+/// than a tick: the shape whose runs a plan finds through the index.
+pub fn falling_runs(max_fall: i32) -> impl Strategy<Value = Vec<[u16; 5]>> {
+    let run = (
+        prop_oneof![1 => Just(0u16), 12 => 1u16..60],
+        0..=max_fall,
+        0u32..65_536,
+    );
+    (200u32..4000, proptest::collection::vec(run, 8..40)).prop_map(|(start, raw)| {
+        let mut interval = i64::from(start) << 16;
+        raw.into_iter()
+            .map(|(count, fall, jump)| {
+                let floor = 1i64 << 16;
+                let last = i64::from(count.max(1)) - 1;
+                // Falling by `fall` a step while the last step stays a tick.
+                let fall = if interval - last * i64::from(fall) >= floor {
+                    fall
+                } else {
+                    0
+                };
+                let words = RunWords {
+                    count,
+                    interval: interval as u32,
+                    add: -fall,
+                }
+                .encode();
+                interval -= i64::from(count) * i64::from(fall) + i64::from(jump);
+                interval = interval.max(floor);
+                words
+            })
+            .collect()
+    })
+}
+
 /// A table ordered slow to fast, as generated tables are: a length drawn
 /// from `len`, a first period from 200 ticks to `u16::MAX`, each next one
 /// up to `max_drop` ticks shorter, none below `floor`.
