@@ -72,16 +72,25 @@ impl<'a> RunRead<'a> {
     /// order the ramp's periods are in.
     pub(crate) fn bracket(&mut self, lo: u32, hi: u32, fast: impl Fn(u32) -> bool) -> (u32, u32) {
         let runs = self.runs;
-        let (mut a, mut b) = (
-            runs.partition_point(|r| r.step <= lo),
-            runs.partition_point(|r| r.step < hi),
-        );
+        // One bisection over all the runs, those that begin outside
+        // `lo..hi` (strictly) passed over unprobed, so that only runs
+        // inside are probed.
+        let (outside_lo, outside_hi) = (lo, hi);
+        let (mut a, mut b) = (0, runs.len());
         let (mut lo, mut hi, mut kept) = (lo, hi, None);
         while a < b {
             let mid = a + (b - a) / 2;
             let Some(run) = runs.get(mid) else {
                 break;
             };
+            if run.step <= outside_lo {
+                a = mid + 1;
+                continue;
+            }
+            if run.step >= outside_hi {
+                b = mid;
+                continue;
+            }
             let decoded = LinearRun::decode(&run.words);
             // A run of no steps: its first step is the next run's.
             let period = if decoded.count == 0 {
