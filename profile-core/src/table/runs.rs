@@ -170,10 +170,10 @@ impl IndexedRun {
 /// A compressed table with where each of its runs begins, computed at
 /// compile time: with it the player finds any step of the table by
 /// bisection over the runs, where without it a step's remainder is carried
-/// through every run before it. On a ramp of 97 runs a stop, a new
-/// cruise speed or a new target takes a fifth to about a third of the
-/// instructions it takes without, a start about as many (measured on a
-/// Cortex-M3: [the measurements](https://github.com/stepper-profiles/stepper-profiles/blob/main/docs/performance.md)).
+/// through every run before it. On a ramp of 97 runs a new cruise speed or
+/// a new target takes a fifth to a quarter of the instructions it takes
+/// without, a stop about a third, a start about three quarters (measured
+/// on a Cortex-M3: [the measurements](https://github.com/stepper-profiles/stepper-profiles/blob/main/docs/performance.md)).
 /// 16 bytes of flash a run: the
 /// runs' own words are copied in, so that a firmware that plays the index
 /// alone keeps no other copy of them.
