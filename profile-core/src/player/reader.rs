@@ -203,6 +203,7 @@ impl<'a> RunWalk<'a> {
 
     /// The steps it can take `dir` (1 towards the fast end, -1 towards
     /// the slow end) without leaving its run; any number when `dir` is 0.
+    /// (A walk stands on a step of its run: the run has one at least.)
     #[inline(always)]
     pub(crate) fn room(&self, dir: i8) -> u32 {
         match dir {
