@@ -331,6 +331,10 @@ impl<'r, 'a, W: TableWord> Reader<'r, 'a, W> {
                 if long > r - hi {
                     hi = r - 1 - long;
                 }
+                return search::past(lo, hi, &mut |j| {
+                    run.ticks(r - 1 - j)
+                        .is_some_and(|x| faster_by(x, slack, value))
+                });
             }
             Reader::Seek(..) => {}
         }
