@@ -14,7 +14,7 @@
 
 use core_test_support as common;
 
-use common::{any_runs, cases, falling_runs};
+use common::{any_runs, cases, falling_runs, padded};
 use profile_core::player::{Player, Ramp};
 use profile_core::runs::{Expand, RunIndex};
 use proptest::prelude::*;
@@ -41,17 +41,11 @@ fn ops() -> impl Strategy<Value = Vec<Op>> {
     proptest::collection::vec(op, 1..16)
 }
 
-/// Up to 40 runs, padded with runs of no step to 40 for an index.
-fn padded(runs: &[[u16; 5]]) -> [[u16; 5]; 40] {
-    let mut all = [[0u16; 5]; 40];
-    all[..runs.len()].copy_from_slice(runs);
-    all
-}
-
 fn check(accel: &[[u16; 5]], decel: &[[u16; 5]], ops: &[Op]) -> Result<u64, TestCaseError> {
     let expand = |runs: &[[u16; 5]]| -> Vec<u16> { Expand::new(runs).map(|p| p as u16).collect() };
     let (a_steps, d_steps) = (expand(accel), expand(decel));
-    let (a_all, d_all) = (padded(accel), padded(decel));
+    // Up to 40 runs, padded with runs of no step to 40 for an index.
+    let (a_all, d_all) = (padded::<40>(accel), padded::<40>(decel));
     let (a_index, d_index) = (RunIndex::new(&a_all), RunIndex::new(&d_all));
     let mut reference = Player::with_decel(Ramp::steps(&a_steps), Ramp::steps(&d_steps));
     let mut plain = Player::<u16, _>::compressed_with_decel(accel, decel);

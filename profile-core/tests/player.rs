@@ -257,7 +257,7 @@ fn diffused_tables_play_exactly() {
 use core_test_support as common;
 
 use common::reference::Reference;
-use common::{Shape, any_runs, cases, shape};
+use common::{Shape, any_runs, cases, padded, shape};
 use profile_core::TableWord;
 
 /// What a random operation sequence does to a player.
@@ -326,12 +326,9 @@ fn compare<W: TableWord + core::fmt::Debug + PartialEq>(
         }
     }
     // Compressed ramps indexed (padded to 12 runs with runs of no step).
-    let pad = |shape: &Shape| -> [[u16; 5]; 12] {
-        let mut runs = [[0u16; 5]; 12];
-        if let Shape::Runs(r) = shape {
-            runs[..r.len()].copy_from_slice(r);
-        }
-        runs
+    let pad = |shape: &Shape| match shape {
+        Shape::Runs(r) => padded::<12>(r),
+        _ => padded(&[]),
     };
     let (a_padded, d_padded) = (pad(accel), pad(decel));
     let (a_index, d_index) = (RunIndex::new(&a_padded), RunIndex::new(&d_padded));

@@ -363,15 +363,8 @@ impl<'r, 'a, W: TableWord> Reader<'r, 'a, W> {
 mod tests {
     use super::*;
     use crate::table::runs::{Expand, RunIndex};
-    use core_test_support::any_runs;
+    use core_test_support::{any_runs, padded};
     use proptest::prelude::*;
-
-    /// Up to 12 runs, padded with runs of no step to 12 for an index.
-    fn padded(runs: &[[u16; 5]]) -> [[u16; 5]; 12] {
-        let mut all = [[0u16; 5]; 12];
-        all[..runs.len()].copy_from_slice(runs);
-        all
-    }
 
     fn state(w: &RunWalk<'_>) -> (u32, u32, u32, u32) {
         (w.read.entry, w.within, w.frac, w.interval)
@@ -394,7 +387,7 @@ mod tests {
             moves in 0u32..40,
         ) {
             let d = d.unwrap_or_else(|| a.clone());
-            let (a_all, d_all) = (padded(&a), padded(&d));
+            let (a_all, d_all) = (padded::<12>(&a), padded::<12>(&d));
             let (a_index, d_index) = (RunIndex::new(&a_all), RunIndex::new(&d_all));
             let (a_runs, d_runs) = (a_index.indexed().runs(), d_index.indexed().runs());
             let (a_steps, d_steps): (std::vec::Vec<u32>, std::vec::Vec<u32>) =

@@ -65,6 +65,15 @@ pub fn any_runs() -> impl Strategy<Value = Vec<[u16; 5]>> {
     })
 }
 
+/// `runs` padded with runs of no step to `N`, for a
+/// [`RunIndex`](profile_core::runs::RunIndex) of a fixed length (at most
+/// `N` runs).
+pub fn padded<const N: usize>(runs: &[[u16; 5]]) -> [[u16; 5]; N] {
+    let mut all = [[0u16; 5]; N];
+    all[..runs.len()].copy_from_slice(runs);
+    all
+}
+
 /// Compressed runs as generated ramps are: slow to fast, each run going on
 /// from where the one before ended (a fraction of a tick lower at most),
 /// its periods falling by up to `max_fall` 1/65 536 ticks a step, 8 to 40
