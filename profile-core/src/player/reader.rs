@@ -4,7 +4,7 @@ use super::ramp::{Cursor, Ramp, ticks_at};
 use super::runs::{place, run_holding};
 use super::search::{self, faster_by};
 use crate::base::timer::TableWord;
-use crate::table::runs::{FRACTION_MASK, IndexedRun, LinearRun, RUN_FRACTION_BITS, ahead};
+use crate::table::runs::{IndexedRun, LinearRun, RUN_FRACTION_BITS, ahead, behind};
 
 /// A run of no steps: what a reader of no runs keeps.
 static EMPTY: IndexedRun = IndexedRun {
@@ -182,8 +182,7 @@ impl<'a> RunWalk<'a> {
     pub(crate) fn forward(&mut self) -> Option<()> {
         if self.within + 1 < self.read.count {
             self.within += 1;
-            self.frac = self.frac.wrapping_add(self.interval) & FRACTION_MASK;
-            self.interval = self.interval.wrapping_add(self.read.add);
+            (self.frac, self.interval) = ahead(self.frac, self.interval, self.read.add, 1);
             return Some(());
         }
         self.enter(self.read.first + self.within + 1)
@@ -194,8 +193,7 @@ impl<'a> RunWalk<'a> {
     pub(crate) fn backward(&mut self) -> Option<()> {
         if self.within > 0 {
             self.within -= 1;
-            self.interval = self.interval.wrapping_sub(self.read.add);
-            self.frac = self.frac.wrapping_sub(self.interval) & FRACTION_MASK;
+            (self.frac, self.interval) = behind(self.frac, self.interval, self.read.add, 1);
             return Some(());
         }
         self.enter(self.read.first.checked_sub(1)?)
@@ -232,27 +230,22 @@ impl<'a> RunWalk<'a> {
         match dir {
             1 => {
                 while left > 0 && ticks(df, di) < ticks(af, ai) {
-                    af = af.wrapping_add(ai) & FRACTION_MASK;
-                    ai = ai.wrapping_add(aa);
-                    di = di.wrapping_sub(da);
-                    df = df.wrapping_sub(di) & FRACTION_MASK;
+                    (af, ai) = ahead(af, ai, aa, 1);
+                    (df, di) = behind(df, di, da, 1);
                     left -= 1;
                 }
             }
             -1 => {
                 while left > 0 && ticks(df, di) < ticks(af, ai) {
-                    ai = ai.wrapping_sub(aa);
-                    af = af.wrapping_sub(ai) & FRACTION_MASK;
-                    di = di.wrapping_sub(da);
-                    df = df.wrapping_sub(di) & FRACTION_MASK;
+                    (af, ai) = behind(af, ai, aa, 1);
+                    (df, di) = behind(df, di, da, 1);
                     left -= 1;
                 }
             }
             _ => {
                 let held = ticks(af, ai);
                 while left > 0 && ticks(df, di) < held {
-                    di = di.wrapping_sub(da);
-                    df = df.wrapping_sub(di) & FRACTION_MASK;
+                    (df, di) = behind(df, di, da, 1);
                     left -= 1;
                 }
             }
