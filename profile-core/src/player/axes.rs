@@ -95,37 +95,45 @@ pub struct Axes<'a, W, const N: usize, L = AnyLayout> {
     turn: Option<([Direction; N], u32)>,
 }
 
-/// The followers' accumulators, laid out for the step path: the lead's bit
-/// first, then the followers (`1..N`, in the order of their axes) in
-/// pairs, each follower's steps beside its accumulator and the pair's two
-/// accumulators adjacent (one load of a follower's two words, one store of
-/// a pair's accumulators), then what a follower reads only where it steps.
+/// The followers' accumulators, laid out for the step path: the mask of an
+/// edge where no follower's count changes first, then the followers
+/// (`1..N`, in the order of their axes) in pairs, each follower's increment
+/// beside its accumulator and the pair's two accumulators adjacent (one
+/// load of a follower's two words, one store of a pair's accumulators),
+/// then what a follower reads only on the edges where its count changes.
 ///
 /// A follower of `d` steps of the lead's `L` has taken `n(s) = floor((d·s +
 /// h) / L)` steps after the lead's `s`-th, with `h = floor((d - 1) / 2)`:
 /// exactly `#{k : s_k <= s}` for the rule's `s_k = floor((2kL + d) / 2d)`.
-/// Its accumulator holds `(d·s + h) mod L`, less `L`, modulo 2^32: adding
-/// `d` carries out of 32 bits exactly when `n` grows, and then `L` comes
-/// off.
+/// With `a = (d·s + h) mod L`, it steps on the lead's next step exactly
+/// when `a + d >= L`. A follower of at most `L / 2` steps keeps `a - L`
+/// (modulo 2^32) and adds `d`: the addition carries out of 32 bits exactly
+/// when it steps, and then `L` comes off. One of more steps keeps `L - 1 -
+/// a`, less `L`, and adds `L - d`, its steps left out: the addition
+/// carries exactly when it does not step (`L - 1 - a` grows by `L - d`
+/// and reaches `L` exactly when `a + d < L`), and its bit is in the mask
+/// unless it carries. Either way the edges where the accumulator carries
+/// are at most half the lead's, and each of those flips the follower's
+/// bit of the mask.
 #[derive(Clone, Copy, Debug)]
 #[repr(C)]
 struct Edges<const N: usize> {
-    /// The lead's bit of the mask: the mask of an edge where no follower
-    /// steps.
-    lead_bit: u32,
-    /// `slot[j - 1]`: follower `j`'s steps and accumulator, in that order
+    /// The mask of an edge where no follower's accumulator carries: the
+    /// lead's bit and the bits of the followers of more than `L / 2` steps.
+    base: u32,
+    /// `slot[j - 1]`: follower `j`'s increment and accumulator, in that order
     /// for an odd `j` and the other way round for an even one, so that
     /// the accumulators of followers `j` and `j + 1` (`j` odd) are
     /// adjacent (`slot[N - 1]` unused).
     slot: [[u32; 2]; N],
     /// `steps[j - 1]`: the lead's steps (`L`) and follower `j`'s bit of
-    /// the mask, read on the edges where it steps.
+    /// the mask, read on the edges where its accumulator carries.
     steps: [[u32; 2]; N],
 }
 
 impl<const N: usize> Edges<N> {
     const REST: Self = Edges {
-        lead_bit: 0,
+        base: 0,
         slot: [[0; 2]; N],
         steps: [[0; 2]; N],
     };
@@ -135,18 +143,39 @@ impl<const N: usize> Edges<N> {
         j % 2
     }
 
-    /// Follower `j`'s accumulator.
+    /// Follower `j`'s `(d·s + h) mod L` ([`Edges`]), the lead's steps
+    /// being `l` and the follower's `d`.
     #[cfg(test)]
-    fn acc(&self, j: usize) -> u32 {
-        self.slot[j - 1][Self::acc_at(j)]
+    fn held(&self, j: usize, d: u32, l: u32) -> u32 {
+        let acc = self.slot[j - 1][Self::acc_at(j)];
+        if Self::dense(d, l) {
+            !acc
+        } else {
+            acc.wrapping_add(l)
+        }
     }
 
-    /// Sets follower `j` (`1..N`): its steps, accumulator and bit, and the
-    /// lead's steps.
-    fn set(&mut self, j: usize, inc: u32, acc: u32, bit: u32, lead_steps: u32) {
+    /// A follower of `d` steps of the lead's `l` counts the steps it leaves
+    /// out.
+    const fn dense(d: u32, l: u32) -> bool {
+        d > l / 2
+    }
+
+    /// Sets follower `j` (`1..N`) of `d` steps, the lead's being `l`, to
+    /// `held = (d·s + h) mod L` after the lead's `s`-th step, its bit of
+    /// the mask `bit`.
+    fn set(&mut self, j: usize, d: u32, held: u32, bit: u32, l: u32) {
+        // `L - 1 - a`, less `L`, is `!a`.
+        let (inc, acc) = if Self::dense(d, l) {
+            self.base |= bit;
+            (l - d, !held)
+        } else {
+            self.base &= !bit;
+            (d, held.wrapping_sub(l))
+        };
         self.slot[j - 1][Self::acc_at(j)] = acc;
         self.slot[j - 1][1 - Self::acc_at(j)] = inc;
-        self.steps[j - 1] = [lead_steps, bit];
+        self.steps[j - 1] = [l, bit];
     }
 
     /// The mask of the axes that step on the lead's next step, the
@@ -155,18 +184,19 @@ impl<const N: usize> Edges<N> {
     /// than its body.
     #[inline(always)]
     fn next(&mut self) -> u32 {
-        let mut mask = self.lead_bit;
-        // Follower `j`'s accumulator moved on, its bit into the mask when
-        // it steps: an addition and a branch, and where it steps a load of
-        // its bit and `L`, an or and a subtraction. The fence, which emits
-        // no instruction, keeps the branch: without it the follower becomes
-        // a conditional block of at least 4 instructions on every step.
+        let mut mask = self.base;
+        // Follower `j`'s accumulator moved on, its bit of the mask flipped
+        // when it carries: an addition and a branch, and where it carries
+        // a load of its bit and `L`, an exclusive or and a subtraction. The
+        // fence, which emits no instruction, keeps the branch: without it
+        // the follower becomes a conditional block of at least 4
+        // instructions on every step.
         let mut follow = |acc: u32, inc: u32, j: usize| {
             let (sum, carry) = acc.overflowing_add(inc);
             if carry {
                 compiler_fence(Ordering::SeqCst);
                 let [lead_steps, bit] = self.steps.get(j - 1).copied().unwrap_or([0; 2]);
-                mask |= bit;
+                mask ^= bit;
                 return sum.wrapping_sub(lead_steps);
             }
             sum
@@ -317,17 +347,12 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
         }
         let l = self.steps[lead];
         let mut edges = Edges::REST;
-        edges.lead_bit = bit(lead);
+        edges.base = bit(lead);
         let followers = (0..N).filter(|&i| i != lead);
         for (j, i) in (1..N).zip(followers) {
             let d = self.steps[i];
-            // (d·0 + h) mod L, less L: `h` is below `d`, so below `L`.
-            let acc = if d == 0 {
-                0
-            } else {
-                ((d - 1) / 2).wrapping_sub(l)
-            };
-            edges.set(j, d, acc, bit(i), l);
+            // (d·0 + h) mod L: `h` is below `d`, so below `L`.
+            edges.set(j, d, d.saturating_sub(1) / 2, bit(i), l);
         }
         self.edges = edges;
         self.lead_steps = l;
@@ -357,11 +382,13 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     /// the mask of the axes that step on it (bit `i` for axis `i`) to
     /// `write`, and returns `true`; or returns `false` when the move is
     /// done. The lead's [`Player::step`] with the followers' accumulators:
-    /// an addition and a branch per follower, and where it steps a
-    /// subtraction and its bit into the mask. Three axes (two followers
-    /// stepping on 86 % and 25 % of the lead's steps) take 11.4 to 13.3
-    /// instructions per step more than the player on a Cortex-M3 or M4F
-    /// and 18.5 on an M0 (`examples/measure/measure.sh`). `write` is called
+    /// an addition and a branch per follower, and on the edges where its
+    /// accumulator carries (where it steps, or for a follower of more than
+    /// half the lead's steps where it does not) a subtraction and its bit
+    /// of the mask flipped. Three axes (two followers stepping on 86 % and
+    /// 25 % of the lead's steps) take 9.2 to 10.2 instructions per step
+    /// more than the player on a Cortex-M3 or M4F and 15.6 on an M0
+    /// (`examples/measure/measure.sh`). `write` is called
     /// once a step at most; it is `FnMut` so that the step can hand it on
     /// to the path that refills the run.
     #[inline]
@@ -481,8 +508,10 @@ mod tests {
     fn the_longest_moves_follow_the_rule() {
         static RAMP: [u16; 2] = [3000, 2000];
         let max = u32::MAX;
-        let moves: [[u32; 3]; 4] = [
+        let moves: [[u32; 3]; 5] = [
             [max, max - 1, 1],
+            // Either side of half the lead's steps.
+            [1001, 500, 501],
             [max, 2, max / 2 + 1],
             [3_000_000_001, 1_999_999_999, 7],
             [max - 4, max - 4, 123_456_789],
@@ -493,10 +522,9 @@ mod tests {
             axes.move_by(steps.map(i64::from));
             for j in 1..3 {
                 let d = u64::from(steps[j]);
-                // The accumulator after `s` lead steps: (d·s + h) mod L, less L.
+                // What the accumulator stands for after `s` lead steps.
                 let held = |s: u64| ((d * s + (d - 1) / 2) % l) as u32;
-                let state = |s: u64| held(s).wrapping_sub(steps[0]);
-                assert_eq!(axes.edges.acc(j), state(0), "{steps:?}");
+                assert_eq!(axes.edges.held(j, steps[j], steps[0]), held(0), "{steps:?}");
                 let probes = [0, 1, 2, l / 3, l / 2, l - 2, l - 1];
                 for s in probes
                     .into_iter()
@@ -504,11 +532,12 @@ mod tests {
                 {
                     let s = s.min(l - 1);
                     let mut edges = axes.edges;
-                    edges.set(j, steps[j], state(s), 1 << j, steps[0]);
+                    edges.set(j, steps[j], held(s), 1 << j, steps[0]);
                     let mask = edges.next();
                     let steps_now = taken(d, l, s + 1) - taken(d, l, s);
                     assert_eq!(u64::from(mask >> j & 1), steps_now, "{steps:?} at {s}");
-                    assert_eq!(edges.acc(j), state(s + 1), "{steps:?} at {s}");
+                    let after = edges.held(j, steps[j], steps[0]);
+                    assert_eq!(after, held(s + 1), "{steps:?} at {s}");
                     assert_eq!(
                         u64::from(follower_steps(steps[j], s as u32, steps[0])),
                         taken(d, l, s)

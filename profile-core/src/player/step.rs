@@ -6,6 +6,7 @@ use super::buffered::Pulsed;
 use super::plan::{Run, Source};
 use super::{Layout, Player, Ramp};
 use crate::base::timer::TableWord;
+use core::sync::atomic::{Ordering, compiler_fence};
 
 impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// Plays the next step of the run being played, or hands `write` back
@@ -22,6 +23,11 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             Run::Hold(p, n) => {
                 if *n > 0 {
                     *n -= 1;
+                    // Emits nothing; keeps the test a branch where the
+                    // write is longer (`Axes`' mask and the period): made
+                    // a conditional block, the path is an instruction
+                    // longer on a Cortex-M3.
+                    compiler_fence(Ordering::SeqCst);
                     write(*p);
                     return Ok(());
                 }
