@@ -4,7 +4,7 @@ use super::runs::{RunList, RunState, place, run_at};
 use crate::base::timer::TableWord;
 use crate::table::runs::{
     Expand, FRACTION_MASK, IndexedRuns, LinearRun, RUN_FRACTION_BITS, RUN_START_FRACTION, RunIndex,
-    ahead, behind,
+    ahead, behind, period as run_period,
 };
 
 /// A ramp to play: a table ordered from slow (rest) to fast.
@@ -300,9 +300,9 @@ impl Cursor {
         let found = match *ramp {
             Ramp::Steps { periods, .. } => periods.get(self.entry as usize).copied(),
             Ramp::Segments(pairs) => pairs.get(self.entry as usize).map(|p| p.0),
-            Ramp::Runs(_) | Ramp::Indexed(_) => Some(W::from_ticks(
-                self.frac.wrapping_add(self.interval) >> RUN_FRACTION_BITS,
-            )),
+            Ramp::Runs(_) | Ramp::Indexed(_) => {
+                Some(W::from_ticks(run_period(self.frac, self.interval)))
+            }
         };
         found.unwrap_or(W::from_ticks(0))
     }
@@ -528,7 +528,7 @@ impl Cursor {
             }
             _ => {
                 // One period, again and again: no remainder, no change.
-                let period = frac.wrapping_add(interval) >> RUN_FRACTION_BITS;
+                let period = run_period(frac, interval);
                 RunState {
                     left: limit,
                     frac: 0,

@@ -4,7 +4,7 @@ use super::ramp::{Cursor, Ramp, ticks_at};
 use super::runs::{place, run_holding};
 use super::search::{self, faster_by};
 use crate::base::timer::TableWord;
-use crate::table::runs::{IndexedRun, LinearRun, RUN_FRACTION_BITS, ahead, behind};
+use crate::table::runs::{IndexedRun, LinearRun, ahead, behind, period};
 
 /// A run of no steps: what a reader of no runs keeps.
 static EMPTY: IndexedRun = IndexedRun {
@@ -60,7 +60,7 @@ impl<'a> RunRead<'a> {
             within = self.enter(pos)?;
         }
         let (frac, interval) = ahead(self.frac, self.interval, self.add, within);
-        Some(frac.wrapping_add(interval) >> RUN_FRACTION_BITS)
+        Some(period(frac, interval))
     }
 
     /// Probes the runs' first steps strictly between `lo` and `hi`, by
@@ -96,7 +96,7 @@ impl<'a> RunRead<'a> {
             let period = if decoded.count == 0 {
                 self.ticks(run.step)
             } else {
-                Some(u32::from(run.frac).wrapping_add(decoded.interval) >> RUN_FRACTION_BITS)
+                Some(period(u32::from(run.frac), decoded.interval))
             };
             match period {
                 Some(t) if fast(t) => {
@@ -174,7 +174,7 @@ impl<'a> RunWalk<'a> {
     /// The period of the step it stands at, in ticks.
     #[inline(always)]
     pub(crate) fn ticks(&self) -> u32 {
-        self.frac.wrapping_add(self.interval) >> RUN_FRACTION_BITS
+        period(self.frac, self.interval)
     }
 
     /// One step towards the fast end; `None` past the ramp's end.
@@ -225,7 +225,7 @@ impl<'a> RunWalk<'a> {
     ) -> Option<u32> {
         let (mut df, mut di, da) = (decel.frac, decel.interval, decel.read.add);
         let (mut af, mut ai, aa) = (self.frac, self.interval, self.read.add);
-        let ticks = |f: u32, i: u32| f.wrapping_add(i) >> RUN_FRACTION_BITS;
+        let ticks = period;
         let mut left = moves;
         match dir {
             1 => {

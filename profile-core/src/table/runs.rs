@@ -112,6 +112,13 @@ impl Iterator for Expand<'_> {
     }
 }
 
+/// The period of a run's step, in ticks: `(frac + interval) >> 16`, from
+/// the remainder before it and its interval.
+#[inline(always)]
+pub(crate) const fn period(frac: u32, interval: u32) -> u32 {
+    frac.wrapping_add(interval) >> RUN_FRACTION_BITS
+}
+
 /// `n (n - 1) / 2`, exact for any `n` up to 65 536 (a run's count is at
 /// most 65 535), in 32-bit arithmetic.
 pub(crate) const fn triangle(n: u32) -> u32 {
