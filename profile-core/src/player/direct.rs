@@ -179,6 +179,28 @@ mod tests {
         }
     }
 
+    /// Every move on two tables that end differently (the acceleration
+    /// table falling to its top, the deceleration table rising to it, out
+    /// of order): a crossing read at both tops reads their cursors, and a
+    /// crossing read at one top only does not.
+    #[test]
+    fn the_crossing_reads_the_tops_only_at_the_tops() {
+        let falling = |i: u16| 3000 - 50 * i;
+        let a: Vec<u16> = (0..38).map(falling).chain([1010, 1000]).collect();
+        let d: Vec<u16> = (0..38).map(falling).chain([995, 1005]).collect();
+        let pairs = |t: &[u16]| -> Vec<(u16, u16)> { t.iter().map(|&x| (x, 1)).collect() };
+        let (sa, sd) = (pairs(&a), pairs(&d));
+        let (ra, rd) = (Ramp::segments(&sa), Ramp::segments(&sd));
+        let tops = [Cursor::at(&ra, 39), Cursor::at(&rd, 39)];
+        for cruise in 0..40 {
+            let cursors = sides(ra, rd, cruise, &tops);
+            for (p, r) in (0..40).flat_map(|p| (1..=40).map(move |r| (p, r))) {
+                let want = walked(&a, &d, p, cruise, r);
+                assert_eq!(cursors.crossing(p, r), want, "{p} {cruise} {r}");
+            }
+        }
+    }
+
     proptest! {
         /// The direct crossing on two per-step tables, and the cursors'
         /// crossing on the same periods as segments of one step each,
@@ -196,7 +218,11 @@ mod tests {
             prop_assert_eq!(direct.crossing_direct(&a, &d, p, r), want);
             let pairs = |t: &[u16]| -> Vec<(u16, u16)> { t.iter().map(|&x| (x, 1)).collect() };
             let (sa, sd) = (pairs(&a), pairs(&d));
-            let cursors = sides(Ramp::segments(&sa), Ramp::segments(&sd), cruise, &tops);
+            let (ra, rd) = (Ramp::segments(&sa), Ramp::segments(&sd));
+            // With the cursors at the tops, as a player keeps them: a step
+            // read at both tops reads them.
+            let tops = [Cursor::at(&ra, 39), Cursor::at(&rd, 39)];
+            let cursors = sides(ra, rd, cruise, &tops);
             prop_assert_eq!(cursors.crossing(p, r), want);
         }
     }

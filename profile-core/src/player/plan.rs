@@ -322,7 +322,8 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
         while r > 0 && r - 1 > l {
             // The deceleration ramp is out of reach for `far` more steps.
             let far = r - (l + 1);
-            let n = if self.a(p) < self.decel_fastest {
+            // Before `cap` no step is faster than that entry: no read.
+            let n = if p >= self.cap && self.a(p) < self.decel_fastest {
                 // No faster than the deceleration ramp's fastest entry: its
                 // top plays; the acceleration side only walks down.
                 let n = if self.cruise < p {
@@ -462,13 +463,23 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
             return None;
         }
         let to_end = (from + n == r).then_some(r);
+        let q = self.walked(p, from);
+        // One step, both ramps read at their tops (a long move's
+        // deceleration joining at its top, cruising at the acceleration
+        // ramp's): the tops' cursors, no search.
+        if let (1, [Some(a), Some(d)]) = (n, self.tops) {
+            if a.pos == q && d.pos == r - 1 - from {
+                let joins =
+                    d.period(&self.decel).into_ticks() >= a.period(&self.accel).into_ticks();
+                return joins.then_some(from).or(to_end);
+            }
+        }
         if read_directly(&self.accel) && read_directly(&self.decel) {
-            return self.scan_read(p, r, from, n).or(to_end);
+            return self.scan_read(q, r, from, n).or(to_end);
         }
         // (Two per-step tables are read by `crossing_direct`.)
-        let p = self.walked(p, from);
         let mut d = self.cursor(true, r - 1 - from).unwrap_or(Cursor::ZERO);
-        let mut a = self.cursor(false, p).unwrap_or(Cursor::ZERO);
+        let mut a = self.cursor(false, q).unwrap_or(Cursor::ZERO);
         for j in from..from + n {
             if d.period(&self.decel).into_ticks() >= a.period(&self.accel).into_ticks() {
                 return Some(j);
@@ -487,18 +498,18 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
         to_end
     }
 
-    /// [`Sides::scan`] on ramps read by position ([`read_directly`]): the
-    /// step found, `Some(r)` when a ramp ends, `None` when none of the `n`
-    /// steps is.
-    fn scan_read(&self, p: u32, r: u32, from: u32, n: u32) -> Option<u32> {
+    /// [`Sides::scan`] on ramps read by position ([`read_directly`]), the
+    /// acceleration side at `q` on step `from`: the step found, `Some(r)`
+    /// when a ramp ends, `None` when none of the `n` steps is.
+    fn scan_read(&self, q: u32, r: u32, from: u32, n: u32) -> Option<u32> {
         if let (Ramp::Indexed(a), Ramp::Indexed(d)) = (self.accel, self.decel) {
-            return self.scan_runs(a.runs(), d.runs(), p, r, from, n);
+            return self.scan_runs(a.runs(), d.runs(), q, r, from, n);
         }
         let (mut a, mut d) = (
             Reader::new(&self.accel, None),
             Reader::new(&self.decel, None),
         );
-        let mut q = self.walked(p, from);
+        let mut q = q;
         for j in from..from + n {
             let (Some(x), Some(y)) = (d.ticks(r - 1 - j), a.ticks(q)) else {
                 return Some(r);
@@ -519,12 +530,11 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
         &self,
         a: &[IndexedRun],
         d: &[IndexedRun],
-        p: u32,
+        mut q: u32,
         r: u32,
         from: u32,
         n: u32,
     ) -> Option<u32> {
-        let mut q = self.walked(p, from);
         let (Some(mut a), Some(mut d)) = (RunWalk::at(a, q), RunWalk::at(d, r - 1 - from)) else {
             return Some(r);
         };
