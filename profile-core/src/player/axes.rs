@@ -23,7 +23,9 @@ use core::sync::atomic::{Ordering, compiler_fence};
 /// one edge, and its steps are spread as evenly as the lead's edges allow.
 /// The step path computes this with an integer accumulator per follower
 /// (Bresenham's, set so that the rule holds exactly): an addition, and a
-/// subtraction on the edges where the follower steps; no division.
+/// subtraction on the edges where the follower steps (for a follower of
+/// more than half the lead's steps, on those where it does not: at most
+/// half the edges); no division.
 ///
 /// [`Axes::step`] hands the lead's period and a mask of the axes that step
 /// on the edge now starting (bit `i` for axis `i`; the lead's bit is set on
