@@ -414,9 +414,12 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
                 return j;
             }
         }
-        // Often the first: a long move's deceleration ramp joins at its top.
-        if let Some(j) = self.scan(p, r, walked_down, 1.min(r - walked_down)) {
-            return j;
+        // Often the first: a long move's deceleration ramp joins at its
+        // top. (Elsewhere the search below finds that step as well.)
+        if r - 1 - walked_down == self.decel_last {
+            if let Some(j) = self.scan(p, r, walked_down, 1) {
+                return j;
+            }
         }
         // A step more than `slack` ticks short of not faster has every
         // step before it faster: the last of those is searched, and the
