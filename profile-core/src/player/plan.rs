@@ -409,7 +409,14 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
             // than the acceleration side.
             let [_, d] = self.hints();
             let mut d = Reader::new(&self.decel, d);
-            let from = d.past_shorter(r, 0, walked_down, self.slack, self.a(p));
+            let ap = self.a(p);
+            // Often the last of those steps is, and so every one before:
+            // no search.
+            let last = d.ticks(r - walked_down);
+            let from = match last {
+                Some(t) if search::faster_by(t, self.slack, ap) => walked_down,
+                _ => d.past_shorter(r, 0, walked_down, self.slack, ap),
+            };
             if let Some(j) = self.scan(p, r, from, walked_down - from) {
                 return j;
             }
