@@ -423,7 +423,7 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
         }
         // Often the first: a long move's deceleration ramp joins at its
         // top. (Elsewhere the search below finds that step as well.)
-        if r - 1 - walked_down == self.decel_last {
+        if walked_down < r && r - 1 - walked_down == self.decel_last {
             if let Some(j) = self.scan(p, r, walked_down, 1) {
                 return j;
             }
