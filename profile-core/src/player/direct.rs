@@ -176,6 +176,7 @@ mod tests {
             decel_slack: search::slack(&decel),
             tops,
             recent: core::cell::Cell::new([None; 2]),
+            crossed: core::cell::Cell::new(None),
         }
     }
 

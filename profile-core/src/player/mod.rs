@@ -222,6 +222,7 @@ macro_rules! sides {
             decel_slack: $player.decel_slack,
             tops: &$player.tops,
             recent: core::cell::Cell::new([None; 2]),
+            crossed: core::cell::Cell::new(None),
         }
     };
 }

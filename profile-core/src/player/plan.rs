@@ -206,6 +206,9 @@ pub(crate) struct Sides<'t, 'a, W> {
     /// The cursors placed last on each ramp: a plan's stretches begin near
     /// each other.
     pub(crate) recent: Cell<[Option<Cursor>; 2]>,
+    /// Where a crossing's walk on an indexed deceleration ramp stood when
+    /// it found the crossing.
+    pub(crate) crossed: Cell<Option<Cursor>>,
 }
 
 impl<'a, W: TableWord> Sides<'_, 'a, W> {
@@ -229,8 +232,13 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
             (&self.accel, 0)
         };
         // Held and segment tables place a cursor directly, and so does an
-        // index.
+        // index, unless the crossing's walks left it there.
         if !matches!(ramp, Ramp::Runs(_)) {
+            if let (true, Ramp::Indexed(_)) = (decel, ramp) {
+                if let Some(c) = self.crossed.get().filter(|c| c.pos == pos) {
+                    return Some(c);
+                }
+            }
             return Cursor::at(ramp, pos);
         }
         let mut recent = self.recent.get();
@@ -561,7 +569,7 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
             let moves = (to - 1 - j).min(to_cruise).min(a.room(dir)).min(d.room(-1));
             if moves > 0 {
                 if let Some(k) = a.first_not_shorter(dir, &mut d, moves) {
-                    return Some(j + k);
+                    return Some(self.found(&d, j + k));
                 }
                 j += moves;
                 q = self.walked_by(q, dir, moves);
@@ -569,7 +577,7 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
             }
             // A step into another run, or the last.
             if d.ticks() >= a.ticks() {
-                return Some(j);
+                return Some(self.found(&d, j));
             }
             if j + 1 == to {
                 return None;
@@ -584,6 +592,13 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
             }
             (q, j) = (next, j + 1);
         }
+    }
+
+    /// The crossing `j` found by the deceleration ramp's walk `d` standing
+    /// at it: kept, for the deceleration's stretch begins there.
+    fn found(&self, d: &RunWalk<'_>, j: u32) -> u32 {
+        self.crossed.set(Some(d.cursor()));
+        j
     }
 }
 

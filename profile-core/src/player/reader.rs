@@ -171,6 +171,17 @@ impl<'a> RunWalk<'a> {
         })
     }
 
+    /// The cursor at the step it stands at.
+    pub(crate) fn cursor(&self) -> Cursor {
+        Cursor {
+            pos: self.read.first + self.within,
+            entry: self.read.entry,
+            within: self.within,
+            frac: self.frac,
+            interval: self.interval,
+        }
+    }
+
     /// The period of the step it stands at, in ticks.
     #[inline(always)]
     pub(crate) fn ticks(&self) -> u32 {
