@@ -232,7 +232,7 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
             (&self.accel, 0)
         };
         // Held and segment tables place a cursor directly, and so does an
-        // index, unless the crossing's walks left it there.
+        // index, unless the crossing's walk left it there.
         if !matches!(ramp, Ramp::Runs(_)) {
             if let (true, Ramp::Indexed(_)) = (decel, ramp) {
                 if let Some(c) = self.crossed.get().filter(|c| c.pos == pos) {
@@ -418,8 +418,8 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
             let [_, d] = self.hints();
             let mut d = Reader::new(&self.decel, d);
             let ap = self.a(p);
-            // Often the last of those steps is, and so every one before:
-            // no search.
+            // Often the deceleration ramp is that much faster at the last
+            // of those steps, and so at every one before: no search.
             let last = d.ticks(r - walked_down);
             let from = match last {
                 Some(t) if search::faster_by(t, self.slack, ap) => walked_down,
