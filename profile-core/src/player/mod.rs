@@ -54,6 +54,7 @@
 mod axes;
 mod axis;
 mod buffered;
+mod crossing;
 mod direct;
 mod fill;
 mod layout;

@@ -12,10 +12,8 @@ use core::cell::Cell;
 use core::slice;
 
 use super::ramp::{Cursor, Ramp, ticks_at};
-use super::reader::{Reader, RunWalk};
-use super::search;
+use super::reader::RunWalk;
 use crate::base::timer::TableWord;
-use crate::table::runs::IndexedRun;
 
 /// A run of steps, as the step path plays it. Its tag a word, so that
 /// runs are copied word by word (with a 16-bit tag, a held period packs
@@ -195,7 +193,7 @@ pub(crate) struct Sides<'t, 'a, W> {
     /// The first acceleration step faster than `decel_fastest`.
     pub(crate) cap: u32,
     pub(crate) cruise: u32,
-    /// The two ramps' slack ([`search::slack`]) added: a deceleration step
+    /// The two ramps' slack ([`search::slack`](super::search::slack)) added: a deceleration step
     /// that far faster than the acceleration side has every step before it
     /// faster too.
     pub(crate) slack: u32,
@@ -212,7 +210,7 @@ pub(crate) struct Sides<'t, 'a, W> {
 }
 
 impl<'a, W: TableWord> Sides<'_, 'a, W> {
-    fn a(&self, pos: u32) -> u32 {
+    pub(crate) fn a(&self, pos: u32) -> u32 {
         if let Some(periods) = self.accel.per_step() {
             return ticks_at(periods, pos).unwrap_or(0);
         }
@@ -225,7 +223,7 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
 
     /// The cursor at `pos` of the deceleration ramp (else the acceleration
     /// ramp), sought from the ramp's top when that is nearer.
-    fn cursor(&self, decel: bool, pos: u32) -> Option<Cursor> {
+    pub(crate) fn cursor(&self, decel: bool, pos: u32) -> Option<Cursor> {
         let (ramp, side) = if decel {
             (&self.decel, 1)
         } else {
@@ -256,7 +254,7 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
     }
 
     /// A cursor to begin a search on each ramp from: the one placed last.
-    fn hints(&self) -> [Option<Cursor>; 2] {
+    pub(crate) fn hints(&self) -> [Option<Cursor>; 2] {
         let recent = self.recent.get();
         [recent[0].or(self.tops[0]), recent[1].or(self.tops[1])]
     }
@@ -390,79 +388,6 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
         }
     }
 
-    /// The first of the last `r` steps at which the deceleration ramp, read
-    /// at the steps that remain, is not faster than the acceleration side
-    /// (walking from `p` towards the cruise position); `r` if none is.
-    ///
-    /// Once the acceleration side walks up or holds, the deceleration ramp
-    /// read at the steps that remain only gets slower and the acceleration
-    /// side only faster, but for the ramps' slack: the step is searched
-    /// ([`search`]). Walking down, both get slower: those steps are read
-    /// one by one.
-    pub(crate) fn crossing(&self, p: u32, r: u32) -> u32 {
-        if let (Some(a), Some(d)) = (self.accel.per_step(), self.decel.per_step()) {
-            return self.crossing_direct(a, d, p, r);
-        }
-        // Walking down, the steps one by one; then the search.
-        let (walked_down, slack) = match self.toward(p).1 {
-            -1 => ((p - self.cruise).min(r), self.slack),
-            1 => (0, self.slack),
-            // Held: only the deceleration ramp's order counts.
-            _ => (0, self.decel_slack),
-        };
-        if walked_down > 0 {
-            // Walking down, the acceleration side is never faster than at
-            // `p` but for its slack: a deceleration step more than both
-            // ramps' slack faster than that has every step before it faster
-            // than the acceleration side.
-            let [_, d] = self.hints();
-            let mut d = Reader::new(&self.decel, d);
-            let ap = self.a(p);
-            // Often the deceleration ramp is that much faster at the last
-            // of those steps, and so at every one before: no search.
-            let last = d.ticks(r - walked_down);
-            let from = match last {
-                Some(t) if search::faster_by(t, self.slack, ap) => walked_down,
-                _ => d.past_shorter(r, 0, walked_down, self.slack, ap),
-            };
-            if let Some(j) = self.scan(p, r, from, walked_down - from) {
-                return j;
-            }
-        }
-        // Often the first: a long move's deceleration ramp joins at its
-        // top. (Elsewhere the search below finds that step as well.)
-        if walked_down < r && r - 1 - walked_down == self.decel_last {
-            if let Some(j) = self.scan(p, r, walked_down, 1) {
-                return j;
-            }
-        }
-        // A step more than `slack` ticks short of not faster has every
-        // step before it faster: the last of those is searched, and the
-        // steps from there read one by one.
-        let [a, d] = self.hints();
-        let dir = self.toward(p).1;
-        if dir <= 0 {
-            // Held from `walked_down` on: one period to compare with.
-            let held = self.a(self.walked_by(p, dir, walked_down));
-            let from = Reader::new(&self.decel, d).past_shorter(r, walked_down, r, slack, held);
-            return self.scan(p, r, from, r - from).unwrap_or(r);
-        }
-        let (mut a, mut d) = (Reader::new(&self.accel, a), Reader::new(&self.decel, d));
-        let from = search::past(walked_down, r, &mut |j| match (
-            d.ticks(r - 1 - j),
-            a.ticks(self.walked_by(p, dir, j)),
-        ) {
-            (Some(dp), Some(ap)) => search::faster_by(dp, slack, ap),
-            _ => false,
-        });
-        self.scan(p, r, from, r - from).unwrap_or(r)
-    }
-
-    /// Where the acceleration side stands `j` steps after `p`.
-    fn walked(&self, p: u32, j: u32) -> u32 {
-        self.walked_by(p, self.toward(p).1, j)
-    }
-
     /// [`Sides::walked`], the side moving `dir` (`toward(p)`'s).
     #[inline]
     pub(crate) fn walked_by(&self, p: u32, dir: i8, j: u32) -> u32 {
@@ -472,138 +397,4 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
             _ => p,
         }
     }
-
-    /// [`Sides::crossing`] read step by step over `n` of the last `r`
-    /// steps from step `from`: the step found, `Some(r)` when the steps
-    /// read reach the last or a ramp ends, `None` when none of those is.
-    fn scan(&self, p: u32, r: u32, from: u32, n: u32) -> Option<u32> {
-        if n == 0 {
-            return None;
-        }
-        let to_end = (from + n == r).then_some(r);
-        let q = self.walked(p, from);
-        // One step, both ramps read at their tops (a long move's
-        // deceleration joining at its top, cruising at the acceleration
-        // ramp's): the tops' cursors, no search.
-        if let (1, [Some(a), Some(d)]) = (n, self.tops) {
-            if a.pos == q && d.pos == r - 1 - from {
-                let joins =
-                    d.period(&self.decel).into_ticks() >= a.period(&self.accel).into_ticks();
-                return joins.then_some(from).or(to_end);
-            }
-        }
-        if read_directly(&self.accel) && read_directly(&self.decel) {
-            return self.scan_read(q, r, from, n).or(to_end);
-        }
-        // (Two per-step tables are read by `crossing_direct`.)
-        let mut d = self.cursor(true, r - 1 - from).unwrap_or(Cursor::ZERO);
-        let mut a = self.cursor(false, q).unwrap_or(Cursor::ZERO);
-        for j in from..from + n {
-            if d.period(&self.decel).into_ticks() >= a.period(&self.accel).into_ticks() {
-                return Some(j);
-            }
-            d.backward(&self.decel);
-            match self.toward(a.pos).1 {
-                1 => {
-                    a.forward(&self.accel, self.accel_last);
-                }
-                -1 => {
-                    a.backward(&self.accel);
-                }
-                _ => {}
-            }
-        }
-        to_end
-    }
-
-    /// [`Sides::scan`] on ramps read by position ([`read_directly`]), the
-    /// acceleration side at `q` on step `from`: the step found, `Some(r)`
-    /// when a ramp ends, `None` when none of the `n` steps is.
-    fn scan_read(&self, q: u32, r: u32, from: u32, n: u32) -> Option<u32> {
-        if let (Ramp::Indexed(a), Ramp::Indexed(d)) = (self.accel, self.decel) {
-            return self.scan_runs(a.runs(), d.runs(), q, r, from, n);
-        }
-        let (mut a, mut d) = (
-            Reader::new(&self.accel, None),
-            Reader::new(&self.decel, None),
-        );
-        let mut q = q;
-        for j in from..from + n {
-            let (Some(x), Some(y)) = (d.ticks(r - 1 - j), a.ticks(q)) else {
-                return Some(r);
-            };
-            if x >= y {
-                return Some(j);
-            }
-            q = self.toward(q).0;
-        }
-        None
-    }
-
-    /// [`Sides::scan_read`] on two indexed ramps, each walked a step at a
-    /// time: the steps within both walks' runs compared in one loop
-    /// ([`RunWalk::first_not_shorter`]), a step into another run through
-    /// the index.
-    fn scan_runs(
-        &self,
-        a: &[IndexedRun],
-        d: &[IndexedRun],
-        mut q: u32,
-        r: u32,
-        from: u32,
-        n: u32,
-    ) -> Option<u32> {
-        let (Some(mut a), Some(mut d)) = (RunWalk::at(a, q), RunWalk::at(d, r - 1 - from)) else {
-            return Some(r);
-        };
-        let (to, mut j) = (from + n, from);
-        loop {
-            let (next, dir) = self.toward(q);
-            // The steps both walks take within their runs, the acceleration
-            // side's direction holding, compared in one loop.
-            let to_cruise = match dir {
-                1 => self.cruise - q,
-                -1 => q - self.cruise,
-                _ => u32::MAX,
-            };
-            let moves = (to - 1 - j).min(to_cruise).min(a.room(dir)).min(d.room(-1));
-            if moves > 0 {
-                if let Some(k) = a.first_not_shorter(dir, &mut d, moves) {
-                    return Some(self.found(&d, j + k));
-                }
-                j += moves;
-                q = self.walked_by(q, dir, moves);
-                continue;
-            }
-            // A step into another run, or the last.
-            if d.ticks() >= a.ticks() {
-                return Some(self.found(&d, j));
-            }
-            if j + 1 == to {
-                return None;
-            }
-            let moved = match dir {
-                1 => a.forward(),
-                -1 => a.backward(),
-                _ => Some(()),
-            };
-            if moved.and(d.backward()).is_none() {
-                return Some(r);
-            }
-            (q, j) = (next, j + 1);
-        }
-    }
-
-    /// The crossing `j` found by the deceleration ramp's walk `d` standing
-    /// at it: kept, for the deceleration's stretch begins there.
-    fn found(&self, d: &RunWalk<'_>, j: u32) -> u32 {
-        self.crossed.set(Some(d.cursor()));
-        j
-    }
-}
-
-/// A ramp whose periods are read by position at little cost: a per-step
-/// table or an indexed compressed one.
-fn read_directly<W: TableWord>(ramp: &Ramp<'_, W>) -> bool {
-    ramp.per_step().is_some() || matches!(ramp, Ramp::Indexed(_))
 }
