@@ -84,6 +84,16 @@ impl<W: TableWord> Sides<'_, '_, W> {
         self.walked_by(p, self.toward(p).1, j)
     }
 
+    /// [`Sides::walked`], the side moving `dir` (`toward(p)`'s).
+    #[inline]
+    pub(crate) fn walked_by(&self, p: u32, dir: i8, j: u32) -> u32 {
+        match dir {
+            1 => p.saturating_add(j).min(self.cruise),
+            -1 => p.saturating_sub(j).max(self.cruise),
+            _ => p,
+        }
+    }
+
     /// [`Sides::crossing`] read step by step over `n` of the last `r`
     /// steps from step `from`: the step found, `Some(r)` when the steps
     /// read reach the last or a ramp ends, `None` when none of those is.

@@ -193,9 +193,9 @@ pub(crate) struct Sides<'t, 'a, W> {
     /// The first acceleration step faster than `decel_fastest`.
     pub(crate) cap: u32,
     pub(crate) cruise: u32,
-    /// The two ramps' slack ([`search::slack`](super::search::slack)) added: a deceleration step
-    /// that far faster than the acceleration side has every step before it
-    /// faster too.
+    /// The two ramps' slack ([`search::slack`](super::search::slack))
+    /// added: a deceleration step that far faster than the acceleration
+    /// side has every step before it faster too.
     pub(crate) slack: u32,
     /// The deceleration ramp's slack alone.
     pub(crate) decel_slack: u32,
@@ -385,16 +385,6 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
         if j < r {
             let after = r - 1 - j;
             plan.push(self.stretch(true, after, -1, after + 1, p, 0));
-        }
-    }
-
-    /// [`Sides::walked`], the side moving `dir` (`toward(p)`'s).
-    #[inline]
-    pub(crate) fn walked_by(&self, p: u32, dir: i8, j: u32) -> u32 {
-        match dir {
-            1 => p.saturating_add(j).min(self.cruise),
-            -1 => p.saturating_sub(j).max(self.cruise),
-            _ => p,
         }
     }
 }
