@@ -406,7 +406,10 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
         }
         // The run being played, inline; everything else in one cold call
         // at the end, so that the step keeps no register across a call.
-        match self.player.play_run(|period| write(period, mask)) {
+        match self
+            .player
+            .play_run_counted::<true, _>(|period| write(period, mask))
+        {
             Ok(()) => true,
             Err(_) => self.step_refilled(write, mask),
         }

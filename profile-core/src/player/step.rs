@@ -13,10 +13,34 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// when the run is played.
     #[inline(always)]
     pub(super) fn play_run<F: FnOnce(W)>(&mut self, write: F) -> Result<(), F> {
+        self.play_run_counted::<false, F>(write)
+    }
+
+    /// [`Player::play_run`], a held run's count decremented before it is
+    /// tested when `DECREMENT_FIRST`: the test is then on the count as
+    /// loaded, which the compiler keeps in a low register (`cbz` on a
+    /// Cortex-M3) where a longer write (`Axes`' mask and the period) would
+    /// push it out, at two instructions more where the run ends (the
+    /// decrement and its store). The count left when the run ends is
+    /// `u32::MAX`, never read: the step past a run always replaces it
+    /// ([`Player::refill`]).
+    #[inline(always)]
+    pub(super) fn play_run_counted<const DECREMENT_FIRST: bool, F: FnOnce(W)>(
+        &mut self,
+        write: F,
+    ) -> Result<(), F> {
         match &mut self.run {
             Run::Down(periods) | Run::Ended(periods) => {
                 if let Some(&p) = periods.next_back() {
                     write(p);
+                    return Ok(());
+                }
+            }
+            Run::Hold(p, n) if DECREMENT_FIRST => {
+                let (left, ended) = n.overflowing_sub(1);
+                *n = left;
+                if !ended {
+                    write(*p);
                     return Ok(());
                 }
             }
