@@ -388,7 +388,7 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     /// accumulator carries (where it steps, or for a follower of more than
     /// half the lead's steps where it does not) a subtraction and its bit
     /// of the mask flipped. Three axes (two followers stepping on 86 % and
-    /// 25 % of the lead's steps) take 9.2 to 10.2 instructions per step
+    /// 25 % of the lead's steps) take 9.2 instructions per step
     /// more than the player on a Cortex-M3 or M4F and 15.6 on an M0
     /// (`examples/measure/measure.sh`). `write` is called
     /// once a step at most; it is `FnMut` so that the step can hand it on

@@ -335,14 +335,18 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             return;
         }
         let (acc, _, current) = self.now();
-        let needed = self.stop_steps(current);
+        let mut at = None;
+        let needed = self.stop_steps_at(current, Some(&mut at));
         if needed == 0 {
             // Not moving yet, or already slower than the ramp's slowest
             // entry: at rest now.
             self.plan.clear();
             self.follow(current);
         } else if needed < remaining {
-            let stretch = sides!(self).decelerate(needed - 1, acc);
+            let sides = sides!(self);
+            // Where the search left a cursor at the entry: taken.
+            sides.crossed.set(at);
+            let stretch = sides.decelerate(needed - 1, acc);
             self.plan.clear();
             self.plan.push(stretch);
             self.follow(current);
@@ -354,26 +358,49 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// faster down to rest; 0 before the first step (`current` 0) or when
     /// the motor already runs slower than the ramp's slowest entry.
     fn stop_steps(&self, current: u32) -> u32 {
+        self.stop_steps_at(current, None)
+    }
+
+    /// [`Player::stop_steps`], the cursor at the deceleration ramp's entry
+    /// the stop plays first put in `at`, if given, where the search has
+    /// it at hand.
+    fn stop_steps_at(&self, current: u32, at: Option<&mut Option<Cursor>>) -> u32 {
         if current == 0 || self.period_dec(0) < current {
             return 0;
         }
-        self.entry_point(current) + 1
+        self.entry_point(current, at) + 1
     }
 
     /// The largest position of the deceleration ramp whose period is not
     /// faster than `current`: periods fall along the ramp, so a binary
     /// search, then a bounded look past the boundary for the ties of
     /// diffused tables.
-    fn entry_point(&self, current: u32) -> u32 {
+    fn entry_point(&self, current: u32, at: Option<&mut Option<Cursor>>) -> u32 {
         let last = self.decel_last;
-        match self.decel.per_step() {
-            Some(d) => search::last_not_shorter(|pos| ticks_at(d, pos).unwrap_or(0), last, current),
-            None => {
-                // Probes near each other: one cursor moves between them.
-                let mut decel = Reader::new(&self.decel, self.tops[1]);
-                search::last_not_shorter(|pos| decel.ticks(pos).unwrap_or(0), last, current)
-            }
+        if let Some(d) = self.decel.per_step() {
+            return search::last_not_shorter(|pos| ticks_at(d, pos).unwrap_or(0), last, current);
         }
+        // Probes near each other: one cursor moves between them.
+        let mut decel = Reader::new(&self.decel, self.tops[1]);
+        if let (Reader::Indexed(read), true) = (&mut decel, current > 0) {
+            // The steps the index tells of are not read: the bisection's
+            // probes and its answer are the same.
+            let (long_below, short_from) = read.sure(current, self.decel_slack);
+            let entry = search::last_not_shorter(
+                |pos| match pos {
+                    _ if pos >= short_from => 0,
+                    _ if pos < long_below => current,
+                    _ => read.read(pos),
+                },
+                last,
+                current,
+            );
+            if let Some(at) = at {
+                *at = read.cursor(entry);
+            }
+            return entry;
+        }
+        search::last_not_shorter(|pos| decel.ticks(pos).unwrap_or(0), last, current)
     }
 
     fn period_dec(&self, pos: u32) -> u32 {

@@ -118,6 +118,72 @@ impl<'a> RunRead<'a> {
         (lo, hi)
     }
 
+    /// What the index tells of every step's period against `current`,
+    /// `slack` the ramp's ([`search::slack`]), no run entered: steps
+    /// before the first of the returned pair (0: none) are not shorter
+    /// than `current`, and steps from the second on (`u32::MAX`: none)
+    /// are shorter. A step's period is at most `slack` above any
+    /// period before it, so a run whose first period is `current + slack`
+    /// or more has no step before it shorter than `current`, and a run
+    /// whose first period is more than `slack` below `current` has none
+    /// after it as long. The runs' first steps are probed by bisection
+    /// towards `current`; the last run probed not shorter is kept, where
+    /// the steps the index cannot tell lie.
+    pub(crate) fn sure(&mut self, current: u32, slack: u32) -> (u32, u32) {
+        let runs = self.runs;
+        let (mut a, mut b) = (0, runs.len());
+        let (mut long_below, mut short_from, mut kept) = (0, u32::MAX, None);
+        while a < b {
+            let mid = a + (b - a) / 2;
+            let Some(run) = runs.get(mid) else {
+                break;
+            };
+            let decoded = LinearRun::decode(&run.words);
+            if decoded.count == 0 {
+                // Its first step is the next run's: nothing told.
+                a = mid + 1;
+                continue;
+            }
+            let t = period(u32::from(run.frac), decoded.interval);
+            if t >= current {
+                if t >= current.saturating_add(slack) {
+                    long_below = run.step.saturating_add(1);
+                }
+                kept = Some((mid, run, decoded));
+                a = mid + 1;
+            } else {
+                if faster_by(t, slack, current) {
+                    short_from = run.step;
+                }
+                b = mid;
+            }
+        }
+        if let Some((entry, run, decoded)) = kept {
+            *self = RunRead::keep(runs, entry as u32, run, decoded);
+        }
+        (long_below, short_from)
+    }
+
+    /// [`RunRead::ticks`], 0 past the ramp's end, in a call of its own:
+    /// for a search that reads at several places, each a call.
+    #[inline(never)]
+    pub(crate) fn read(&mut self, pos: u32) -> u32 {
+        self.ticks(pos).unwrap_or(0)
+    }
+
+    /// The cursor at step `pos` if the run kept holds it.
+    pub(crate) fn cursor(&self, pos: u32) -> Option<Cursor> {
+        let within = pos.checked_sub(self.first).filter(|&w| w < self.count)?;
+        let (frac, interval) = ahead(self.frac, self.interval, self.add, within);
+        Some(Cursor {
+            pos,
+            entry: self.entry,
+            within,
+            frac,
+            interval,
+        })
+    }
+
     /// Keeps the run that holds step `pos` (the next or the previous run
     /// first, else by bisection over the runs on that side); `pos`'s step
     /// within it.
@@ -367,7 +433,7 @@ impl<'r, 'a, W: TableWord> Reader<'r, 'a, W> {
 mod tests {
     use super::*;
     use crate::table::runs::{Expand, RunIndex};
-    use core_test_support::{any_runs, padded};
+    use core_test_support::{any_runs, falling_runs, padded};
     use proptest::prelude::*;
 
     fn state(w: &RunWalk<'_>) -> (u32, u32, u32, u32) {
@@ -409,6 +475,46 @@ mod tests {
             prop_assert_eq!(state(&wd), state(&RunWalk::at(d_runs, dp - k).unwrap()));
             prop_assert_eq!(wa.ticks(), a_steps[a_at(k) as usize]);
             prop_assert_eq!(wd.ticks(), d_steps[(dp - k) as usize]);
+        }
+
+        /// What the index tells of the steps against a period holds at
+        /// every step of the expansion, on runs in any order (their slack
+        /// the expansion's own, each period's rise over the shortest
+        /// before it); the reader reads every step as the expansion after
+        /// it, and its cursor at every step of the run kept is the index's.
+        #[test]
+        fn what_the_index_tells_holds_at_every_step(
+            runs in prop_oneof![any_runs(), falling_runs(4000)],
+            at in any::<prop::sample::Index>(),
+            offset in -3i64..=3,
+        ) {
+            let all = padded::<48>(&runs);
+            let index = RunIndex::new(&all);
+            let steps: std::vec::Vec<u32> = Expand::new(&runs).collect();
+            prop_assume!(!steps.is_empty());
+            let mut slack = 0;
+            for (i, &p) in steps.iter().enumerate() {
+                let shortest = steps[..i].iter().copied().min().unwrap_or(u32::MAX);
+                slack = slack.max(p.saturating_sub(shortest));
+            }
+            let current = (i64::from(steps[at.index(steps.len())]) + offset).max(1) as u32;
+            let mut read = RunRead::new(index.indexed().runs());
+            let (long_below, short_from) = read.sure(current, slack);
+            for (pos, &p) in (0u32..).zip(&steps) {
+                if pos < long_below {
+                    prop_assert!(p >= current, "step {pos}: {p} < {current}, told not shorter");
+                }
+                if pos >= short_from {
+                    prop_assert!(p < current, "step {pos}: {p} >= {current}, told shorter");
+                }
+                if let Some(c) = read.cursor(pos) {
+                    let placed = Cursor::at(&Ramp::<u16>::Indexed(index.indexed()), pos).unwrap();
+                    prop_assert_eq!((c.entry, c.within, c.frac, c.interval), (placed.entry, placed.within, placed.frac, placed.interval));
+                }
+            }
+            for (pos, &p) in (0u32..).zip(&steps) {
+                prop_assert_eq!(read.ticks(pos), Some(p));
+            }
         }
     }
 }
