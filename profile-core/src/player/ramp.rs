@@ -1,6 +1,6 @@
 //! A ramp to play, and positions along it.
 
-use super::runs::{RunList, RunState, place, run_at};
+use super::runs::{Placed, RunList, RunState, place, place_beside, run_at};
 use crate::base::timer::TableWord;
 use crate::table::runs::{
     Expand, FRACTION_MASK, IndexedRuns, LinearRun, RUN_FRACTION_BITS, RUN_START_FRACTION, RunIndex,
@@ -218,14 +218,18 @@ impl Cursor {
 
     /// The cursor at step `pos` of an indexed ramp, placed by [`place`].
     fn indexed(index: IndexedRuns<'_>, pos: u32) -> Option<Cursor> {
-        let at = place(index.runs(), pos)?;
-        Some(Cursor {
+        place(index.runs(), pos).map(|at| Cursor::placed(pos, at))
+    }
+
+    /// The cursor at step `pos`, placed there through the index.
+    fn placed(pos: u32, at: Placed<'_>) -> Cursor {
+        Cursor {
             pos,
             entry: at.entry,
             within: at.within,
             frac: at.frac,
             interval: at.interval,
-        })
+        }
     }
 
     /// The cursor at `pos`: on runs moved there from `hint` (a cursor on
@@ -244,14 +248,20 @@ impl Cursor {
                 Some(c)
             }
             // Indexed: within the hint's run in closed form, else by the
-            // index.
-            (Some(mut c), Ramp::Indexed(index))
+            // index, the runs beside the hint's first (a stretch's cursor
+            // stands at the run after the one it plays).
+            (Some(mut c), Ramp::Indexed(index)) => {
                 if pos >= c.pos - c.within
                     && run_at(index.runs(), c.entry)
-                        .is_some_and(|r| pos - (c.pos - c.within) < u32::from(r.count)) =>
-            {
-                c.seek_runs(index.runs(), pos);
-                Some(c)
+                        .is_some_and(|r| pos - (c.pos - c.within) < u32::from(r.count))
+                {
+                    c.seek_runs(index.runs(), pos);
+                    return Some(c);
+                }
+                match place_beside(index.runs(), pos, c.entry) {
+                    Some(at) => Some(Cursor::placed(pos, at)),
+                    None => Cursor::at(ramp, pos),
+                }
             }
             _ => Cursor::at(ramp, pos),
         }

@@ -47,6 +47,21 @@ pub(crate) fn place(runs: &[IndexedRun], pos: u32) -> Option<Placed<'_>> {
         [.., last] if last.step <= pos => end_run(runs, runs.len() - 1, pos)?,
         _ => run_holding(runs, pos)?,
     };
+    Some(placed(entry, run, decoded, pos))
+}
+
+/// Step `pos` if the run after run `near` or the one before holds it
+/// (a step near one placed before), placed as [`place`] places it.
+pub(crate) fn place_beside(runs: &[IndexedRun], pos: u32, near: u32) -> Option<Placed<'_>> {
+    let near = near as usize;
+    let (entry, run, decoded) = end_run(runs, near.wrapping_add(1), pos)
+        .or_else(|| end_run(runs, near.wrapping_sub(1), pos))?;
+    Some(placed(entry, run, decoded, pos))
+}
+
+/// Step `pos` of run `entry`, `run` (decoded), which holds it.
+#[inline(always)]
+fn placed(entry: u32, run: &IndexedRun, decoded: LinearRun, pos: u32) -> Placed<'_> {
     let within = pos - run.step;
     let (frac, interval) = ahead(
         u32::from(run.frac),
@@ -54,14 +69,14 @@ pub(crate) fn place(runs: &[IndexedRun], pos: u32) -> Option<Placed<'_>> {
         decoded.add as u32,
         within,
     );
-    Some(Placed {
+    Placed {
         entry,
         run,
         decoded,
         within,
         frac,
         interval,
-    })
+    }
 }
 
 /// Run `entry` of `runs`, decoded, if it holds step `pos`.
