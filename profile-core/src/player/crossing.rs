@@ -174,7 +174,11 @@ impl<W: TableWord> Sides<'_, '_, W> {
         from: u32,
         n: u32,
     ) -> Option<u32> {
-        let (Some(mut a), Some(mut d)) = (RunWalk::at(a, q), RunWalk::at(d, r - 1 - from)) else {
+        let a = match self.read_at(q) {
+            Some(c) => RunWalk::from_cursor(a, c),
+            None => RunWalk::at(a, q),
+        };
+        let (Some(mut a), Some(mut d)) = (a, RunWalk::at(d, r - 1 - from)) else {
             return Some(r);
         };
         let (to, mut j) = (from + n, from);

@@ -177,6 +177,7 @@ mod tests {
             tops,
             recent: core::cell::Cell::new([None; 2]),
             crossed: core::cell::Cell::new(None),
+            read_a: core::cell::Cell::new(None),
         }
     }
 

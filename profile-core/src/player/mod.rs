@@ -224,6 +224,7 @@ macro_rules! sides {
             tops: &$player.tops,
             recent: core::cell::Cell::new([None; 2]),
             crossed: core::cell::Cell::new(None),
+            read_a: core::cell::Cell::new(None),
         }
     };
 }

@@ -207,6 +207,10 @@ pub(crate) struct Sides<'t, 'a, W> {
     /// Where a crossing's walk on an indexed deceleration ramp stood when
     /// it found the crossing.
     pub(crate) crossed: Cell<Option<Cursor>>,
+    /// The cursor at the last position of an indexed acceleration ramp
+    /// [`Sides::a`] read: the crossing's walk and a plan's stretch begin
+    /// there or near.
+    pub(crate) read_a: Cell<Option<Cursor>>,
 }
 
 impl<'a, W: TableWord> Sides<'_, 'a, W> {
@@ -215,7 +219,9 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
             return ticks_at(periods, pos).unwrap_or(0);
         }
         if let Ramp::Indexed(index) = self.accel {
-            return RunWalk::at(index.runs(), pos).map_or(0, |w| w.ticks());
+            let walk = RunWalk::at(index.runs(), pos);
+            self.read_a.set(walk.map(|w| w.cursor()));
+            return walk.map_or(0, |w| w.ticks());
         }
         self.cursor(false, pos)
             .map_or(0, |c| c.period(&self.accel).into_ticks())
@@ -251,6 +257,12 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
             self.recent.set(recent);
         }
         c
+    }
+
+    /// The cursor at `pos` of an indexed acceleration ramp if
+    /// [`Sides::a`] read there last.
+    pub(crate) fn read_at(&self, pos: u32) -> Option<Cursor> {
+        self.read_a.get().filter(|c| c.pos == pos)
     }
 
     /// A cursor to begin a search on each ramp from: the one placed last.

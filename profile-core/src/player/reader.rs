@@ -237,6 +237,18 @@ impl<'a> RunWalk<'a> {
         })
     }
 
+    /// At `cursor`'s step of `runs` (a cursor on them); `None` if its run
+    /// is not there.
+    pub(crate) fn from_cursor(runs: &'a [IndexedRun], cursor: Cursor) -> Option<Self> {
+        let run = runs.get(cursor.entry as usize)?;
+        Some(RunWalk {
+            read: RunRead::keep(runs, cursor.entry, run, LinearRun::decode(&run.words)),
+            within: cursor.within,
+            frac: cursor.frac,
+            interval: cursor.interval,
+        })
+    }
+
     /// The cursor at the step it stands at.
     pub(crate) fn cursor(&self) -> Cursor {
         Cursor {
@@ -445,7 +457,8 @@ mod tests {
         /// expansions of the runs (`Expand`, step by step from the first
         /// run) have the deceleration side's period not shorter than the
         /// acceleration side's, and stand where the index places those
-        /// steps in closed form.
+        /// steps in closed form; a walk made from a walk's cursor stands
+        /// where it stood.
         #[test]
         fn walks_compared_in_one_loop_stop_as_the_expansions_say(
             a in any_runs(),
@@ -475,6 +488,10 @@ mod tests {
             prop_assert_eq!(state(&wd), state(&RunWalk::at(d_runs, dp - k).unwrap()));
             prop_assert_eq!(wa.ticks(), a_steps[a_at(k) as usize]);
             prop_assert_eq!(wd.ticks(), d_steps[(dp - k) as usize]);
+            // A walk made from its cursor stands where it stood.
+            let again = RunWalk::from_cursor(a_runs, wa.cursor()).unwrap();
+            prop_assert_eq!(state(&again), state(&wa));
+            prop_assert_eq!(again.cursor().pos, wa.cursor().pos);
         }
 
         /// What the index tells of the steps against a period holds at
