@@ -298,10 +298,16 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
     ) -> Stretch<'a, W> {
         let ramp = if decel { &self.decel } else { &self.accel };
         // A per-step table: one run, made now; else a cursor, read as the
-        // stretch plays.
+        // stretch plays (on an indexed acceleration ramp, the one `a` left
+        // at `pos` if it read there last).
         let source = match ramp.per_step() {
             Some(periods) => Run::over(periods, pos, dir, count).map_or(Source::Taken, Source::Run),
-            None => Source::At(self.cursor(decel, pos).unwrap_or(Cursor::ZERO)),
+            None => Source::At(
+                self.read_at(pos)
+                    .filter(|_| !decel)
+                    .or_else(|| self.cursor(decel, pos))
+                    .unwrap_or(Cursor::ZERO),
+            ),
         };
         Stretch {
             source,
