@@ -381,7 +381,6 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         if let Some(d) = self.decel.per_step() {
             return search::last_not_shorter(|pos| ticks_at(d, pos).unwrap_or(0), last, current);
         }
-        // Probes near each other: one cursor moves between them.
         let mut decel = Reader::new(&self.decel, self.tops[1]);
         if let (Reader::Indexed(read), true) = (&mut decel, current > 0) {
             // The steps the index tells of are not read: the bisection's
@@ -401,6 +400,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             }
             return entry;
         }
+        // Probes near each other: one cursor moves between them.
         search::last_not_shorter(|pos| decel.ticks(pos).unwrap_or(0), last, current)
     }
 
