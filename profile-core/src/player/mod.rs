@@ -81,7 +81,7 @@ use ramp::{Cursor, ticks_at};
 pub use rated::Rated;
 #[cfg(feature = "fugit")]
 pub use rated::{OffsetMismatch, Timed};
-use reader::Reader;
+use reader::{Reader, RunRead};
 use runs::RunState;
 
 /// Plays moves from an acceleration ramp and a deceleration ramp.
@@ -366,41 +366,59 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// the stop plays first put in `at`, if given, where the search has
     /// it at hand.
     fn stop_steps_at(&self, current: u32, at: Option<&mut Option<Cursor>>) -> u32 {
-        if current == 0 || self.period_dec(0) < current {
+        if current == 0 {
             return 0;
         }
-        self.entry_point(current, at) + 1
+        if let Ramp::Indexed(index) = self.decel {
+            return self.stop_steps_indexed(RunRead::new(index.runs()), current, at);
+        }
+        if self.period_dec(0) < current {
+            return 0;
+        }
+        self.entry_point(current) + 1
+    }
+
+    /// [`Player::stop_steps_at`] on an indexed deceleration ramp, read by
+    /// `read`: the steps the index tells of against `current` (not 0) are
+    /// not read, so that the bisection's probes and its answer are those
+    /// of [`Player::entry_point`], in fewer reads.
+    fn stop_steps_indexed(
+        &self,
+        mut read: RunRead<'_>,
+        current: u32,
+        at: Option<&mut Option<Cursor>>,
+    ) -> u32 {
+        let (long_below, short_from) = read.sure(current, self.decel_slack);
+        // The slowest entry faster than `current`: at rest now.
+        if short_from == 0 || (long_below == 0 && read.read(0) < current) {
+            return 0;
+        }
+        let entry = search::last_not_shorter(
+            |pos| match pos {
+                _ if pos >= short_from => 0,
+                _ if pos < long_below => current,
+                _ => read.read(pos),
+            },
+            self.decel_last,
+            current,
+        );
+        if let Some(at) = at {
+            *at = read.cursor(entry);
+        }
+        entry + 1
     }
 
     /// The largest position of the deceleration ramp whose period is not
     /// faster than `current`: periods fall along the ramp, so a binary
     /// search, then a bounded look past the boundary for the ties of
     /// diffused tables.
-    fn entry_point(&self, current: u32, at: Option<&mut Option<Cursor>>) -> u32 {
+    fn entry_point(&self, current: u32) -> u32 {
         let last = self.decel_last;
         if let Some(d) = self.decel.per_step() {
             return search::last_not_shorter(|pos| ticks_at(d, pos).unwrap_or(0), last, current);
         }
-        let mut decel = Reader::new(&self.decel, self.tops[1]);
-        if let (Reader::Indexed(read), true) = (&mut decel, current > 0) {
-            // The steps the index tells of are not read: the bisection's
-            // probes and its answer are the same.
-            let (long_below, short_from) = read.sure(current, self.decel_slack);
-            let entry = search::last_not_shorter(
-                |pos| match pos {
-                    _ if pos >= short_from => 0,
-                    _ if pos < long_below => current,
-                    _ => read.read(pos),
-                },
-                last,
-                current,
-            );
-            if let Some(at) = at {
-                *at = read.cursor(entry);
-            }
-            return entry;
-        }
         // Probes near each other: one cursor moves between them.
+        let mut decel = Reader::new(&self.decel, self.tops[1]);
         search::last_not_shorter(|pos| decel.ticks(pos).unwrap_or(0), last, current)
     }
 
