@@ -5,7 +5,7 @@
 
 use super::plan::Sides;
 use super::ramp::{Cursor, Ramp};
-use super::reader::{Reader, RunWalk};
+use super::reader::{Reader, RunRead, RunWalk};
 use super::search;
 use crate::base::timer::TableWord;
 use crate::table::runs::IndexedRun;
@@ -65,6 +65,18 @@ impl<W: TableWord> Sides<'_, '_, W> {
         if dir <= 0 {
             // Held from `walked_down` on: one period to compare with.
             let held = self.a(self.walked_by(p, dir, walked_down));
+            if let Ramp::Indexed(index) = self.decel {
+                // The last step of the ramp at least that long, in closed
+                // form; the crossing's cursor where it stands.
+                let mut read = RunRead::new(index.runs());
+                let top = (r - 1).checked_sub(walked_down);
+                let Some(pos) = top.and_then(|top| read.last_at_least(top, held, self.decel_slack))
+                else {
+                    return r;
+                };
+                self.crossed.set(read.cursor(pos));
+                return r - 1 - pos;
+            }
             let from = Reader::new(&self.decel, d).past_shorter(r, walked_down, r, slack, held);
             return self.scan(p, r, from, r - from).unwrap_or(r);
         }

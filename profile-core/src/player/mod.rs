@@ -66,6 +66,7 @@ mod reader;
 mod runs;
 mod search;
 mod step;
+mod threshold;
 
 use core::marker::PhantomData;
 

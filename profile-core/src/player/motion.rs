@@ -112,12 +112,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
                 // ruled out where the period is short by more than the
                 // slack.
                 let mut accel = RunRead::new(index.runs());
-                let short = |t: u32| u64::from(t) + u64::from(slack) < u64::from(ticks);
-                let end = last.saturating_add(1);
-                let (long, short) = accel.bracket(0, end, short);
-                let lo = if short < end { last - short + 1 } else { 0 };
-                let hi = if long > 0 { last - long } else { end };
-                search::last_at_least_in(|pos| accel.ticks(pos), lo, hi, last, slack, ticks)
+                accel.last_at_least(last, ticks, slack).unwrap_or(0)
             }
             (None, _) => {
                 let mut accel = Reader::new(&self.accel, self.tops[0]);

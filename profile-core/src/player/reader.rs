@@ -3,6 +3,7 @@
 use super::ramp::{Cursor, Ramp, ticks_at};
 use super::runs::{place, run_holding};
 use super::search::{self, faster_by};
+use super::threshold;
 use crate::base::timer::TableWord;
 use crate::table::runs::{IndexedRun, LinearRun, ahead, behind, period};
 
@@ -162,6 +163,62 @@ impl<'a> RunRead<'a> {
             *self = RunRead::keep(runs, entry as u32, run, decoded);
         }
         (long_below, short_from)
+    }
+
+    /// The last step up to `top` whose period is at least `ticks`, `slack`
+    /// the ramp's ([`search::slack`]); `None` when no step is. The run that
+    /// holds it is kept ([`RunRead::cursor`]). Exactly the step a walk down
+    /// from `top` finds, on runs in any order: a bisection over the runs'
+    /// first steps finds a run past which no step is that long (its first
+    /// period more than `slack` short, or past `top`), and the runs before
+    /// it are asked in turn, last first, each in closed form
+    /// ([`threshold::last_at_least`]).
+    pub(crate) fn last_at_least(&mut self, top: u32, ticks: u32, slack: u32) -> Option<u32> {
+        let runs = self.runs;
+        let (mut a, mut b) = (0, runs.len());
+        while a < b {
+            let mid = a + (b - a) / 2;
+            let Some(run) = runs.get(mid) else {
+                break;
+            };
+            // A run of no steps tells nothing: its first step is the next
+            // run's.
+            let short = run.step > top
+                || (run.words[0] > 0 && {
+                    let decoded = LinearRun::decode(&run.words);
+                    faster_by(period(u32::from(run.frac), decoded.interval), slack, ticks)
+                });
+            if short {
+                b = mid;
+            } else {
+                a = mid + 1;
+            }
+        }
+        while a > 0 {
+            a -= 1;
+            let Some(run) = runs.get(a) else {
+                break;
+            };
+            let decoded = LinearRun::decode(&run.words);
+            let Some(last) = u32::from(decoded.count).checked_sub(1) else {
+                continue;
+            };
+            let within = last.min(top - run.step);
+            let (frac, add) = (u32::from(run.frac), decoded.add as u32);
+            let found = threshold::last_at_least(frac, decoded.interval, add, within, ticks)
+                .unwrap_or_else(|| {
+                    // Out of the closed form's range: step by step.
+                    (0..=within).rev().find(|&k| {
+                        let (f, i) = ahead(frac, decoded.interval, add, k);
+                        period(f, i) >= ticks
+                    })
+                });
+            if let Some(k) = found {
+                *self = RunRead::keep(runs, a as u32, run, decoded);
+                return Some(run.step + k);
+            }
+        }
+        None
     }
 
     /// [`RunRead::ticks`], 0 past the ramp's end, in a call of its own:
