@@ -302,7 +302,8 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     pub(crate) fn begin(&mut self, steps: u32) {
         self.endless = false;
         self.extended = 0;
-        let empty = self.accel.period_at(0).is_none() || self.decel.period_at(0).is_none();
+        // A ramp of no steps has no top.
+        let empty = self.tops[0].is_none() || self.tops[1].is_none();
         if empty || steps == 0 {
             self.plan.clear();
             self.follow(0);

@@ -338,6 +338,39 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
         p
     }
 
+    /// Lengthens the plan's last stretch by `n` steps if it walks the
+    /// acceleration ramp `dir` and ends where a walk from `p` begins: a
+    /// walk out of reach of the deceleration ramp and the one within it
+    /// are one stretch, placed once.
+    fn extend(&self, plan: &mut Plan<'a, W>, p: u32, dir: i8, n: u32) -> bool {
+        let Some(last) = plan
+            .len
+            .checked_sub(1)
+            .and_then(|i| plan.stretches.get_mut(i))
+        else {
+            return false;
+        };
+        if last.decel || last.dir != dir || last.acc_dir != dir || last.read_at(last.count) != p {
+            return false;
+        }
+        let count = last.count + n;
+        match last.source {
+            // A per-step table's run, made again.
+            Source::Run(_) => {
+                let run = self.accel.per_step();
+                match run.and_then(|periods| Run::over(periods, last.start, dir, count)) {
+                    Some(run) => last.source = Source::Run(run),
+                    None => return false,
+                }
+            }
+            // A cursor at its first step.
+            Source::At(_) => {}
+            Source::Taken => return false,
+        }
+        (last.count, last.total) = (count, count);
+        true
+    }
+
     /// Plans `r` steps of a move that is not decelerating, the acceleration
     /// side at `p`, into `plan` (in place: a plan is large to copy).
     pub(crate) fn plan(&self, plan: &mut Plan<'a, W>, mut p: u32, mut r: u32) {
@@ -399,7 +432,17 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
     /// that remain, is not faster; then the deceleration ramp plays to the end.
     fn within_reach(&self, plan: &mut Plan<'a, W>, p: u32, r: u32) {
         let j = self.crossing(p, r);
-        let p = self.walk(plan, p, j);
+        // The walk's steps towards the cruise position go on the walk
+        // planned out of reach, if that one ends here.
+        let dir = self.toward(p).1;
+        let walked = j.min(p.abs_diff(self.cruise));
+        let p = match walked > 0 && self.extend(plan, p, dir, walked) {
+            true => {
+                let q = self.walked_by(p, dir, walked);
+                self.walk(plan, q, j - walked)
+            }
+            false => self.walk(plan, p, j),
+        };
         if j < r {
             let after = r - 1 - j;
             plan.push(self.stretch(true, after, -1, after + 1, p, 0));
