@@ -162,10 +162,10 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             self.start(steps);
             return true;
         }
-        // As `steps_to_stop`, where the move stands read once.
+        // As `steps_to_stop`, where the move stands read once; a move
+        // made no shorter can always end where it would have.
         let (acc, decelerating, current) = self.now();
-        let needed = self.stop_steps(current);
-        if steps < needed.min(remaining) {
+        if steps < remaining && steps < self.stop_steps(current).min(remaining) {
             return false;
         }
         self.endless = false;
