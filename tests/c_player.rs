@@ -160,7 +160,8 @@ fn runs(rng: &mut Lcg) -> Vec<[u16; 5]> {
         .collect()
 }
 
-/// Sequences that reach what random ones rarely do: a stop right after a
+/// Sequences that reach what random ones rarely do: a stop whose entry
+/// a bisection would not find; a stop right after a
 /// step whose remainder was `0xFFFF` before it; a stop on a plateau of more
 /// than 16 equal entries; a cruise of more than 65 535 steps; a cruise
 /// change one step before the acceleration table runs faster than the
@@ -171,6 +172,13 @@ fn edge_cases() -> Vec<Case> {
     plateau.extend([800; 30]);
     plateau.push(700);
     let mut out = Vec::new();
+    // A stop at 800 ticks on a table that is not ordered: its last entry
+    // of 800 is its fifth, where a bisection finds the second.
+    out.push(Case {
+        accel: Table::U16(vec![900, 800, 700, 800, 800, 600]),
+        decel: None,
+        ops: vec![Op::Start(20), Op::Play(2), Op::Stop, Op::Play(10)],
+    });
     for k in 1..6 {
         out.push(Case {
             accel: remainder.clone(),

@@ -214,6 +214,20 @@ fn stop_enters_the_deceleration_table_at_the_current_speed() {
     assert_eq!(periods, [1000, 800, 600, 500, 700, 1000, 1500, 2000]);
 }
 
+/// On a table that is not ordered slow to fast, a stop enters at the last
+/// entry not shorter than the current period (a walk down from the top
+/// finds it), not at the first boundary a bisection meets.
+#[test]
+fn stop_enters_at_the_last_entry_not_shorter() {
+    let table = [900u16, 800, 700, 800, 800, 600];
+    let mut player = Player::new(Ramp::steps(&table));
+    player.start(20);
+    let mut periods = vec![player.next_period().unwrap(), player.next_period().unwrap()];
+    player.stop();
+    periods.extend(std::iter::from_fn(|| player.next_period()));
+    assert_eq!(periods, [900, 800, 800, 800, 700, 800, 900]);
+}
+
 /// Tables rounded by diffusion tie by a tick near the top (`..., 156, 157,
 /// 156`): a long move must still play them exactly as written, up and down,
 /// so their pulse edges keep their half-tick accuracy.

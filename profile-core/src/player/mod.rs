@@ -327,8 +327,8 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     }
 
     /// Decelerates from the current speed to rest: the deceleration ramp is
-    /// entered at its entry nearest the current period that is not faster,
-    /// and the move ends when the ramp's slowest entry has played (at once,
+    /// entered at its last entry whose period is not shorter than the
+    /// current one (the fastest not faster), and the move ends when the ramp's slowest entry has played (at once,
     /// when the motor already runs slower than that entry). A stop never
     /// lengthens a move.
     pub fn stop(&mut self) {
@@ -357,8 +357,8 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     }
 
     /// The steps a stop plays when the period of the last step played is
-    /// `current`: from the deceleration ramp's entry nearest it that is not
-    /// faster down to rest; 0 before the first step (`current` 0) or when
+    /// `current`: from the deceleration ramp's last entry not shorter than
+    /// it down to rest; 0 before the first step (`current` 0) or when
     /// the motor already runs slower than the ramp's slowest entry.
     fn stop_steps(&self, current: u32) -> u32 {
         self.stop_steps_at(current, None)
@@ -366,62 +366,49 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
 
     /// [`Player::stop_steps`], the cursor at the deceleration ramp's entry
     /// the stop plays first put in `at`, if given, where the search has
-    /// it at hand.
+    /// it at hand. The entry is the last whose period is not shorter than
+    /// `current`, exactly as a walk down from the ramp's top finds it: a
+    /// search past the steps the ramp's slack rules out, then on an
+    /// indexed ramp each run in closed form, else the steps one by one.
     fn stop_steps_at(&self, current: u32, at: Option<&mut Option<Cursor>>) -> u32 {
         if current == 0 {
             return 0;
         }
+        let (last, slack) = (self.decel_last, self.decel_slack);
         if let Ramp::Indexed(index) = self.decel {
-            return self.stop_steps_indexed(RunRead::new(index.runs()), current, at);
+            let mut read = RunRead::new(index.runs());
+            if read.ticks(0).is_none_or(|t| t < current) {
+                return 0;
+            }
+            let entry = read.last_at_least(last, current, slack).unwrap_or(0);
+            if let Some(at) = at {
+                *at = read.cursor(entry);
+            }
+            return entry + 1;
         }
         if self.period_dec(0) < current {
             return 0;
         }
-        self.entry_point(current) + 1
-    }
-
-    /// [`Player::stop_steps_at`] on an indexed deceleration ramp, read by
-    /// `read`: the steps the index tells of against `current` (not 0) are
-    /// not read, so that the bisection's probes and its answer are those
-    /// of [`Player::entry_point`], in fewer reads.
-    fn stop_steps_indexed(
-        &self,
-        mut read: RunRead<'_>,
-        current: u32,
-        at: Option<&mut Option<Cursor>>,
-    ) -> u32 {
-        let (long_below, short_from) = read.sure(current, self.decel_slack);
-        // The slowest entry faster than `current`: at rest now.
-        if short_from == 0 || (long_below == 0 && read.read(0) < current) {
-            return 0;
-        }
-        let entry = search::last_not_shorter(
-            |pos| match pos {
-                _ if pos >= short_from => 0,
-                _ if pos < long_below => current,
-                _ => read.read(pos),
-            },
-            self.decel_last,
-            current,
-        );
-        if let Some(at) = at {
-            *at = read.cursor(entry);
-        }
+        let entry = match self.decel.per_step() {
+            Some(d) => search::last_at_least(|pos| ticks_at(d, pos), last, slack, current),
+            None => {
+                // Probes near each other: one cursor moves between them,
+                // and walks down from the last.
+                let mut at = self.tops[1];
+                let decel = &self.decel;
+                let mut read = |pos| {
+                    at = Cursor::near(at, decel, pos);
+                    at.map(|c| c.period(decel).into_ticks())
+                };
+                let k = search::past(0, last.saturating_add(1), &mut |k| {
+                    read(last - k).is_some_and(|p| search::faster_by(p, slack, current))
+                });
+                let mut c = Cursor::near(at, decel, last.saturating_sub(k)).unwrap_or(Cursor::ZERO);
+                while c.period(decel).into_ticks() < current && c.backward(decel) {}
+                c.pos
+            }
+        };
         entry + 1
-    }
-
-    /// The largest position of the deceleration ramp whose period is not
-    /// faster than `current`: periods fall along the ramp, so a binary
-    /// search, then a bounded look past the boundary for the ties of
-    /// diffused tables.
-    fn entry_point(&self, current: u32) -> u32 {
-        let last = self.decel_last;
-        if let Some(d) = self.decel.per_step() {
-            return search::last_not_shorter(|pos| ticks_at(d, pos).unwrap_or(0), last, current);
-        }
-        // Probes near each other: one cursor moves between them.
-        let mut decel = Reader::new(&self.decel, self.tops[1]);
-        search::last_not_shorter(|pos| decel.ticks(pos).unwrap_or(0), last, current)
     }
 
     fn period_dec(&self, pos: u32) -> u32 {

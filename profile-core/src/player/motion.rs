@@ -122,7 +122,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     }
 
     /// Steps a [`Player::stop`] now would play: the deceleration ramp from
-    /// its entry nearest the current period that is not faster, or the
+    /// its last entry not shorter than the current period, or the
     /// steps that remain when fewer. 0 at rest, before the first step, and
     /// when the motor already runs slower than the ramp's slowest entry.
     pub fn steps_to_stop(&self) -> u32 {

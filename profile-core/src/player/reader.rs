@@ -119,52 +119,6 @@ impl<'a> RunRead<'a> {
         (lo, hi)
     }
 
-    /// What the index tells of every step's period against `current`,
-    /// `slack` the ramp's ([`search::slack`]), no run entered: steps
-    /// before the first of the returned pair (0: none) are not shorter
-    /// than `current`, and steps from the second on (`u32::MAX`: none)
-    /// are shorter. A step's period is at most `slack` above any
-    /// period before it, so a run whose first period is `current + slack`
-    /// or more has no step before it shorter than `current`, and a run
-    /// whose first period is more than `slack` below `current` has none
-    /// after it as long. The runs' first steps are probed by bisection
-    /// towards `current`; the last run probed not shorter is kept, where
-    /// the steps the index cannot tell lie.
-    pub(crate) fn sure(&mut self, current: u32, slack: u32) -> (u32, u32) {
-        let runs = self.runs;
-        let (mut a, mut b) = (0, runs.len());
-        let (mut long_below, mut short_from, mut kept) = (0, u32::MAX, None);
-        while a < b {
-            let mid = a + (b - a) / 2;
-            let Some(run) = runs.get(mid) else {
-                break;
-            };
-            let decoded = LinearRun::decode(&run.words);
-            if decoded.count == 0 {
-                // Its first step is the next run's: nothing told.
-                a = mid + 1;
-                continue;
-            }
-            let t = period(u32::from(run.frac), decoded.interval);
-            if t >= current {
-                if t >= current.saturating_add(slack) {
-                    long_below = run.step.saturating_add(1);
-                }
-                kept = Some((mid, run, decoded));
-                a = mid + 1;
-            } else {
-                if faster_by(t, slack, current) {
-                    short_from = run.step;
-                }
-                b = mid;
-            }
-        }
-        if let Some((entry, run, decoded)) = kept {
-            *self = RunRead::keep(runs, entry as u32, run, decoded);
-        }
-        (long_below, short_from)
-    }
-
     /// The last step up to `top` whose period is at least `ticks`, `slack`
     /// the ramp's ([`search::slack`]); `None` when no step is. The run that
     /// holds it is kept ([`RunRead::cursor`]). Exactly the step a walk down
@@ -219,13 +173,6 @@ impl<'a> RunRead<'a> {
             }
         }
         None
-    }
-
-    /// [`RunRead::ticks`], 0 past the ramp's end, in a call of its own:
-    /// for a search that reads at several places, each a call.
-    #[inline(never)]
-    pub(crate) fn read(&mut self, pos: u32) -> u32 {
-        self.ticks(pos).unwrap_or(0)
     }
 
     /// The cursor at step `pos` if the run kept holds it.
@@ -551,14 +498,16 @@ mod tests {
             prop_assert_eq!(again.cursor().pos, wa.cursor().pos);
         }
 
-        /// What the index tells of the steps against a period holds at
-        /// every step of the expansion, on runs in any order (their slack
-        /// the expansion's own, each period's rise over the shortest
-        /// before it); the reader reads every step as the expansion after
-        /// it, and its cursor at every step of the run kept is the index's.
+        /// The last step up to any top whose period is at least one asked
+        /// (near a period the ramp plays, or any) is the one a walk down
+        /// the expansion of the runs (`Expand`, step by step from the
+        /// first run) finds, on runs in any order, their slack computed
+        /// here from the expansion; the reader's cursor there is the
+        /// index's.
         #[test]
-        fn what_the_index_tells_holds_at_every_step(
+        fn the_last_step_at_least_a_period_is_the_expansions(
             runs in prop_oneof![any_runs(), falling_runs(4000)],
+            top in any::<prop::sample::Index>(),
             at in any::<prop::sample::Index>(),
             offset in -3i64..=3,
         ) {
@@ -571,23 +520,16 @@ mod tests {
                 let shortest = steps[..i].iter().copied().min().unwrap_or(u32::MAX);
                 slack = slack.max(p.saturating_sub(shortest));
             }
-            let current = (i64::from(steps[at.index(steps.len())]) + offset).max(1) as u32;
+            let top = top.index(steps.len()) as u32;
+            let asked = (i64::from(steps[at.index(steps.len())]) + offset).max(0) as u32;
+            let walk = (0..=top).rev().find(|&k| steps[k as usize] >= asked);
             let mut read = RunRead::new(index.indexed().runs());
-            let (long_below, short_from) = read.sure(current, slack);
-            for (pos, &p) in (0u32..).zip(&steps) {
-                if pos < long_below {
-                    prop_assert!(p >= current, "step {pos}: {p} < {current}, told not shorter");
-                }
-                if pos >= short_from {
-                    prop_assert!(p < current, "step {pos}: {p} >= {current}, told shorter");
-                }
-                if let Some(c) = read.cursor(pos) {
-                    let placed = Cursor::at(&Ramp::<u16>::Indexed(index.indexed()), pos).unwrap();
-                    prop_assert_eq!((c.entry, c.within, c.frac, c.interval), (placed.entry, placed.within, placed.frac, placed.interval));
-                }
-            }
-            for (pos, &p) in (0u32..).zip(&steps) {
-                prop_assert_eq!(read.ticks(pos), Some(p));
+            let found = read.last_at_least(top, asked, slack);
+            prop_assert_eq!(found, walk);
+            if let Some(pos) = found {
+                let c = read.cursor(pos).unwrap();
+                let placed = Cursor::at(&Ramp::<u16>::Indexed(index.indexed()), pos).unwrap();
+                prop_assert_eq!((c.entry, c.within, c.frac, c.interval), (placed.entry, placed.within, placed.frac, placed.interval));
             }
         }
     }

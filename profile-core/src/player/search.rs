@@ -79,35 +79,6 @@ pub(crate) fn past_shorter<W: TableWord>(
     lo + a as u32
 }
 
-/// The largest position up to `last` whose period (`read`, in ticks) is
-/// not shorter than `current`, on a ramp whose periods fall but for ties
-/// and the slack of diffused tables: a bisection (position 0 taken as not
-/// shorter), then a look of at most 16 steps past the boundary for the
-/// ties.
-#[inline(always)]
-pub(crate) fn last_not_shorter(mut read: impl FnMut(u32) -> u32, last: u32, current: u32) -> u32 {
-    let (mut lo, mut hi) = (0u32, last);
-    if read(hi) >= current {
-        lo = hi;
-    } else {
-        while hi - lo > 1 {
-            let mid = lo + (hi - lo) / 2;
-            if read(mid) >= current {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
-    }
-    for _ in 0..16 {
-        if lo >= last || read(lo + 1) < current {
-            break;
-        }
-        lo += 1;
-    }
-    lo
-}
-
 /// The last position up to `last` whose period (`read`, in ticks) is not
 /// shorter than `ticks`, 0 when none is; `slack` the ramp's
 /// ([`slack`]). Exactly the first such position a walk down from `last`

@@ -247,8 +247,8 @@ impl<'a, W: TableWord> Reference<'a, W> {
     }
 
     /// Decelerates from the current speed to rest: the deceleration ramp is
-    /// entered at its entry nearest the current period that is not faster,
-    /// and the move ends when the ramp's slowest entry has played (at once,
+    /// entered at its last entry whose period is not shorter than the
+    /// current one, and the move ends when the ramp's slowest entry has played (at once,
     /// when the motor already runs slower than that entry). A stop never
     /// lengthens a move.
     pub fn stop(&mut self) {
@@ -260,37 +260,18 @@ impl<'a, W: TableWord> Reference<'a, W> {
             self.remaining = 0;
             return;
         }
-        // Largest position whose period is not faster than the current one:
-        // periods fall along the ramp, so search for the boundary.
         let current = self.last_period;
         if self.period_dec(0) < current {
             // Already slower than the ramp's slowest entry: at rest now.
             self.remaining = 0;
             return;
         }
-        let (mut lo, mut hi) = (0u32, self.decel_last);
-        if self.period_dec(hi) >= current {
-            lo = hi;
-        } else {
-            while hi - lo > 1 {
-                let mid = lo + (hi - lo) / 2;
-                if self.period_dec(mid) >= current {
-                    lo = mid;
-                } else {
-                    hi = mid;
-                }
-            }
+        // The last position whose period is not shorter than the current
+        // one: a walk down from the top.
+        let mut lo = self.decel_last;
+        while lo > 0 && self.period_dec(lo) < current {
+            lo -= 1;
         }
-        // Tables rounded by diffusion may tie by a tick: take the last entry
-        // of the run that still qualifies (a bounded look past the boundary).
-        let mut probe = lo;
-        for _ in 0..16 {
-            if probe >= self.decel_last || self.period_dec(probe + 1) < current {
-                break;
-            }
-            probe += 1;
-        }
-        let lo = probe;
         let needed = lo + 1;
         if needed < self.remaining {
             self.remaining = needed;

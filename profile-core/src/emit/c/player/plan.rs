@@ -180,32 +180,28 @@ static uint32_t @T@_last_period_(const @T@_t *p)
     return @T@_last_(p);
 }
 
-/* The largest position of the deceleration table whose period is not faster
- * than `current`: a binary search, then a bounded look past the boundary for
- * the ties of diffused tables. */
+/* The last position of the deceleration table whose period is not shorter
+ * than `current` (0 when none is), as a walk down from its top finds it: a
+ * bisection for `k` steps below the top short by more than the table's
+ * slack (a step's period is at most that above any period before it, so
+ * every step above is short too), then a walk down from there. */
 static uint32_t @T@_entry_point_(const @T@_t *p, uint32_t current)
 {
-    uint32_t lo = 0, hi = p->decel_last, mid;
-    unsigned char k;
-    if (@T@_period_(p, 1, hi) >= current) {
-        lo = hi;
-    } else {
-        while (hi - lo > 1) {
-            mid = lo + ((hi - lo) >> 1);
-            if (@T@_period_(p, 1, mid) >= current) {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
+    uint32_t lo = 0, hi = p->decel_last + 1, mid, pos, t;
+    while (lo < hi) {
+        mid = lo + ((hi - lo) >> 1);
+        t = @T@_period_(p, 1, p->decel_last - mid);
+        if (t < current && current - t > p->decel_slack) {
+            lo = mid + 1;
+        } else {
+            hi = mid;
         }
     }
-    for (k = 0; k < 16; k++) {
-        if (lo >= p->decel_last || @T@_period_(p, 1, lo + 1) < current) {
-            break;
-        }
-        lo++;
+    pos = lo > p->decel_last ? 0 : p->decel_last - lo;
+    while (pos > 0 && @T@_period_(p, 1, pos) < current) {
+        pos--;
     }
-    return lo;
+    return pos;
 }
 
 void @T@_start(@T@_t *p, uint32_t steps)

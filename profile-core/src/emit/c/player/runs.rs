@@ -52,7 +52,7 @@ typedef struct {
     const @S@uint16_t (*accel)[5];
     const @S@uint16_t (*decel)[5];
     uint16_t accel_runs, decel_runs;
-    uint32_t accel_last, decel_last, decel_fastest, cap, cruise;
+    uint32_t accel_last, decel_last, decel_fastest, decel_slack, cap, cruise;
     unsigned char empty;
 } @T@_t;
 
@@ -490,7 +490,7 @@ pub(super) const INIT: &str = r#"void @T@_init(@T@_t *p, const @S@uint16_t (*acc
     const @S@uint16_t (*decel)[5], uint16_t decel_runs)
 {
     @T@_cursor_t c;
-    uint32_t e, steps, interval, add, x, fastest = 0;
+    uint32_t e, steps, interval, add, x, fastest = 0, slack = 0;
     uint16_t count, k, frac = 0x8000u;
     unsigned char seen = 0;
     p->accel = accel;
@@ -509,6 +509,9 @@ pub(super) const INIT: &str = r#"void @T@_init(@T@_t *p, const @S@uint16_t (*acc
             x = frac + interval;
             frac = (uint16_t)x;
             interval += add;
+            if (seen && (x >> 16) > fastest && (x >> 16) - fastest > slack) {
+                slack = (x >> 16) - fastest;
+            }
             if (!seen || (x >> 16) < fastest) {
                 fastest = x >> 16;
                 seen = 1;
@@ -517,6 +520,7 @@ pub(super) const INIT: &str = r#"void @T@_init(@T@_t *p, const @S@uint16_t (*acc
     }
     p->decel_last = steps > 0 ? steps - 1 : 0;
     p->decel_fastest = fastest;
+    p->decel_slack = slack;
     p->cap = 0xFFFFFFFFul;
     if (@T@_at_(p, 0, 0, &c)) {
         for (;;) {

@@ -39,7 +39,7 @@ typedef struct {
     const @S@@W@ *accel;
     const @S@@W@ *decel;
     uint32_t accel_len, decel_len, accel_last, decel_last;
-    uint32_t decel_fastest, cap, cruise;
+    uint32_t decel_fastest, decel_slack, cap, cruise;
     unsigned char empty;
 } @T@_t;
 
@@ -197,7 +197,7 @@ static uint32_t @T@_capped_walk_(const @T@_t *p, uint32_t pos, uint32_t far)
 pub(super) const INIT: &str = r#"void @T@_init(@T@_t *p, const @S@@W@ *accel, uint32_t accel_len,
     const @S@@W@ *decel, uint32_t decel_len)
 {
-    uint32_t i, fastest = 0;
+    uint32_t i, fastest = 0, slack = 0, v;
     p->accel = accel;
     p->decel = decel;
     p->accel_len = accel_len;
@@ -205,11 +205,16 @@ pub(super) const INIT: &str = r#"void @T@_init(@T@_t *p, const @S@@W@ *accel, ui
     p->accel_last = accel_len > 0 ? accel_len - 1 : 0;
     p->decel_last = decel_len > 0 ? decel_len - 1 : 0;
     for (i = 0; i < decel_len; i++) {
-        if (i == 0 || (uint32_t)@R@(decel + i) < fastest) {
-            fastest = @R@(decel + i);
+        v = @R@(decel + i);
+        if (i > 0 && v > fastest && v - fastest > slack) {
+            slack = v - fastest;
+        }
+        if (i == 0 || v < fastest) {
+            fastest = v;
         }
     }
     p->decel_fastest = fastest;
+    p->decel_slack = slack;
     p->cap = 0xFFFFFFFFul;
     for (i = 0; i < accel_len; i++) {
         if ((uint32_t)@R@(accel + i) < fastest) {
