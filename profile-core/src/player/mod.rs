@@ -436,6 +436,10 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
                 Some(prev) => (prev, prev.total),
                 None => return (acc, decelerating, self.before),
             },
+            // A compressed player plays every step of a stretch from the
+            // run it holds, refilled by the step that plays its first: the
+            // last step played is that run's.
+            _ if L::COMPRESSED => return (acc, decelerating, self.computed.last()),
             _ => (s, played),
         };
         (acc, decelerating, self.period_read(s, s.read_at(k - 1)))

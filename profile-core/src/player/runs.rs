@@ -144,6 +144,17 @@ pub(crate) struct RunState {
 }
 
 impl RunState {
+    /// The period of the step it played last, in ticks (one at least
+    /// played): that step's interval less the change, and a tick more
+    /// when the remainder it left is below that interval's fraction (its
+    /// sum carried). Wrapped to the word, as the step's own sum.
+    #[inline(always)]
+    pub(crate) fn last(&self) -> u32 {
+        let interval = self.interval.wrapping_sub(self.add);
+        let carried = self.frac < interval & FRACTION_MASK;
+        ((interval >> RUN_FRACTION_BITS) + u32::from(carried)) & FRACTION_MASK
+    }
+
     /// The next step's period, in ticks, or `None` when the run is played.
     #[inline(always)]
     pub(crate) fn next(&mut self) -> Option<u32> {
