@@ -36,8 +36,7 @@ impl<W: TableWord> Sides<'_, '_, W> {
             // `p` but for its slack: a deceleration step more than both
             // ramps' slack faster than that has every step before it faster
             // than the acceleration side.
-            let [_, d] = self.hints();
-            let mut d = Reader::new(&self.decel, d);
+            let mut d = self.reader(true);
             let ap = self.a(p);
             // Often the deceleration ramp is that much faster at the last
             // of those steps, and so at every one before: no search.
@@ -60,7 +59,6 @@ impl<W: TableWord> Sides<'_, '_, W> {
         // A step more than `slack` ticks short of not faster has every
         // step before it faster: the last of those is searched, and the
         // steps from there read one by one.
-        let [a, d] = self.hints();
         let dir = self.toward(p).1;
         if dir <= 0 {
             // Held from `walked_down` on: one period to compare with.
@@ -77,10 +75,12 @@ impl<W: TableWord> Sides<'_, '_, W> {
                 self.crossed.set(read.cursor(pos));
                 return r - 1 - pos;
             }
-            let from = Reader::new(&self.decel, d).past_shorter(r, walked_down, r, slack, held);
+            let from = self
+                .reader(true)
+                .past_shorter(r, walked_down, r, slack, held);
             return self.scan(p, r, from, r - from).unwrap_or(r);
         }
-        let (mut a, mut d) = (Reader::new(&self.accel, a), Reader::new(&self.decel, d));
+        let (mut a, mut d) = (self.reader(false), self.reader(true));
         let from = search::past(walked_down, r, &mut |j| match (
             d.ticks(r - 1 - j),
             a.ticks(self.walked_by(p, dir, j)),
@@ -89,6 +89,21 @@ impl<W: TableWord> Sides<'_, '_, W> {
             _ => false,
         });
         self.scan(p, r, from, r - from).unwrap_or(r)
+    }
+
+    /// A reader of the deceleration ramp (else the acceleration ramp),
+    /// its first read sought from the cursor placed last on it; an index
+    /// needs no hint, and none is copied for it.
+    fn reader(&self, decel: bool) -> Reader<'_, '_, W> {
+        let (ramp, side) = if decel {
+            (&self.decel, 1)
+        } else {
+            (&self.accel, 0)
+        };
+        match ramp {
+            Ramp::Indexed(index) => Reader::Indexed(RunRead::new(index.runs())),
+            _ => Reader::new(ramp, self.hints()[side]),
+        }
     }
 
     /// Where the acceleration side stands `j` steps after `p`.
