@@ -62,14 +62,26 @@ impl<W: TableWord> Sides<'_, '_, W> {
         let dir = self.toward(p).1;
         if dir <= 0 {
             // Held from `walked_down` on: one period to compare with.
-            let held = self.a(self.walked_by(p, dir, walked_down));
+            let q = self.walked_by(p, dir, walked_down);
+            let held = self.a(q);
             if let Ramp::Indexed(index) = self.decel {
                 // The last step of the ramp at least that long, in closed
-                // form; the crossing's cursor where it stands.
-                let mut read = RunRead::new(index.runs());
-                let top = (r - 1).checked_sub(walked_down);
-                let Some(pos) = top.and_then(|top| read.last_at_least(top, held, self.decel_slack))
-                else {
+                // form; the crossing's cursor where it stands. On one ramp
+                // both ways, no step after the held one's run is searched
+                // for before it: the held step itself is that long.
+                let (runs, top) = (index.runs(), (r - 1).checked_sub(walked_down));
+                let from = match (self.accel, self.read_at(q), top) {
+                    (Ramp::Indexed(a), Some(c), Some(top))
+                        if core::ptr::eq(a.runs(), runs) && q <= top =>
+                    {
+                        c.entry + 1
+                    }
+                    _ => 0,
+                };
+                let mut read = RunRead::new(runs);
+                let found =
+                    top.and_then(|top| read.last_at_least(top, held, self.decel_slack, from));
+                let Some(pos) = found else {
                     return r;
                 };
                 self.crossed.set(read.cursor(pos));

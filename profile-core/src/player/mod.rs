@@ -380,7 +380,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             if read.ticks(0).is_none_or(|t| t < current) {
                 return 0;
             }
-            let entry = read.last_at_least(last, current, slack).unwrap_or(0);
+            let entry = read.last_at_least(last, current, slack, 0).unwrap_or(0);
             if let Some(at) = at {
                 *at = read.cursor(entry);
             }

@@ -112,7 +112,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
                 // ruled out where the period is short by more than the
                 // slack.
                 let mut accel = RunRead::new(index.runs());
-                accel.last_at_least(last, ticks, slack).unwrap_or(0)
+                accel.last_at_least(last, ticks, slack, 0).unwrap_or(0)
             }
             (None, _) => {
                 let mut accel = Reader::new(&self.accel, self.tops[0]);

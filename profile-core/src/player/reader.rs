@@ -127,22 +127,46 @@ impl<'a> RunRead<'a> {
     /// period more than `slack` short, or past `top`), and the runs before
     /// it are asked in turn, last first, each in closed form
     /// ([`threshold::last_at_least`]).
-    pub(crate) fn last_at_least(&mut self, top: u32, ticks: u32, slack: u32) -> Option<u32> {
+    ///
+    /// The search begins at run `from` (0: the first), probing runs 1, 2,
+    /// 4, ... on from there until one is such a run, then bisecting: a
+    /// caller that knows run `from - 1` is not one is spared the probes
+    /// before it. Any `from` gives the same step.
+    pub(crate) fn last_at_least(
+        &mut self,
+        top: u32,
+        ticks: u32,
+        slack: u32,
+        from: u32,
+    ) -> Option<u32> {
         let runs = self.runs;
-        let (mut a, mut b) = (0, runs.len());
+        // A run of no steps tells nothing: its first step is the next
+        // run's.
+        let short = |run: &IndexedRun| {
+            run.step > top
+                || (run.words[0] > 0 && {
+                    let decoded = LinearRun::decode(&run.words);
+                    faster_by(period(u32::from(run.frac), decoded.interval), slack, ticks)
+                })
+        };
+        let (mut a, mut b) = (from as usize, runs.len());
+        if a > 0 {
+            let mut reach = 1;
+            while let Some(run) = runs.get(a + reach - 1).filter(|_| a + reach <= b) {
+                if short(run) {
+                    b = a + reach - 1;
+                    break;
+                }
+                a += reach;
+                reach *= 2;
+            }
+        }
         while a < b {
             let mid = a + (b - a) / 2;
             let Some(run) = runs.get(mid) else {
                 break;
             };
-            // A run of no steps tells nothing: its first step is the next
-            // run's.
-            let short = run.step > top
-                || (run.words[0] > 0 && {
-                    let decoded = LinearRun::decode(&run.words);
-                    faster_by(period(u32::from(run.frac), decoded.interval), slack, ticks)
-                });
-            if short {
+            if short(run) {
                 b = mid;
             } else {
                 a = mid + 1;
@@ -157,7 +181,11 @@ impl<'a> RunRead<'a> {
             let Some(last) = u32::from(decoded.count).checked_sub(1) else {
                 continue;
             };
-            let within = last.min(top - run.step);
+            // (Past `top`: runs a search begun past it did not probe.)
+            let Some(room) = top.checked_sub(run.step) else {
+                continue;
+            };
+            let within = last.min(room);
             let (frac, add) = (u32::from(run.frac), decoded.add as u32);
             let found = threshold::last_at_least(frac, decoded.interval, add, within, ticks)
                 .unwrap_or_else(|| {
@@ -510,6 +538,8 @@ mod tests {
             top in any::<prop::sample::Index>(),
             at in any::<prop::sample::Index>(),
             offset in -3i64..=3,
+            // Where the search begins, any run: the step found the same.
+            from in any::<prop::sample::Index>(),
         ) {
             let all = padded::<48>(&runs);
             let index = RunIndex::new(&all);
@@ -524,7 +554,7 @@ mod tests {
             let asked = (i64::from(steps[at.index(steps.len())]) + offset).max(0) as u32;
             let walk = (0..=top).rev().find(|&k| steps[k as usize] >= asked);
             let mut read = RunRead::new(index.indexed().runs());
-            let found = read.last_at_least(top, asked, slack);
+            let found = read.last_at_least(top, asked, slack, from.index(index.indexed().runs().len() + 1) as u32);
             prop_assert_eq!(found, walk);
             if let Some(pos) = found {
                 let c = read.cursor(pos).unwrap();
