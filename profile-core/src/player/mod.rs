@@ -328,9 +328,9 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
 
     /// Decelerates from the current speed to rest: the deceleration ramp is
     /// entered at its last entry whose period is not shorter than the
-    /// current one (the fastest not faster), and the move ends when the ramp's slowest entry has played (at once,
-    /// when the motor already runs slower than that entry). A stop never
-    /// lengthens a move.
+    /// current one (the fastest not faster), and the move ends when the
+    /// ramp's slowest entry has played (at once, when the motor already
+    /// runs slower than that entry). A stop never lengthens a move.
     pub fn stop(&mut self) {
         self.endless = false;
         let remaining = self.remaining();

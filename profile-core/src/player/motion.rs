@@ -108,9 +108,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         match (self.accel.per_step(), self.accel) {
             (Some(a), _) => search::last_at_least(|pos| ticks_at(a, pos), last, slack, ticks),
             (None, Ramp::Indexed(index)) => {
-                // The runs' first steps first: `k` steps below the top is
-                // ruled out where the period is short by more than the
-                // slack.
+                // The runs' first periods, then each run in closed form.
                 let mut accel = RunRead::new(index.runs());
                 accel.last_at_least(last, ticks, slack, 0).unwrap_or(0)
             }

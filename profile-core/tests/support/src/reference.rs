@@ -248,9 +248,9 @@ impl<'a, W: TableWord> Reference<'a, W> {
 
     /// Decelerates from the current speed to rest: the deceleration ramp is
     /// entered at its last entry whose period is not shorter than the
-    /// current one, and the move ends when the ramp's slowest entry has played (at once,
-    /// when the motor already runs slower than that entry). A stop never
-    /// lengthens a move.
+    /// current one, and the move ends when the ramp's slowest entry has
+    /// played (at once, when the motor already runs slower than that
+    /// entry). A stop never lengthens a move.
     pub fn stop(&mut self) {
         if self.remaining == 0 {
             return;
