@@ -393,7 +393,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             Some(d) => search::last_at_least(|pos| ticks_at(d, pos), last, slack, current),
             None => {
                 // Probes near each other: one cursor moves between them,
-                // and walks down from the last.
+                // and walks down from the last (a plain run in closed form).
                 let mut at = self.tops[1];
                 let decel = &self.decel;
                 let mut read = |pos| {
@@ -403,9 +403,8 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
                 let k = search::past(0, last.saturating_add(1), &mut |k| {
                     read(last - k).is_some_and(|p| search::faster_by(p, slack, current))
                 });
-                let mut c = Cursor::near(at, decel, last.saturating_sub(k)).unwrap_or(Cursor::ZERO);
-                while c.period(decel).into_ticks() < current && c.backward(decel) {}
-                c.pos
+                let c = Cursor::near(at, decel, last.saturating_sub(k)).unwrap_or(Cursor::ZERO);
+                threshold::last_at_least_from(c, decel, current)
             }
         };
         entry + 1

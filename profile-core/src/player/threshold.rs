@@ -19,7 +19,10 @@
 //! quadratic in `n` and grows with it, so the last wrap is found by
 //! bisection.
 
-use crate::table::runs::{FRACTION_MASK, RUN_FRACTION_BITS, ahead, triangle};
+use super::ramp::{Cursor, Ramp};
+use super::runs::run_at;
+use crate::base::timer::TableWord;
+use crate::table::runs::{FRACTION_MASK, RUN_FRACTION_BITS, ahead, behind, triangle};
 
 /// The intervals a run may reach for the closed form to hold: from 0 up
 /// to a tick short of the word, so that no period's sum wraps.
@@ -109,6 +112,40 @@ pub(crate) fn last_at_least(
         }
     }
     Some(Some(k + 1 - lo))
+}
+
+/// The last position up to `at`'s whose period is at least `ticks`, 0
+/// when none is, walking down from `at`: on plain runs each run in closed
+/// form ([`last_at_least`]), a step at a time where it does not hold and
+/// on any other ramp.
+pub(crate) fn last_at_least_from<W: TableWord>(
+    mut at: Cursor,
+    ramp: &Ramp<'_, W>,
+    ticks: u32,
+) -> u32 {
+    loop {
+        if let Ramp::Runs(runs) = *ramp {
+            let run = run_at(runs, at.entry);
+            let add = run.map_or(0, |r| r.add as u32);
+            let (frac, interval) = behind(at.frac, at.interval, add, at.within);
+            if let Some(found) = last_at_least(frac, interval, add, at.within, ticks) {
+                let first = at.pos - at.within;
+                if let Some(k) = found {
+                    return first + k;
+                }
+                // None in this run: on from the last step of the one
+                // before.
+                (at.pos, at.within, at.frac, at.interval) = (first, 0, frac, interval);
+                if !at.backward(ramp) {
+                    return 0;
+                }
+                continue;
+            }
+        }
+        if at.period(ramp).into_ticks() >= ticks || !at.backward(ramp) {
+            return at.pos;
+        }
+    }
 }
 
 #[cfg(test)]
