@@ -7,6 +7,7 @@ use super::plan::Sides;
 use super::ramp::{Cursor, Ramp};
 use super::reader::{Reader, RunRead, RunWalk};
 use super::search;
+use super::threshold;
 use crate::base::timer::TableWord;
 use crate::table::runs::IndexedRun;
 
@@ -90,6 +91,20 @@ impl<W: TableWord> Sides<'_, '_, W> {
             let from = self
                 .reader(true)
                 .past_shorter(r, walked_down, r, slack, held);
+            if let (Ramp::Runs(_), Some(top)) = (self.decel, (r - 1).checked_sub(from)) {
+                // Plain runs: down from there each run in closed form.
+                let Some(c) = self.cursor(true, top) else {
+                    return r;
+                };
+                let pos = threshold::last_at_least_from(c, &self.decel, held);
+                let found = self
+                    .cursor(true, pos)
+                    .map(|c| c.period(&self.decel).into_ticks());
+                return match found {
+                    Some(t) if t >= held => r - 1 - pos,
+                    _ => r,
+                };
+            }
             return self.scan(p, r, from, r - from).unwrap_or(r);
         }
         let (mut a, mut d) = (self.reader(false), self.reader(true));
