@@ -178,8 +178,8 @@ impl IndexedRun {
 /// compile time: with it the player finds any step of the table by
 /// bisection over the runs, where without it a step's remainder is carried
 /// through every run before it. On a ramp of 97 runs a new cruise speed or
-/// a new target takes about a ninth to an eighth of the instructions it takes
-/// without, a stop an eighth, a start 87 % (measured
+/// a new target takes about a ninth to a fifth of the instructions it takes
+/// without, a stop under a fifth, a start 87 % (measured
 /// on a Cortex-M3: [the measurements](https://github.com/stepper-profiles/stepper-profiles/blob/main/docs/performance.md)).
 /// 16 bytes of flash a run: the
 /// runs' own words are copied in, so that a firmware that plays the index
