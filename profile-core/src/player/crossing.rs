@@ -96,13 +96,9 @@ impl<W: TableWord> Sides<'_, '_, W> {
                 let Some(c) = self.cursor(true, top) else {
                     return r;
                 };
-                let pos = threshold::last_at_least_from(c, &self.decel, held);
-                let found = self
-                    .cursor(true, pos)
-                    .map(|c| c.period(&self.decel).into_ticks());
-                return match found {
-                    Some(t) if t >= held => r - 1 - pos,
-                    _ => r,
+                return match threshold::last_at_least_from(c, &self.decel, held) {
+                    Some(pos) => r - 1 - pos,
+                    None => r,
                 };
             }
             return self.scan(p, r, from, r - from).unwrap_or(r);

@@ -404,7 +404,8 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
                     read(last - k).is_some_and(|p| search::faster_by(p, slack, current))
                 });
                 let c = Cursor::near(at, decel, last.saturating_sub(k)).unwrap_or(Cursor::ZERO);
-                threshold::last_at_least_from(c, decel, current)
+                // (Step 0 is that long: checked above.)
+                threshold::last_at_least_from(c, decel, current).unwrap_or(0)
             }
         };
         entry + 1

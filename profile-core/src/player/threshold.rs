@@ -114,15 +114,15 @@ pub(crate) fn last_at_least(
     Some(Some(k + 1 - lo))
 }
 
-/// The last position up to `at`'s whose period is at least `ticks`, 0
-/// when none is, walking down from `at`: on plain runs each run in closed
-/// form ([`last_at_least`]), a step at a time where it does not hold and
-/// on any other ramp.
+/// The last position up to `at`'s whose period is at least `ticks`,
+/// `None` when none is, walking down from `at`: on plain runs each run in
+/// closed form ([`last_at_least`]), a step at a time where it does not
+/// hold and on any other ramp.
 pub(crate) fn last_at_least_from<W: TableWord>(
     mut at: Cursor,
     ramp: &Ramp<'_, W>,
     ticks: u32,
-) -> u32 {
+) -> Option<u32> {
     loop {
         if let Ramp::Runs(runs) = *ramp {
             let run = run_at(runs, at.entry);
@@ -131,19 +131,22 @@ pub(crate) fn last_at_least_from<W: TableWord>(
             if let Some(found) = last_at_least(frac, interval, add, at.within, ticks) {
                 let first = at.pos - at.within;
                 if let Some(k) = found {
-                    return first + k;
+                    return Some(first + k);
                 }
                 // None in this run: on from the last step of the one
                 // before.
                 (at.pos, at.within, at.frac, at.interval) = (first, 0, frac, interval);
                 if !at.backward(ramp) {
-                    return 0;
+                    return None;
                 }
                 continue;
             }
         }
-        if at.period(ramp).into_ticks() >= ticks || !at.backward(ramp) {
-            return at.pos;
+        if at.period(ramp).into_ticks() >= ticks {
+            return Some(at.pos);
+        }
+        if !at.backward(ramp) {
+            return None;
         }
     }
 }
