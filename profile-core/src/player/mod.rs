@@ -400,9 +400,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
                     at = Cursor::near(at, decel, pos);
                     at.map(|c| c.period(decel).into_ticks())
                 };
-                let k = search::past(0, last.saturating_add(1), &mut |k| {
-                    read(last - k).is_some_and(|p| search::faster_by(p, slack, current))
-                });
+                let k = search::short_above(&mut read, last, slack, current);
                 let c = Cursor::near(at, decel, last.saturating_sub(k)).unwrap_or(Cursor::ZERO);
                 // (Step 0 is that long: checked above.)
                 threshold::last_at_least_from(c, decel, current).unwrap_or(0)

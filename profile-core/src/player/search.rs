@@ -82,35 +82,15 @@ pub(crate) fn past_shorter<W: TableWord>(
 /// The last position up to `last` whose period (`read`, in ticks) is not
 /// shorter than `ticks`, 0 when none is; `slack` the ramp's
 /// ([`slack`]). Exactly the first such position a walk down from `last`
-/// finds.
+/// finds: past the steps [`short_above`] rules out, then one by one.
 #[inline(always)]
 pub(crate) fn last_at_least(
-    read: impl FnMut(u32) -> Option<u32>,
-    last: u32,
-    slack: u32,
-    ticks: u32,
-) -> u32 {
-    last_at_least_in(read, 0, last.saturating_add(1), last, slack, ticks)
-}
-
-/// [`last_at_least`], its bisection over `k` steps below the top begun
-/// within `lo..hi` (`lo - 1` ruled out when `lo > 0`; `hi` not when it is
-/// below `last + 1`).
-#[inline(always)]
-pub(crate) fn last_at_least_in(
     mut read: impl FnMut(u32) -> Option<u32>,
-    lo: u32,
-    hi: u32,
     last: u32,
     slack: u32,
     ticks: u32,
 ) -> u32 {
-    let slack = u64::from(slack);
-    // `k` steps below the top: short by more than the slack, and so is
-    // every step above it.
-    let k = past(lo, hi, &mut |k| {
-        read(last - k).is_some_and(|p| u64::from(p) + slack < u64::from(ticks))
-    });
+    let k = short_above(&mut read, last, slack, ticks);
     let mut pos = last.saturating_sub(k);
     loop {
         match read(pos) {
@@ -120,6 +100,22 @@ pub(crate) fn last_at_least_in(
             _ => pos -= 1,
         }
     }
+}
+
+/// Steps `k` below `last` from which a walk down for a period as long as
+/// `ticks` begins: every step above `last - k` is shorter than `ticks` by
+/// more than `slack` (the ramp's, [`slack`]), and so none is that long. A
+/// bisection ([`past`]) on the periods `read` gives, in ticks.
+#[inline(always)]
+pub(crate) fn short_above(
+    read: &mut impl FnMut(u32) -> Option<u32>,
+    last: u32,
+    slack: u32,
+    ticks: u32,
+) -> u32 {
+    past(0, last.saturating_add(1), &mut |k| {
+        read(last - k).is_some_and(|p| faster_by(p, slack, ticks))
+    })
 }
 
 /// The first position up to `last` whose period (`read`, in ticks) is not
