@@ -397,34 +397,97 @@ fn motor_parameters_are_checked() {
         change(&mut m);
         m
     };
-    for angle in [0.0, -1.8, f64::NAN, f64::INFINITY] {
-        let mut m = good;
-        m.step_angle = angle;
-        let e = message(m);
-        assert_eq!(
-            e,
-            format!("`step_angle` must be a finite number above 0 (got {angle})")
-        );
+    // Every figure in its range, ends included, and nothing beyond: the
+    // value outside each end, NaN and infinity refused with the range.
+    type Field = fn(&mut Motor, f64);
+    let fields: [(&str, Field, f64, f64, &str); 8] = [
+        (
+            "step_angle",
+            |m, v| m.step_angle = v,
+            0.01,
+            180.0,
+            "from 0.01 to 180 degrees",
+        ),
+        (
+            "rotor_inertia",
+            |m, v| m.rotor_inertia = v,
+            1e-12,
+            10.0,
+            "from 1e-12 to 10 kg·m²",
+        ),
+        (
+            "load_inertia",
+            |m, v| m.load_inertia = v,
+            0.0,
+            1e4,
+            "from 0 to 10000 kg·m²",
+        ),
+        (
+            "friction",
+            |m, v| m.friction = v,
+            0.0,
+            1e4,
+            "from 0 to 10000 N·m",
+        ),
+        (
+            "damping",
+            |m, v| m.damping = v,
+            0.0,
+            1e4,
+            "from 0 to 10000 N·m·s/rad",
+        ),
+        (
+            "damping_ratio",
+            |m, v| m.damping_ratio = v,
+            0.0,
+            1.0,
+            "from 0 to 1, a fraction",
+        ),
+        ("safety", |m, v| m.safety = v, 1.0, 1000.0, "from 1 to 1000"),
+        (
+            "max_start_hz",
+            |m, v| m.max_start_hz = Some(v),
+            1e-3,
+            1e8,
+            "from 0.001 to 1e8 Hz",
+        ),
+    ];
+    for (key, set, lo, hi, expected) in fields {
+        for v in [lo, hi] {
+            let mut m = good;
+            set(&mut m, v);
+            assert_eq!(m.validate(), Ok(()), "{key} = {v}");
+        }
+        let below = if lo > 0.0 { lo * 0.999 } else { -1e-9 };
+        for v in [below, hi * 1.001, 1e300, f64::NAN, f64::INFINITY] {
+            let mut m = good;
+            set(&mut m, v);
+            let e = message(m);
+            assert!(
+                e.starts_with(&format!("`{key}` must be {expected}")),
+                "{key} = {v}: {e}"
+            );
+        }
     }
+    assert_eq!(
+        message(with(|m| m.step_angle = 0.0)),
+        "`step_angle` must be from 0.01 to 180 degrees (got 0)"
+    );
     assert_eq!(
         message(with(|m| m.microsteps = 0)),
         "`microsteps` must be at least 1 (got 0)"
     );
     assert_eq!(
         message(with(|m| m.rotor_inertia = f64::NAN)),
-        "`rotor_inertia` must be a finite number above 0 (got NaN)"
+        "`rotor_inertia` must be from 1e-12 to 10 kg·m² (got NaN)"
     );
     assert_eq!(
         message(good.with_load_inertia(-1e-6)),
-        "`load_inertia` must be a finite number, 0 or more (got -0.000001)"
+        "`load_inertia` must be from 0 to 10000 kg·m² (got -0.000001)"
     );
     assert_eq!(
-        message(good.with_safety(0.99)),
-        "`safety` must be a finite number, 1 or more (got 0.99)"
-    );
-    assert_eq!(
-        message(good.with_max_start_hz(0.0)),
-        "`max_start_hz` must be a finite number above 0 (got 0)"
+        message(good.with_max_start_hz(1e300)),
+        "`max_start_hz` must be from 0.001 to 1e8 Hz (got 1e300)"
     );
     let curve = |points: &[(f64, f64)]| {
         let mut m = good.with_torque_curve(TorqueCurve::new(points).unwrap());
@@ -433,15 +496,15 @@ fn motor_parameters_are_checked() {
     };
     assert_eq!(
         message(curve(&[(0.0, 0.4), (1000.0, 0.3), (1000.0, 0.2)])),
-        "`torque_curve` point 3 (1000, 0.2) must have a higher frequency than the point before it and a torque above 0"
+        "`torque_curve` point 3 (1000, 0.2) must have a frequency higher than the point before it and up to 1e8 Hz, and a torque above 0 and up to 10000 N·m"
     );
     assert_eq!(
         message(curve(&[(0.0, 0.4), (1000.0, 0.0)])),
-        "`torque_curve` point 2 (1000, 0) must have a higher frequency than the point before it and a torque above 0"
+        "`torque_curve` point 2 (1000, 0) must have a frequency higher than the point before it and up to 1e8 Hz, and a torque above 0 and up to 10000 N·m"
     );
     assert_eq!(
         message(curve(&[(-1.0, 0.4)])),
-        "`torque_curve` point 1 (-1, 0.4) must have a frequency of 0 or more and a torque above 0"
+        "`torque_curve` point 1 (-1, 0.4) must have a frequency from 0 up to 1e8 Hz, and a torque above 0 and up to 10000 N·m"
     );
     // A point that is not a finite number is not "not rising".
     assert_eq!(
@@ -459,7 +522,17 @@ fn motor_parameters_are_checked() {
     // Numbers far out of range in exponent form.
     assert_eq!(
         message(curve(&[(0.0, 0.4), (1e300, 0.3), (1e299, 0.2)])),
-        "`torque_curve` point 3 (1e299, 0.2) must have a higher frequency than the point before it and a torque above 0"
+        "`torque_curve` point 2 (1e300, 0.3) must have a frequency higher than the point before it and up to 1e8 Hz, and a torque above 0 and up to 10000 N·m"
+    );
+    // The curve's ends: 1e8 Hz and 10 000 N·m, and no more.
+    assert_eq!(curve(&[(0.0, 1e4), (1e8, 0.3)]).validate(), Ok(()));
+    assert_eq!(
+        message(curve(&[(0.0, 1.001e4)])),
+        "`torque_curve` point 1 (0, 10010) must have a frequency from 0 up to 1e8 Hz, and a torque above 0 and up to 10000 N·m"
+    );
+    assert_eq!(
+        message(curve(&[(0.0, 0.4), (1.001e8, 0.3)])),
+        "`torque_curve` point 2 (100100000, 0.3) must have a frequency higher than the point before it and up to 1e8 Hz, and a torque above 0 and up to 10000 N·m"
     );
     let e = curve(&[(0.0, 0.4), (500.0, 0.3)])
         .validate()
@@ -515,6 +588,15 @@ fn the_simulation_refuses_bad_input() {
         "{e:?}"
     );
     assert!(e.to_string().starts_with("the simulation needs "), "{e}");
+    // Beyond what 64 bits count: no made-up count.
+    let e = run(&motor, &spec, &table, 1e-300, 0.0).unwrap_err();
+    assert!(
+        e.to_string().starts_with(
+            "the simulation needs more integration steps than 64 bits count, more than the \
+             20000000 allowed: "
+        ),
+        "{e}"
+    );
     assert!(matches!(
         run(&motor, &spec, &[u32::MAX; 100], 1e-9, 0.0),
         Err(SimError::TooManySteps { .. })
@@ -531,7 +613,7 @@ fn the_simulation_refuses_bad_input() {
         Err(SimError::Motor(MotorError::Invalid {
             key: Key::ROTOR_INERTIA,
             value: 0.0,
-            expected: "a finite number above 0"
+            expected: "from 1e-12 to 10 kg·m²"
         }))
     );
     let mut stopped = spec;
@@ -753,35 +835,54 @@ fn every_table_is_checked_at_its_start() {
     assert_eq!(steps[..3], [0, 1, 2]);
 }
 
-/// No torque the check computes is ever a NaN or an infinity: inertias whose
-/// sum overflows are refused, and a torque that overflows is an error.
+/// No torque the check computes is ever a NaN or an infinity: figures
+/// beyond any motor's are refused, and the largest figures taken, on the
+/// fastest timer, give finite torques.
 #[test]
 fn the_check_never_passes_a_non_finite_torque() {
     let (spec, table) = ramp(2_000.0, 1);
-    let mut huge = nema17(1).with_load_inertia(1e308);
-    huge.rotor_inertia = 1e308;
-    let error = huge.check(&spec, &table).unwrap_err();
+    let error = nema17(1)
+        .with_load_inertia(1e308)
+        .check(&spec, &table)
+        .unwrap_err();
     assert_eq!(
         error.to_string(),
-        "`load_inertia` must be small enough that `rotor_inertia + load_inertia` is a finite \
-         number (got 1e308)"
+        "`load_inertia` must be from 0 to 10000 kg·m² (got 1e308)"
     );
     assert_eq!(error.key(), Key::LOAD_INERTIA);
-    // A drag whose torque at the first entry's speed overflows.
-    let dragged = nema17(1).with_damping(1e308);
-    let error = dragged.check(&spec, &table).unwrap_err();
-    assert_eq!(
-        error,
-        MotorError::NotFinite {
-            step: 0,
-            what: "needed"
-        }
-    );
+    let error = nema17(1)
+        .with_damping(1e308)
+        .check(&spec, &table)
+        .unwrap_err();
     assert_eq!(
         error.to_string(),
-        "the torque needed at step 0 is not a finite number: the motor's inertia, friction, \
-         damping or torque is too large to compute with"
+        "`damping` must be from 0 to 10000 N·m·s/rad (got 1e308)"
     );
+    // Every figure at the end of its range that makes torques largest, a
+    // table of 1-tick steps on a 4 GHz timer: the check refuses it for
+    // want of torque, in finite figures.
+    let mut extreme = nema17(1)
+        .with_load_inertia(1e4)
+        .with_friction(1e4)
+        .with_damping(1e4);
+    (extreme.rotor_inertia, extreme.step_angle) = (10.0, 180.0);
+    let fast = Spec::new(
+        Curve::Linear(Linear {
+            fmin: 1e9,
+            fmax: 2e9,
+            extent: LinearExtent::Accel(1e18),
+        }),
+        Timer::new(4_000_000_000),
+    );
+    let periods = fast.table().unwrap().periods;
+    match extreme.check(&fast, &periods) {
+        Err(MotorError::Torque {
+            needed_nm,
+            available_nm,
+            ..
+        }) => assert!(needed_nm.is_finite() && available_nm.is_finite()),
+        other => panic!("{other:?}"),
+    }
     // An inertia too large to accelerate is refused, whatever it reads.
     let mut heavy = nema17(1).with_load_inertia(0.0);
     heavy.rotor_inertia = 1.7e308;

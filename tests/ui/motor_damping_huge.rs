@@ -1,7 +1,7 @@
 use stepper_profiles::period_table;
 
-// A damping no motor has: the torque it needs reads in exponent form, not in
-// 300 digits.
+// A damping no motor has: refused at its value, with the range taken, not
+// read as a torque of 300 digits.
 static T: [u16; 978] = period_table!(
     curve = linear, fmin = 300, fmax = 2000, accel = 2000, timer_hz = 1_000_000,
     step_angle = 1.8,

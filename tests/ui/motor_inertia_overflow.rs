@@ -1,6 +1,6 @@
 use stepper_profiles::period_table;
 
-// Two inertias whose sum is not a finite number.
+// Inertias whose sum is not a finite number: the first out of its range.
 static T: [u16; 100] = period_table!(
     curve = linear, fmin = 300, fmax = 1000, len = 100, timer_hz = 1_000_000,
     step_angle = 1.8,

@@ -189,7 +189,8 @@ pub enum MotorError {
         expected: &'static str,
     },
     /// The torque curve's points must be finite numbers, its frequencies
-    /// rise and its torques be positive.
+    /// rise from 0 or more up to 1e8 Hz and its torques be above 0 and up
+    /// to 10 000 N·m.
     Curve {
         /// The offending point's index, from 0.
         index: usize,
@@ -310,11 +311,11 @@ impl fmt::Display for MotorError {
                     Num(nm)
                 )?;
                 f.write_str(if index == 0 {
-                    "a frequency of 0 or more"
+                    "a frequency from 0"
                 } else {
-                    "a higher frequency than the point before it"
+                    "a frequency higher than the point before it and"
                 })?;
-                f.write_str(" and a torque above 0")
+                f.write_str(" up to 1e8 Hz, and a torque above 0 and up to 10000 N·m")
             }
             MotorError::Torque {
                 step,
@@ -397,34 +398,67 @@ fn torque(
 #[cfg(feature = "std")]
 impl std::error::Error for MotorError {}
 
-pub(crate) fn positive(key: Key, value: f64) -> Result<(), MotorError> {
-    if value.is_finite() && value > 0.0 {
-        Ok(())
-    } else {
-        Err(MotorError::Invalid {
-            key,
-            value,
-            expected: "a finite number above 0",
-        })
-    }
+/// The range a motor's figure is taken in, in the unit of its plain number,
+/// and the words that say so. Every stepper motor and driver lies well
+/// inside: a figure outside is a mistake (a unit, an exponent), and
+/// inside, the check's and the simulation's arithmetic stays finite.
+pub(crate) type Bounds = (f64, f64, &'static str);
+
+/// [`Bounds`] of each figure.
+pub(crate) mod bounds {
+    use super::Bounds;
+
+    pub(crate) const STEP_ANGLE: Bounds = (0.01, 180.0, "from 0.01 to 180 degrees");
+    pub(crate) const ROTOR_INERTIA: Bounds = (1e-12, 10.0, "from 1e-12 to 10 kg·m²");
+    pub(crate) const LOAD_INERTIA: Bounds = (0.0, 1e4, "from 0 to 10000 kg·m²");
+    pub(crate) const FRICTION: Bounds = (0.0, 1e4, "from 0 to 10000 N·m");
+    pub(crate) const DAMPING: Bounds = (0.0, 1e4, "from 0 to 10000 N·m·s/rad");
+    pub(crate) const DAMPING_RATIO: Bounds = (
+        0.0,
+        super::MAX_DAMPING_RATIO,
+        "from 0 to 1, a fraction of critical damping: a motor's own electromagnetic \
+         damping is a small fraction of critical, and a larger ratio would drag the \
+         model's rotor along with any field",
+    );
+    pub(crate) const SAFETY: Bounds = (1.0, 1000.0, "from 1 to 1000");
+    pub(crate) const MAX_START_HZ: Bounds = (1e-3, 1e8, "from 0.001 to 1e8 Hz");
+    pub(crate) const RESISTANCE: Bounds = (1e-4, 1e5, "from 1e-4 to 1e5 Ω");
+    pub(crate) const INDUCTANCE: Bounds = (1e-8, 100.0, "from 1e-8 to 100 H");
+    pub(crate) const RATED_CURRENT: Bounds = (1e-4, 1000.0, "from 1e-4 to 1000 A");
+    pub(crate) const HOLDING_TORQUE: Bounds = (1e-6, 1e4, "from 1e-6 to 10000 N·m");
+    pub(crate) const SUPPLY_VOLTAGE: Bounds = (0.1, 1e5, "from 0.1 to 1e5 V");
+    /// A torque curve's frequencies, Hz, and torques, N·m (above 0).
+    pub(crate) const CURVE_HZ: f64 = 1e8;
+    pub(crate) const CURVE_NM: f64 = 1e4;
 }
 
-pub(crate) fn non_negative(key: Key, value: f64) -> Result<(), MotorError> {
-    if value.is_finite() && value >= 0.0 {
+/// `value` of `key` within `bounds`, ends included.
+pub(crate) fn within(key: Key, value: f64, bounds: Bounds) -> Result<(), MotorError> {
+    let (lo, hi, expected) = bounds;
+    if value >= lo && value <= hi {
         Ok(())
     } else {
         Err(MotorError::Invalid {
             key,
             value,
-            expected: "a finite number, 0 or more",
+            expected,
         })
     }
 }
 
 impl Motor {
-    /// Checks every parameter.
+    /// Checks every parameter. Each figure is taken within the range of
+    /// every stepper motor, and far beyond, so that a figure outside is a
+    /// mistake (a unit, an exponent) and the check's arithmetic stays
+    /// finite: `step_angle` from 0.01 to 180 degrees, `rotor_inertia` from
+    /// 1e-12 to 10 kg·m², `load_inertia` from 0 to 10 000 kg·m², `friction`
+    /// from 0 to 10 000 N·m, `damping` from 0 to 10 000 N·m·s/rad,
+    /// `damping_ratio` from 0 to 1, `safety` from 1 to 1000, `max_start_hz`
+    /// from 0.001 to 1e8 Hz, the torque curve's points at frequencies from 0
+    /// to 1e8 Hz, rising, with torques above 0 and at most 10 000 N·m; the
+    /// windings as [`Windings::validate`] checks them.
     pub fn validate(&self) -> Result<(), MotorError> {
-        positive(Key::STEP_ANGLE, self.step_angle)?;
+        within(Key::STEP_ANGLE, self.step_angle, bounds::STEP_ANGLE)?;
         if self.microsteps == 0 {
             return Err(MotorError::Invalid {
                 key: Key::MICROSTEPS,
@@ -432,36 +466,22 @@ impl Motor {
                 expected: "at least 1",
             });
         }
-        positive(Key::ROTOR_INERTIA, self.rotor_inertia)?;
-        non_negative(Key::LOAD_INERTIA, self.load_inertia)?;
-        if !(self.rotor_inertia + self.load_inertia).is_finite() {
-            return Err(MotorError::Invalid {
-                key: Key::LOAD_INERTIA,
-                value: self.load_inertia,
-                expected: "small enough that `rotor_inertia + load_inertia` is a finite number",
-            });
-        }
-        non_negative(Key::FRICTION, self.friction)?;
-        non_negative(Key::DAMPING, self.damping)?;
-        non_negative(Key::DAMPING_RATIO, self.damping_ratio)?;
-        if self.damping_ratio > MAX_DAMPING_RATIO {
-            return Err(MotorError::Invalid {
-                key: Key::DAMPING_RATIO,
-                value: self.damping_ratio,
-                expected: "from 0 to 1, a fraction of critical damping: a motor's own \
-                           electromagnetic damping is a small fraction of critical, and a \
-                           larger ratio would drag the model's rotor along with any field",
-            });
-        }
-        if !(self.safety.is_finite() && self.safety >= 1.0) {
-            return Err(MotorError::Invalid {
-                key: Key::SAFETY,
-                value: self.safety,
-                expected: "a finite number, 1 or more",
-            });
-        }
+        within(
+            Key::ROTOR_INERTIA,
+            self.rotor_inertia,
+            bounds::ROTOR_INERTIA,
+        )?;
+        within(Key::LOAD_INERTIA, self.load_inertia, bounds::LOAD_INERTIA)?;
+        within(Key::FRICTION, self.friction, bounds::FRICTION)?;
+        within(Key::DAMPING, self.damping, bounds::DAMPING)?;
+        within(
+            Key::DAMPING_RATIO,
+            self.damping_ratio,
+            bounds::DAMPING_RATIO,
+        )?;
+        within(Key::SAFETY, self.safety, bounds::SAFETY)?;
         if let Some(hz) = self.max_start_hz {
-            positive(Key::MAX_START_HZ, hz)?;
+            within(Key::MAX_START_HZ, hz, bounds::MAX_START_HZ)?;
         }
         if let Some(windings) = &self.windings {
             windings.validate()?;
@@ -475,7 +495,8 @@ impl Motor {
         };
         let mut prev = f64::NEG_INFINITY;
         for (index, &(hz, nm)) in curve.points().iter().enumerate() {
-            if !(hz.is_finite() && nm.is_finite() && hz >= 0.0 && hz > prev && nm > 0.0) {
+            let hz_ok = hz >= 0.0 && hz > prev && hz <= bounds::CURVE_HZ;
+            if !(hz_ok && nm > 0.0 && nm <= bounds::CURVE_NM) {
                 return Err(MotorError::Curve { index, hz, nm });
             }
             prev = hz;

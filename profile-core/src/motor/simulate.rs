@@ -195,7 +195,8 @@ pub enum SimError {
     },
     /// The run would take more than [`MAX_STEPS`] integration steps.
     TooManySteps {
-        /// Steps the run needs (at least this many).
+        /// Steps the run needs (at least this many; `u64::MAX` when it
+        /// needs more).
         needed: u64,
         /// [`MAX_STEPS`].
         max: u64,
@@ -237,10 +238,13 @@ impl fmt::Display for SimError {
                 max,
                 fits_with_dt_s,
             } => {
-                write!(
-                    f,
-                    "the simulation needs {needed} integration steps, more than the {max} allowed: "
-                )?;
+                match needed {
+                    u64::MAX => f.write_str(
+                        "the simulation needs more integration steps than 64 bits count",
+                    )?,
+                    _ => write!(f, "the simulation needs {needed} integration steps")?,
+                }
+                write!(f, ", more than the {max} allowed: ")?;
                 match fits_with_dt_s {
                     Some(dt) => write!(f, "use a step of at least {dt:.3e} s"),
                     None => f.write_str(

@@ -48,7 +48,7 @@ use core::f64::consts::SQRT_2;
 use crate::base::key::Key;
 use crate::motor::chopper::Phase;
 use crate::motor::stepped::{FULL_STEPS, HALF_STEPS, SteppedPhase};
-use crate::motor::{Motor, MotorError, non_negative, positive};
+use crate::motor::{Motor, MotorError, bounds, within};
 
 /// How the driver sets the phase currents: the waveform its chopper
 /// regulates each phase to, at `rated_current`.
@@ -169,20 +169,35 @@ impl Windings {
         self
     }
 
-    /// Checks every figure: all positive and finite, the detent torque 0 or
-    /// more and below the holding torque.
+    /// Checks every figure: each within the range of every motor and
+    /// driver, and far beyond (`resistance` from 1e-4 to 1e5 Ω,
+    /// `inductance` from 1e-8 to 100 H, `rated_current` from 1e-4 to 1000
+    /// A, `holding_torque` from 1e-6 to 10 000 N·m, `supply_voltage` from
+    /// 0.1 to 1e5 V), the detent torque 0 or more and below the holding
+    /// torque.
     pub fn validate(&self) -> Result<(), MotorError> {
-        positive(Key::RESISTANCE, self.resistance)?;
-        positive(Key::INDUCTANCE, self.inductance)?;
-        positive(Key::RATED_CURRENT, self.rated_current)?;
-        positive(Key::HOLDING_TORQUE, self.holding_torque)?;
-        positive(Key::SUPPLY_VOLTAGE, self.supply_voltage)?;
-        non_negative(Key::DETENT_TORQUE, self.detent_torque)?;
-        if self.detent_torque >= self.holding_torque {
+        within(Key::RESISTANCE, self.resistance, bounds::RESISTANCE)?;
+        within(Key::INDUCTANCE, self.inductance, bounds::INDUCTANCE)?;
+        within(
+            Key::RATED_CURRENT,
+            self.rated_current,
+            bounds::RATED_CURRENT,
+        )?;
+        within(
+            Key::HOLDING_TORQUE,
+            self.holding_torque,
+            bounds::HOLDING_TORQUE,
+        )?;
+        within(
+            Key::SUPPLY_VOLTAGE,
+            self.supply_voltage,
+            bounds::SUPPLY_VOLTAGE,
+        )?;
+        if !(self.detent_torque >= 0.0 && self.detent_torque < self.holding_torque) {
             return Err(MotorError::Invalid {
                 key: Key::DETENT_TORQUE,
                 value: self.detent_torque,
-                expected: "below `holding_torque`",
+                expected: "0 or more and below `holding_torque`",
             });
         }
         Ok(())
