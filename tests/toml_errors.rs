@@ -68,6 +68,8 @@ const REQUIRED: &[&str] = &[
     "segments_period_overflow",
     "bad_name_errno",
     "file_too_large",
+    // A file saved in another encoding than UTF-8 (a Windows code page).
+    "not_utf8",
     // Messages that said too little or too much: a unit of another scale
     // suggested, a point's mistake on the whole curve, a point at infinity
     // "not rising", a number with a unit "not a number", 300 digits.
@@ -107,8 +109,8 @@ fn cases() -> Vec<(String, String)> {
     let mut cases: Vec<(String, String)> = names
         .into_iter()
         .map(|name| {
-            let source = fs::read_to_string(dir().join(format!("{name}.toml"))).unwrap();
-            let message = match Profiles::parse(FILE, &source) {
+            let bytes = fs::read(dir().join(format!("{name}.toml"))).unwrap();
+            let message = match Profiles::parse_bytes(FILE, &bytes) {
                 Ok(p) => format!("<no error: {} profiles parsed>\n", p.profiles().len()),
                 Err(e) => e.message().to_string(),
             };
@@ -178,7 +180,9 @@ fn diagnostics_are_well_formed() {
         if name == "missing_file" {
             continue;
         }
-        let source = fs::read_to_string(dir().join(format!("{name}.toml"))).unwrap();
+        // A byte that is not UTF-8 shows as U+FFFD on its line.
+        let bytes = fs::read(dir().join(format!("{name}.toml"))).unwrap();
+        let source = String::from_utf8_lossy(&bytes);
         let lines: Vec<&str> = text.lines().collect();
         let mut i = 0;
         let mut count = 0;

@@ -43,7 +43,7 @@ fn try_include(input: TokenStream) -> syn::Result<TokenStream> {
     })?;
     let relative = lit.value();
     let path = Path::new(&dir).join(&relative);
-    let source = std::fs::read_to_string(&path).map_err(|e| {
+    let bytes = std::fs::read(&path).map_err(|e| {
         syn::Error::new(
             lit.span(),
             format!(
@@ -53,7 +53,7 @@ fn try_include(input: TokenStream) -> syn::Result<TokenStream> {
             ),
         )
     })?;
-    let profiles = Profiles::parse(&relative, &source)
+    let profiles = Profiles::parse_bytes(&relative, &bytes)
         .map_err(|e| syn::Error::new(lit.span(), e.message()))?;
     let items = profiles.rust_tokens();
     // Make Cargo rebuild when the file changes.

@@ -47,6 +47,7 @@ use crate::emit;
 pub use crate::emit::Profile;
 pub use crate::emit::c::{CStyle, CStyleError, Split};
 use crate::pipeline::{self, Budget, Options};
+use crate::schema::Diagnostic;
 
 mod file;
 mod render;
@@ -72,12 +73,36 @@ impl Profiles {
     /// Reads, checks and computes every profile of the file at `path`.
     pub fn load(path: impl AsRef<Path>) -> Result<Self, LoadError> {
         let path = path.as_ref();
-        let source = std::fs::read_to_string(path).map_err(|e| LoadError {
+        let bytes = std::fs::read(path).map_err(|e| LoadError {
             text: format!("cannot read `{}`: {e}", path.display()),
         })?;
-        let mut profiles = Self::parse(&path.display().to_string(), &source)?;
+        let mut profiles = Self::parse_bytes(&path.display().to_string(), &bytes)?;
         profiles.path = Some(path.to_path_buf());
         Ok(profiles)
+    }
+
+    /// [`Profiles::parse`] on a file's bytes: a byte that is not UTF-8 is a
+    /// mistake at its `file:line:col`.
+    pub fn parse_bytes(file: &str, bytes: &[u8]) -> Result<Self, LoadError> {
+        match core::str::from_utf8(bytes) {
+            Ok(source) => Self::parse(file, source),
+            Err(e) => {
+                // The text up to the byte is read as it is; the byte (and
+                // the rest of its sequence) shows as one U+FFFD.
+                let at = e.valid_up_to();
+                let source = String::from_utf8_lossy(bytes);
+                let byte = bytes.get(at).copied().unwrap_or(0);
+                let message = format!(
+                    "byte 0x{byte:02X} is not UTF-8 text: a profiles file is UTF-8 (TOML's \
+                     encoding); save it as UTF-8"
+                );
+                let d = Diagnostic {
+                    loc: at..at + char::REPLACEMENT_CHARACTER.len_utf8(),
+                    message,
+                };
+                Err(render(file, &source, &[d]))
+            }
+        }
     }
 
     /// Checks and computes the profiles in `source`; `file` names it in messages.
