@@ -70,6 +70,8 @@ const REQUIRED: &[&str] = &[
     "file_too_large",
     // A file saved in another encoding than UTF-8 (a Windows code page).
     "not_utf8",
+    // Numbers no profile takes: not finite, out of a motor key's range.
+    "defaults_unused_out_of_range",
     // Messages that said too little or too much: a unit of another scale
     // suggested, a point's mistake on the whole curve, a point at infinity
     // "not rising", a number with a unit "not a number", 300 digits.

@@ -407,6 +407,7 @@ pub(crate) type Bounds = (f64, f64, &'static str);
 /// [`Bounds`] of each figure.
 pub(crate) mod bounds {
     use super::Bounds;
+    use crate::base::key::Key;
 
     pub(crate) const STEP_ANGLE: Bounds = (0.01, 180.0, "from 0.01 to 180 degrees");
     pub(crate) const ROTOR_INERTIA: Bounds = (1e-12, 10.0, "from 1e-12 to 10 kg·m²");
@@ -430,6 +431,26 @@ pub(crate) mod bounds {
     /// A torque curve's frequencies, Hz, and torques, N·m (above 0).
     pub(crate) const CURVE_HZ: f64 = 1e8;
     pub(crate) const CURVE_NM: f64 = 1e4;
+
+    /// The bounds of a motor key's number, if it is one of these.
+    pub(crate) fn of(key: Key) -> Option<Bounds> {
+        Some(match key {
+            Key::STEP_ANGLE => STEP_ANGLE,
+            Key::ROTOR_INERTIA => ROTOR_INERTIA,
+            Key::LOAD_INERTIA => LOAD_INERTIA,
+            Key::FRICTION => FRICTION,
+            Key::DAMPING => DAMPING,
+            Key::DAMPING_RATIO => DAMPING_RATIO,
+            Key::SAFETY => SAFETY,
+            Key::MAX_START_HZ => MAX_START_HZ,
+            Key::RESISTANCE => RESISTANCE,
+            Key::INDUCTANCE => INDUCTANCE,
+            Key::RATED_CURRENT => RATED_CURRENT,
+            Key::HOLDING_TORQUE => HOLDING_TORQUE,
+            Key::SUPPLY_VOLTAGE => SUPPLY_VOLTAGE,
+            _ => return None,
+        })
+    }
 }
 
 /// `value` of `key` within `bounds`, ends included.

@@ -323,7 +323,7 @@ pub(crate) fn read(source: &str) -> Result<FileArgs, Diagnostic<Range<usize>>> {
     };
     let defaults = defaults(source, parsed.defaults.as_ref(), &mut file);
     let motors: Vec<_> = parsed.motors.iter().flatten().collect();
-    check_motors(&motors, &mut file);
+    let motor_args = check_motors(source, &motors, &mut file);
     let mut declared: Vec<&str> = motors.iter().map(|(k, _)| k.get_ref().as_str()).collect();
     declared.sort_unstable();
     let Some(profiles) = parsed.profiles else {
@@ -352,14 +352,15 @@ pub(crate) fn read(source: &str) -> Result<FileArgs, Diagnostic<Range<usize>>> {
             Err(d) => file.diagnostics.push(d),
         }
     }
-    // A default no profile takes is still read: a mistake in it is one.
+    // A default or a motor's key no profile takes is still read: a mistake
+    // in it is one.
     let taken: Vec<&Range<usize>> = file
         .profiles
         .iter()
         .flat_map(|p| p.args.iter().map(|a| &a.key_loc))
         .collect();
     let nowhere = usize::MAX..usize::MAX;
-    for d in &defaults {
+    for d in defaults.iter().chain(&motor_args) {
         if !taken.contains(&&d.key_loc) {
             file.diagnostics.extend(schema::value_problems(d, &nowhere));
         }
@@ -402,11 +403,18 @@ fn defaults(source: &str, table: Option<&Table>, file: &mut FileArgs) -> Vec<Arg
 
 /// A motor table holds a motor's keys only; checked once per motor.
 /// The key a misspelt one probably meant goes to `file.meant`: not missing
-/// too.
-fn check_motors(motors: &[(&Spanned<String>, &Spanned<Table>)], file: &mut FileArgs) {
+/// too. Returns the motor keys as arguments, so that those no profile takes
+/// are read too.
+fn check_motors(
+    source: &str,
+    motors: &[(&Spanned<String>, &Spanned<Table>)],
+    file: &mut FileArgs,
+) -> Vec<Arg<Range<usize>>> {
+    let mut args = Vec::new();
     for (_, table) in motors {
-        for (key, _) in sorted(table.get_ref()) {
+        for (key, v) in sorted(table.get_ref()) {
             if Key::from_name(key.get_ref()).is_some_and(Key::is_motor) {
+                args.push(arg(source, key, v));
                 continue;
             }
             let motor_keys = Key::MOTOR_KEYS.iter().map(|k| k.name());
@@ -425,6 +433,7 @@ fn check_motors(motors: &[(&Spanned<String>, &Spanned<Table>)], file: &mut FileA
             });
         }
     }
+    args
 }
 
 /// A profile's arguments: its own keys, then the keys of the motor it names

@@ -9,6 +9,7 @@ use super::suggest::{Hint, did_you_mean, suggest};
 use super::values::{Collector, motor};
 use super::{Arg, Diagnostic, TableLayout, Value, curve_names, keys_for, listed, quoted};
 use crate::base::MAX_LEN;
+use crate::base::error::Error;
 use crate::base::key::Key;
 use crate::base::modes::{Arithmetic, Discretization, Rounding};
 use crate::base::timer::{Timer, Word};
@@ -119,6 +120,9 @@ pub(crate) fn value_problems<L: Clone + PartialEq>(
     let Some(key) = Key::from_name(&arg.key) else {
         return Vec::new();
     };
+    if let Some(d) = own_problem(arg, key) {
+        return Vec::from([d]);
+    }
     let mut args = Vec::from([arg.clone()]);
     if key != Key::CURVE {
         // A curve that takes the key, so that it is read as a profile would.
@@ -141,6 +145,25 @@ pub(crate) fn value_problems<L: Clone + PartialEq>(
             .filter(|d| d.loc == arg.key_loc || d.loc == arg.value_loc)
             .collect(),
     }
+}
+
+/// What is wrong with a number whatever profile takes it: not a finite
+/// number, or a motor's figure out of its range ([`Motor::validate`]).
+fn own_problem<L: Clone>(arg: &Arg<L>, key: Key) -> Option<Diagnostic<L>> {
+    let value = match arg.value {
+        Value::Int(v) => v as f64,
+        Value::Float(v) => v,
+        _ => return None,
+    };
+    let message = match crate::motor::bounds::of(key) {
+        Some(bounds) => crate::motor::within(key, value, bounds).err()?.to_string(),
+        None if !value.is_finite() => Error::NotFinite { key, value }.to_string(),
+        None => return None,
+    };
+    Some(Diagnostic {
+        loc: arg.value_loc.clone(),
+        message,
+    })
 }
 
 /// The curve the arguments name, so that its keys are known.
