@@ -428,7 +428,8 @@ pub(crate) mod bounds {
     pub(crate) const RATED_CURRENT: Bounds = (1e-4, 1000.0, "from 1e-4 to 1000 A");
     pub(crate) const HOLDING_TORQUE: Bounds = (1e-6, 1e4, "from 1e-6 to 10000 N·m");
     pub(crate) const SUPPLY_VOLTAGE: Bounds = (0.1, 1e5, "from 0.1 to 1e5 V");
-    /// A torque curve's frequencies, Hz, and torques, N·m (above 0).
+    /// A torque curve's frequencies, Hz, and torques, N·m (above 0), as
+    /// [`MotorError::Curve`](super::MotorError::Curve)'s message says them.
     pub(crate) const CURVE_HZ: f64 = 1e8;
     pub(crate) const CURVE_NM: f64 = 1e4;
 
