@@ -42,12 +42,13 @@ impl Linear {
     }
 
     /// The acceleration in Hz/s: given, or `(fmax² - fmin²) / (2 steps)` where
-    /// `steps` is `len` in time and `len - 1` (the article's `trans`) over the index.
+    /// `steps` is `len` in time and `len - 1` (the article's `trans`) over the index:
+    /// infinite over no steps (a `len` a [`Spec`](crate::Spec) refuses).
     pub fn accel(&self, index: bool) -> f64 {
         match self.extent {
             LinearExtent::Accel(a) => a,
             LinearExtent::Len(len) => {
-                let steps = if index { len - 1 } else { len };
+                let steps = if index { len.saturating_sub(1) } else { len };
                 (self.fmax - self.fmin) * (self.fmax + self.fmin) / (2.0 * steps as f64)
             }
         }
@@ -381,6 +382,26 @@ mod tests {
             let r = isqrt(n);
             assert!(r * r <= n && (r + 1) * (r + 1) > n, "{n}");
         }
+    }
+
+    /// A ramp of no steps (`len` 0, or 1 over the index) has no finite
+    /// acceleration: infinite, and the frequency at its top.
+    #[test]
+    fn no_steps_accelerate_infinitely() {
+        for (len, index) in [(0, true), (1, true), (0, false)] {
+            let l = Linear {
+                fmin: 100.0,
+                fmax: 200.0,
+                extent: LinearExtent::Len(len),
+            };
+            assert_eq!(l.accel(index), f64::INFINITY, "{len} {index}");
+        }
+        let l = Linear {
+            fmin: 100.0,
+            fmax: 200.0,
+            extent: LinearExtent::Len(0),
+        };
+        assert_eq!(l.freq_at_index(0), 200.0);
     }
 
     /// The S3C4510 article: f0 500, fmax 5000, trans 200 at 50 MHz, two reloads per step.
