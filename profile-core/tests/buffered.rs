@@ -244,3 +244,14 @@ fn wrapping_a_player() {
     assert!(!stepper.pulse_and_step(|| pulses += 1, |_| panic!("nothing to load")));
     assert_eq!(pulses, 1);
 }
+
+/// A move of `u32::MAX` steps left, the step ahead of the pin counted:
+/// `u32::MAX`, not an overflow.
+#[test]
+fn the_steps_left_stop_at_u32_max() {
+    static RAMP: [u16; 4] = [4000, 3000, 2000, 1500];
+    let mut b = Buffered::new(Player::new(Ramp::steps(&RAMP)));
+    b.start(10);
+    assert!(b.retarget(u32::MAX));
+    assert_eq!(b.remaining(), u32::MAX);
+}

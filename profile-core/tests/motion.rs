@@ -269,3 +269,27 @@ fn through_buffered_the_pins_direction_follows_a_reversal() {
         }
     }
 }
+
+/// At the ends of `i64` the position holds there: a jog past them counts
+/// no further and does not overflow, and a stop still ends the move.
+#[test]
+fn the_position_holds_at_the_ends_of_i64() {
+    static RAMP: [u16; 4] = [4000, 3000, 2000, 1500];
+    for (start, direction) in [
+        (i64::MAX, Direction::Forward),
+        (i64::MAX - 2, Direction::Forward),
+        (i64::MIN, Direction::Backward),
+        (i64::MIN + 2, Direction::Backward),
+    ] {
+        let mut axis = Axis::new(Player::new(Ramp::steps(&RAMP)), start);
+        axis.run(direction);
+        for _ in 0..10 {
+            assert!(axis.next_period().is_some());
+        }
+        let end = if start > 0 { i64::MAX } else { i64::MIN };
+        assert_eq!(axis.position(), end, "{start}");
+        axis.stop();
+        while axis.next_period().is_some() {}
+        assert_eq!(axis.position(), end, "{start}");
+    }
+}

@@ -243,9 +243,11 @@ impl<S: Steps> Buffered<S> {
         self.inner.step_pulsed(pulse, write)
     }
 
-    /// Steps not yet taken.
+    /// Steps not yet taken (at most `u32::MAX`).
     pub fn remaining(&self) -> u32 {
-        self.inner.remaining() + u32::from(!self.inner.ended())
+        self.inner
+            .remaining()
+            .saturating_add(u32::from(!self.inner.ended()))
     }
 
     /// `true` when every step has been taken (the last interval may still
