@@ -475,8 +475,18 @@ fn motor_parameters_are_checked() {
     );
     assert_eq!(
         message(with(|m| m.microsteps = 0)),
-        "`microsteps` must be at least 1 (got 0)"
+        "`microsteps` must be from 1 to 1024 (got 0)"
     );
+    assert_eq!(with(|m| m.microsteps = 1024).validate(), Ok(()));
+    assert_eq!(
+        message(with(|m| m.microsteps = 1025)),
+        "`microsteps` must be from 1 to 1024 (got 1025)"
+    );
+    // A motor refused starts at no rate, whatever it reads: no answer
+    // from figures the model cannot take, and no time spent on them.
+    let refused = with(|m| m.microsteps = u32::MAX);
+    assert!(!refused.starts_at(100.0));
+    assert_eq!(refused.start_limit(1e4), StartLimit::Model { hz: 0.0 });
     assert_eq!(
         message(with(|m| m.rotor_inertia = f64::NAN)),
         "`rotor_inertia` must be from 1e-12 to 10 kg·m² (got NaN)"

@@ -55,6 +55,11 @@ use crate::base::key::Key;
 /// electromagnetic damping is a small fraction of it.
 pub const MAX_DAMPING_RATIO: f64 = 1.0;
 
+/// The most table steps per full step [`Motor::validate`] takes: the finest
+/// microstepping drivers set 1/256, and the check's and the simulation's
+/// work grows with it.
+pub const MAX_MICROSTEPS: u32 = 1024;
+
 /// The most points a pull-out torque curve may have.
 pub const MAX_CURVE_POINTS: usize = 32;
 
@@ -407,6 +412,7 @@ pub(crate) type Bounds = (f64, f64, &'static str);
 /// [`Bounds`] of each figure.
 pub(crate) mod bounds {
     use super::Bounds;
+    #[cfg(feature = "codegen")]
     use crate::base::key::Key;
 
     pub(crate) const STEP_ANGLE: Bounds = (0.01, 180.0, "from 0.01 to 180 degrees");
@@ -434,6 +440,7 @@ pub(crate) mod bounds {
     pub(crate) const CURVE_NM: f64 = 1e4;
 
     /// The bounds of a motor key's number, if it is one of these.
+    #[cfg(feature = "codegen")]
     pub(crate) fn of(key: Key) -> Option<Bounds> {
         Some(match key {
             Key::STEP_ANGLE => STEP_ANGLE,
@@ -472,7 +479,8 @@ impl Motor {
     /// Checks every parameter. Each figure is taken within the range of
     /// every stepper motor, and far beyond, so that a figure outside is a
     /// mistake (a unit, an exponent) and the check's arithmetic stays
-    /// finite: `step_angle` from 0.01 to 180 degrees, `rotor_inertia` from
+    /// finite: `step_angle` from 0.01 to 180 degrees, `microsteps` from 1
+    /// to [`MAX_MICROSTEPS`], `rotor_inertia` from
     /// 1e-12 to 10 kg·m², `load_inertia` from 0 to 10 000 kg·m², `friction`
     /// from 0 to 10 000 N·m, `damping` from 0 to 10 000 N·m·s/rad,
     /// `damping_ratio` from 0 to 1, `safety` from 1 to 1000, `max_start_hz`
@@ -481,11 +489,11 @@ impl Motor {
     /// windings as [`Windings::validate`] checks them.
     pub fn validate(&self) -> Result<(), MotorError> {
         within(Key::STEP_ANGLE, self.step_angle, bounds::STEP_ANGLE)?;
-        if self.microsteps == 0 {
+        if !(1..=MAX_MICROSTEPS).contains(&self.microsteps) {
             return Err(MotorError::Invalid {
                 key: Key::MICROSTEPS,
-                value: 0.0,
-                expected: "at least 1",
+                value: f64::from(self.microsteps),
+                expected: "from 1 to 1024",
             });
         }
         within(

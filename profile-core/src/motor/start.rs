@@ -104,8 +104,12 @@ impl Motor {
     /// Whether the loaded rotor starts from rest at `hz` (table steps per
     /// second): below `max_start_hz` corrected for the load when it is
     /// given, otherwise when the model's rotor follows a constant rate of
-    /// `hz` (pulls in within [`START_FULL_STEPS`] full steps).
+    /// `hz` (pulls in within [`START_FULL_STEPS`] full steps). A motor
+    /// [`Motor::validate`] refuses starts at no rate.
     pub fn starts_at(&self, hz: f64) -> bool {
+        if self.validate().is_err() {
+            return false;
+        }
         match self.max_start_hz {
             Some(_) => hz <= self.start_limit(hz).hz(),
             None => pulls_in(self, hz),
@@ -116,8 +120,12 @@ impl Motor {
     /// for the load when it is given; otherwise the fastest constant rate,
     /// searched by bisection below `below` Hz (to [`START_RESOLUTION`];
     /// geometric first from 1 Hz when `below` is above a million, or
-    /// infinite), at which the model's rotor pulls in from rest.
+    /// infinite), at which the model's rotor pulls in from rest. A motor
+    /// [`Motor::validate`] refuses starts at no rate: `Model` at 0 Hz.
     pub fn start_limit(&self, below: f64) -> StartLimit {
+        if self.validate().is_err() {
+            return StartLimit::Model { hz: 0.0 };
+        }
         if let Some(max_start_hz) = self.max_start_hz {
             let factor = libm::sqrt(1.0 + self.load_inertia / self.rotor_inertia);
             return StartLimit::Corrected {

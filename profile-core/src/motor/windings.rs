@@ -413,17 +413,26 @@ mod tests {
         assert!((450.0..550.0).contains(&zero_from), "{zero_from}");
     }
 
+    /// The largest supply taken, 1e5 V, and one beyond: finite limits, and
+    /// a motor refused starts at no rate.
     #[test]
     fn a_supply_beyond_reason_gives_finite_limits() {
         let motor = Motor::new(1.8, 1, 5.4e-6)
             .with_windings(Windings {
-                supply_voltage: 1e300,
+                supply_voltage: 1e5,
                 ..nema17()
             })
             .with_load_inertia(2.0e-5)
             .with_damping_ratio(0.1);
         let top = motor.top_hz();
-        assert!(top.is_finite() && top > 1e300, "{top}");
+        assert!(top.is_finite() && top > 1e5, "{top}");
+        let mut beyond = motor;
+        beyond.windings = Some(Windings {
+            supply_voltage: 1e300,
+            ..nema17()
+        });
+        assert!(beyond.top_hz().is_finite());
+        assert_eq!(beyond.start_limit(1e6).hz(), 0.0);
         let start = motor.start_limit(top).hz();
         assert!(start > 100.0 && start < 1e6, "{start}");
         let unbounded = motor.start_limit(f64::INFINITY).hz();

@@ -11,7 +11,7 @@ use crate::base::MAX_LEN;
 use crate::base::error::{Error, Num};
 use crate::base::key::Key;
 use crate::curves::Reader;
-use crate::motor::{Drive, MAX_CURVE_POINTS, Motor, TorqueCurve, Windings};
+use crate::motor::{Drive, MAX_CURVE_POINTS, MAX_MICROSTEPS, Motor, TorqueCurve, Windings};
 
 /// 2^53: every integer up to it is exactly a `f64`.
 const EXACT_FLOAT_INT: f64 = 9_007_199_254_740_992.0;
@@ -237,8 +237,8 @@ pub(crate) fn motor<L: Clone>(c: &mut Collector<'_, L>, assumed: &[Key]) -> Opti
         |v| {
             u32::try_from(v)
                 .ok()
-                .filter(|m| (1..=1024).contains(m))
-                .ok_or_else(|| format!("`microsteps` must be from 1 to 1024 (got {v})"))
+                .filter(|m| (1..=MAX_MICROSTEPS).contains(m))
+                .ok_or_else(|| format!("`microsteps` must be from 1 to {MAX_MICROSTEPS} (got {v})"))
         },
     );
     let rotor_inertia = c.float(Key::ROTOR_INERTIA);
