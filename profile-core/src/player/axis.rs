@@ -98,9 +98,9 @@ enum Then {
 #[repr(C)]
 pub struct Axis<'a, W, L = AnyLayout> {
     player: Player<'a, W, L>,
-    /// Where the move playing ends, in steps (before a run's laps): wider
-    /// than a position, so that a run past an end of `i64` is no overflow.
-    end: i128,
+    /// Where the move playing ends, in steps (before a run's laps); like
+    /// the position, it wraps past the ends of `i64`.
+    end: i64,
     direction: Direction,
     /// The move after this one.
     then: Then,
@@ -114,7 +114,7 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
     pub fn new(player: Player<'a, W, L>, position: i64) -> Self {
         Axis {
             player,
-            end: i128::from(position),
+            end: position,
             direction: Direction::Forward,
             then: Then::Rest,
             turn: None,
@@ -126,18 +126,17 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
         i64::from(self.player.remaining()) - self.player.extended() as i64
     }
 
-    /// The position, in steps: exact after every step (held at `i64::MAX`
-    /// or `i64::MIN` by a motor that runs on past them).
+    /// The position, in steps: exact after every step (past `i64::MAX` it
+    /// wraps to `i64::MIN`, and back, as a hardware counter does).
     pub fn position(&self) -> i64 {
-        let at = self.end - i128::from(self.direction.sign() * self.left());
-        i64::try_from(at).unwrap_or(if at < 0 { i64::MIN } else { i64::MAX })
+        self.end.wrapping_sub(self.direction.sign() * self.left())
     }
 
     /// Sets the position (after homing, say), at rest; refused while a move
     /// plays.
     pub fn set_position(&mut self, position: i64) -> Result<(), Moving> {
         self.idle()?;
-        self.end = i128::from(position);
+        self.end = position;
         Ok(())
     }
 
@@ -206,7 +205,7 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
     fn replan(&mut self, change: impl FnOnce(&mut Player<'a, W, L>)) {
         let position = self.position();
         change(&mut self.player);
-        self.end = i128::from(position) + i128::from(self.direction.sign() * self.left());
+        self.end = position.wrapping_add(self.direction.sign() * self.left());
     }
 
     /// Starts a move from rest to `target`.
@@ -220,7 +219,7 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
             Direction::Forward
         };
         self.player.begin(steps);
-        self.end = i128::from(position) + i128::from(self.direction.sign() * i64::from(steps));
+        self.end = position.wrapping_add(self.direction.sign() * i64::from(steps));
     }
 
     /// Decelerates to rest from the current speed ([`Player::stop`]); the
