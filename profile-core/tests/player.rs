@@ -551,6 +551,44 @@ fn empty_segments_play_as_their_expansion() {
     assert_eq!(played, [900, 900, 900, 300, 300, 300, 900, 900, 900]);
 }
 
+/// Entries of any count are planned entry by entry, never step by step: a
+/// player of a held table of 4 294 967 298 steps, not ordered, or of a
+/// segment of `u32::MAX` steps, is made, starts, stops and changes speed at
+/// once, and plays as its entries say.
+#[test]
+fn entries_of_any_count_are_planned_entry_by_entry() {
+    static T: [u16; 3] = [3000, 1000, 2000];
+    let hold = 1_431_655_766;
+    let mut player = Player::new(Ramp::held(&T, hold));
+    player.start(u32::MAX);
+    for _ in 0..1000 {
+        assert_eq!(player.next_period(), Some(3000));
+    }
+    assert_eq!(player.remaining(), u32::MAX - 1000);
+    // The last step of at least 3000 ticks: entry 0's last.
+    player.stop();
+    assert_eq!(player.remaining(), hold);
+
+    // A segment of 2e9 steps plays as one of 100 while the move is far
+    // from its end: up, a slower cruise walked down to, a stop.
+    let play = |count: u32, steps: u32| {
+        let pairs = [(3000u32, 2u32), (1000, count)];
+        let mut player = Player::new(Ramp::segments(&pairs));
+        player.start(steps);
+        let up: Vec<u32> = (0..20).filter_map(|_| player.next_period()).collect();
+        player.set_cruise_period(2000);
+        let down: Vec<u32> = (0..20).filter_map(|_| player.next_period()).collect();
+        player.stop();
+        (up, down, player.remaining())
+    };
+    let (up, down, left) = play(2_000_000_000, u32::MAX);
+    // Walked down to step 1 (3000 ticks): two steps to rest.
+    assert_eq!(left, 2);
+    assert_eq!(up[..3], [3000, 3000, 1000]);
+    assert_eq!(down[..20 - 3], [1000; 17]);
+    assert_eq!(play(100, 1000), (up, down, left));
+}
+
 /// The axis: positions after random moves, stops and cruise changes are the
 /// sum of the steps played, signed by the direction each move reported.
 #[test]

@@ -169,12 +169,25 @@ impl<W: TableWord> Sides<'_, '_, W> {
         // (Two per-step tables are read by `crossing_direct`.)
         let mut d = self.cursor(true, r - 1 - from).unwrap_or(Cursor::ZERO);
         let mut a = self.cursor(false, q).unwrap_or(Cursor::ZERO);
-        for j in from..from + n {
+        let (mut j, to) = (from, from + n);
+        // Held and segment tables: the steps where neither period changes
+        // at once, however many an entry holds (runs change every step).
+        let entries = !matches!(self.accel, Ramp::Runs(_) | Ramp::Indexed(_))
+            && !matches!(self.decel, Ramp::Runs(_) | Ramp::Indexed(_));
+        while j < to {
             if d.period(&self.decel).into_ticks() >= a.period(&self.accel).into_ticks() {
                 return Some(j);
             }
+            if entries {
+                let same = self.skip_entries(&mut d, &mut a, to - 1 - j);
+                if same > 0 {
+                    j += same;
+                    continue;
+                }
+            }
+            let dir = self.toward(a.pos).1;
             d.backward(&self.decel);
-            match self.toward(a.pos).1 {
+            match dir {
                 1 => {
                     a.forward(&self.accel, self.accel_last);
                 }
@@ -183,8 +196,31 @@ impl<W: TableWord> Sides<'_, '_, W> {
                 }
                 _ => {}
             }
+            j += 1;
         }
         to_end
+    }
+
+    /// [`Sides::scan`]'s steps, at most `most`, where the deceleration
+    /// ramp's cursor `d` walking down and the acceleration side's `a`
+    /// walking towards the cruise position stay in their entries of held
+    /// or segment tables, so that neither period changes: both moved past
+    /// them; how many.
+    #[inline(never)]
+    fn skip_entries(&self, d: &mut Cursor, a: &mut Cursor, most: u32) -> u32 {
+        let dir = self.toward(a.pos).1;
+        let to_cruise = match dir {
+            0 => u32::MAX,
+            _ => a.pos.abs_diff(self.cruise),
+        };
+        let same = d
+            .room_in_entry(&self.decel, -1)
+            .min(a.room_in_entry(&self.accel, dir))
+            .min(to_cruise)
+            .min(most);
+        d.skip_in_entry(-1, same);
+        a.skip_in_entry(dir, same);
+        same
     }
 
     /// [`Sides::scan`] on ramps read by position ([`read_directly`]), the

@@ -56,6 +56,7 @@ mod axis;
 mod buffered;
 mod crossing;
 mod direct;
+mod entries;
 mod fill;
 mod layout;
 mod motion;

@@ -111,22 +111,6 @@ impl<'a, W: TableWord> Ramp<'a, W> {
         }
         .unwrap_or(0)
     }
-
-    /// The first step whose period is shorter than `ticks`, or `u32::MAX`.
-    pub(crate) fn first_faster_than(&self, ticks: u32) -> u32 {
-        let Some(mut c) = Cursor::at(self, 0) else {
-            return u32::MAX;
-        };
-        let last = self.len_steps().saturating_sub(1);
-        loop {
-            if c.period(self).into_ticks() < ticks {
-                return c.pos;
-            }
-            if !c.forward(self, last) {
-                return u32::MAX;
-            }
-        }
-    }
 }
 
 /// A position along a ramp, kept as (entry, step within entry) so that
