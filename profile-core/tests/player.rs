@@ -589,6 +589,32 @@ fn entries_of_any_count_are_planned_entry_by_entry() {
     assert_eq!(play(100, 1000), (up, down, left));
 }
 
+/// A held table stops as its expansion into a per-step table (read by
+/// another path), where the stop's walk down a deceleration table not
+/// ordered passes an entry's steps at once.
+#[test]
+fn a_held_table_stops_as_its_expansion() {
+    let held = [3000u16, 2000, 1000, 800];
+    let expanded: Vec<u16> = held.iter().flat_map(|&p| [p; 50]).collect();
+    let decel = [3000u16, 2000, 2500, 1500];
+    let decel_expanded: Vec<u16> = decel.iter().flat_map(|&p| [p; 40]).collect();
+    for played in [10, 70, 120, 180] {
+        let mut a = Player::with_decel(Ramp::held(&held, 50), Ramp::held(&decel, 40));
+        let mut b = Player::with_decel(Ramp::steps(&expanded), Ramp::steps(&decel_expanded));
+        a.start(1000);
+        b.start(1000);
+        for _ in 0..played {
+            assert_eq!(a.next_period(), b.next_period(), "{played}");
+        }
+        a.stop();
+        b.stop();
+        assert_eq!(a.remaining(), b.remaining(), "{played}");
+        let rest: Vec<u16> = std::iter::from_fn(|| a.next_period()).collect();
+        let expected: Vec<u16> = std::iter::from_fn(|| b.next_period()).collect();
+        assert_eq!(rest, expected, "{played}");
+    }
+}
+
 /// The axis: positions after random moves, stops and cruise changes are the
 /// sum of the steps played, signed by the direction each move reported.
 #[test]

@@ -117,7 +117,7 @@ pub(crate) fn last_at_least(
 /// The last position up to `at`'s whose period is at least `ticks`,
 /// `None` when none is, walking down from `at`: on plain runs each run in
 /// closed form ([`last_at_least`]), a step at a time where it does not
-/// hold and on any other ramp.
+/// hold, and on held and segment tables an entry at a time.
 pub(crate) fn last_at_least_from<W: TableWord>(
     mut at: Cursor,
     ramp: &Ramp<'_, W>,
@@ -145,6 +145,8 @@ pub(crate) fn last_at_least_from<W: TableWord>(
         if at.period(ramp).into_ticks() >= ticks {
             return Some(at.pos);
         }
+        // A held or segment table: the entry's steps before are as short.
+        at.skip_in_entry(-1, at.room_in_entry(ramp, -1));
         if !at.backward(ramp) {
             return None;
         }
