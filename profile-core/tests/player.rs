@@ -565,6 +565,9 @@ fn entries_of_any_count_are_planned_entry_by_entry() {
         assert_eq!(player.next_period(), Some(3000));
     }
     assert_eq!(player.remaining(), u32::MAX - 1000);
+    // The last step of at least 2500 ticks is entry 0's last: on to it.
+    player.set_cruise_period(2500);
+    assert_eq!(player.next_period(), Some(3000));
     // The last step of at least 3000 ticks: entry 0's last.
     player.stop();
     assert_eq!(player.remaining(), hold);

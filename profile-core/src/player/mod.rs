@@ -392,20 +392,9 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         }
         let entry = match self.decel.per_step() {
             Some(d) => search::last_at_least(|pos| ticks_at(d, pos), last, slack, current),
-            None => {
-                // Probes near each other: one cursor moves between them,
-                // and walks down from the last (a plain run in closed form).
-                let mut at = self.tops[1];
-                let decel = &self.decel;
-                let mut read = |pos| {
-                    at = Cursor::near(at, decel, pos);
-                    at.map(|c| c.period(decel).into_ticks())
-                };
-                let k = search::short_above(&mut read, last, slack, current);
-                let c = Cursor::near(at, decel, last.saturating_sub(k)).unwrap_or(Cursor::ZERO);
-                // (Step 0 is that long: checked above.)
-                threshold::last_at_least_from(c, decel, current).unwrap_or(0)
-            }
+            // (Step 0 is that long: checked above.)
+            None => threshold::last_at_least_on(&self.decel, self.tops[1], last, slack, current)
+                .unwrap_or(0),
         };
         entry + 1
     }

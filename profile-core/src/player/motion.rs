@@ -5,6 +5,7 @@
 use super::ramp::ticks_at;
 use super::reader::{Reader, RunRead};
 use super::search;
+use super::threshold;
 use super::{Layout, Player, Ramp};
 use crate::base::timer::TableWord;
 
@@ -112,10 +113,8 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
                 let mut accel = RunRead::new(index.runs());
                 accel.last_at_least(last, ticks, slack, 0).unwrap_or(0)
             }
-            (None, _) => {
-                let mut accel = Reader::new(&self.accel, self.tops[0]);
-                search::last_at_least(|pos| accel.ticks(pos), last, slack, ticks)
-            }
+            (None, _) => threshold::last_at_least_on(&self.accel, self.tops[0], last, slack, ticks)
+                .unwrap_or(0),
         }
     }
 

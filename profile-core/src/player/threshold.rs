@@ -153,6 +153,30 @@ pub(crate) fn last_at_least_from<W: TableWord>(
     }
 }
 
+/// The last position up to `last` of `ramp` (not a per-step table) whose
+/// period is at least `ticks`, `slack` the ramp's; `None` when none is.
+/// Probes near each other: one cursor, from `top` (the ramp's top), moves
+/// between the probes of the search past the steps the slack rules out
+/// ([`search::short_above`](super::search::short_above)), and walks down
+/// from the last ([`last_at_least_from`]: plain runs in closed form, held
+/// and segment tables an entry at a time).
+pub(crate) fn last_at_least_on<W: TableWord>(
+    ramp: &Ramp<'_, W>,
+    top: Option<Cursor>,
+    last: u32,
+    slack: u32,
+    ticks: u32,
+) -> Option<u32> {
+    let mut at = top;
+    let mut read = |pos| {
+        at = Cursor::near(at, ramp, pos);
+        at.map(|c| c.period(ramp).into_ticks())
+    };
+    let k = super::search::short_above(&mut read, last, slack, ticks);
+    let c = Cursor::near(at, ramp, last.saturating_sub(k))?;
+    last_at_least_from(c, ramp, ticks)
+}
+
 #[cfg(test)]
 mod tests {
     extern crate std;
