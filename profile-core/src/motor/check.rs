@@ -120,7 +120,7 @@ impl Motor {
         needed: f64,
         each: &mut F,
     ) -> Result<TorqueFigures, MotorError> {
-        let available = self.available(hz);
+        let available = self.available_of_valid(hz);
         for (value, what) in [(needed, "needed"), (available, "available")] {
             if !value.is_finite() {
                 return Err(MotorError::NotFinite { step, what });

@@ -29,6 +29,7 @@
 //! torque in N·m, damping in N·m·s/rad, frequencies in Hz of the table's
 //! steps (microsteps when `microsteps > 1`).
 
+pub(crate) mod bounds;
 mod builder;
 mod check;
 mod chopper;
@@ -403,78 +404,6 @@ fn torque(
 #[cfg(feature = "std")]
 impl std::error::Error for MotorError {}
 
-/// The range a motor's figure is taken in, in the unit of its plain number,
-/// and the words that say so. Every stepper motor and driver lies well
-/// inside: a figure outside is a mistake (a unit, an exponent), and
-/// inside, the check's and the simulation's arithmetic stays finite.
-pub(crate) type Bounds = (f64, f64, &'static str);
-
-/// [`Bounds`] of each figure.
-pub(crate) mod bounds {
-    use super::Bounds;
-    #[cfg(feature = "codegen")]
-    use crate::base::key::Key;
-
-    pub(crate) const STEP_ANGLE: Bounds = (0.01, 180.0, "from 0.01 to 180 degrees");
-    pub(crate) const ROTOR_INERTIA: Bounds = (1e-12, 10.0, "from 1e-12 to 10 kg·m²");
-    pub(crate) const LOAD_INERTIA: Bounds = (0.0, 1e4, "from 0 to 10000 kg·m²");
-    pub(crate) const FRICTION: Bounds = (0.0, 1e4, "from 0 to 10000 N·m");
-    pub(crate) const DAMPING: Bounds = (0.0, 1e4, "from 0 to 10000 N·m·s/rad");
-    pub(crate) const DAMPING_RATIO: Bounds = (
-        0.0,
-        super::MAX_DAMPING_RATIO,
-        "from 0 to 1, a fraction of critical damping: a motor's own electromagnetic \
-         damping is a small fraction of critical, and a larger ratio would drag the \
-         model's rotor along with any field",
-    );
-    pub(crate) const SAFETY: Bounds = (1.0, 1000.0, "from 1 to 1000");
-    pub(crate) const MAX_START_HZ: Bounds = (1e-3, 1e8, "from 0.001 to 1e8 Hz");
-    pub(crate) const RESISTANCE: Bounds = (1e-4, 1e5, "from 1e-4 to 1e5 Ω");
-    pub(crate) const INDUCTANCE: Bounds = (1e-8, 100.0, "from 1e-8 to 100 H");
-    pub(crate) const RATED_CURRENT: Bounds = (1e-4, 1000.0, "from 1e-4 to 1000 A");
-    pub(crate) const HOLDING_TORQUE: Bounds = (1e-6, 1e4, "from 1e-6 to 10000 N·m");
-    pub(crate) const SUPPLY_VOLTAGE: Bounds = (0.1, 1e5, "from 0.1 to 1e5 V");
-    /// A torque curve's frequencies, Hz, and torques, N·m (above 0), as
-    /// [`MotorError::Curve`](super::MotorError::Curve)'s message says them.
-    pub(crate) const CURVE_HZ: f64 = 1e8;
-    pub(crate) const CURVE_NM: f64 = 1e4;
-
-    /// The bounds of a motor key's number, if it is one of these.
-    #[cfg(feature = "codegen")]
-    pub(crate) fn of(key: Key) -> Option<Bounds> {
-        Some(match key {
-            Key::STEP_ANGLE => STEP_ANGLE,
-            Key::ROTOR_INERTIA => ROTOR_INERTIA,
-            Key::LOAD_INERTIA => LOAD_INERTIA,
-            Key::FRICTION => FRICTION,
-            Key::DAMPING => DAMPING,
-            Key::DAMPING_RATIO => DAMPING_RATIO,
-            Key::SAFETY => SAFETY,
-            Key::MAX_START_HZ => MAX_START_HZ,
-            Key::RESISTANCE => RESISTANCE,
-            Key::INDUCTANCE => INDUCTANCE,
-            Key::RATED_CURRENT => RATED_CURRENT,
-            Key::HOLDING_TORQUE => HOLDING_TORQUE,
-            Key::SUPPLY_VOLTAGE => SUPPLY_VOLTAGE,
-            _ => return None,
-        })
-    }
-}
-
-/// `value` of `key` within `bounds`, ends included.
-pub(crate) fn within(key: Key, value: f64, bounds: Bounds) -> Result<(), MotorError> {
-    let (lo, hi, expected) = bounds;
-    if value >= lo && value <= hi {
-        Ok(())
-    } else {
-        Err(MotorError::Invalid {
-            key,
-            value,
-            expected,
-        })
-    }
-}
-
 impl Motor {
     /// Checks every parameter. Each figure is taken within the range of
     /// every stepper motor, and far beyond, so that a figure outside is a
@@ -488,7 +417,6 @@ impl Motor {
     /// to 1e8 Hz, rising, with torques above 0 and at most 10 000 N·m; the
     /// windings as [`Windings::validate`] checks them.
     pub fn validate(&self) -> Result<(), MotorError> {
-        within(Key::STEP_ANGLE, self.step_angle, bounds::STEP_ANGLE)?;
         if !(1..=MAX_MICROSTEPS).contains(&self.microsteps) {
             return Err(MotorError::Invalid {
                 key: Key::MICROSTEPS,
@@ -496,23 +424,7 @@ impl Motor {
                 expected: "from 1 to 1024",
             });
         }
-        within(
-            Key::ROTOR_INERTIA,
-            self.rotor_inertia,
-            bounds::ROTOR_INERTIA,
-        )?;
-        within(Key::LOAD_INERTIA, self.load_inertia, bounds::LOAD_INERTIA)?;
-        within(Key::FRICTION, self.friction, bounds::FRICTION)?;
-        within(Key::DAMPING, self.damping, bounds::DAMPING)?;
-        within(
-            Key::DAMPING_RATIO,
-            self.damping_ratio,
-            bounds::DAMPING_RATIO,
-        )?;
-        within(Key::SAFETY, self.safety, bounds::SAFETY)?;
-        if let Some(hz) = self.max_start_hz {
-            within(Key::MAX_START_HZ, hz, bounds::MAX_START_HZ)?;
-        }
+        bounds::check(&bounds::MOTOR, self)?;
         if let Some(windings) = &self.windings {
             windings.validate()?;
             self.validate_drive(windings.drive)?;
@@ -565,9 +477,17 @@ impl Motor {
         self.step_angle.to_radians() / self.microsteps as f64
     }
 
-    /// Torque available at step frequency `hz` over the safety factor, in N·m.
+    /// Torque available at step frequency `hz` over the safety factor, in
+    /// N·m: 0 for a motor [`Motor::validate`] refuses, and for `hz` not
+    /// finite.
     pub fn available(&self, hz: f64) -> f64 {
         self.pull_out(hz) / self.safety
+    }
+
+    /// [`Motor::available`] for a motor already validated and a finite
+    /// `hz`.
+    pub(crate) fn available_of_valid(&self, hz: f64) -> f64 {
+        self.pull_out_of_valid(hz) / self.safety
     }
 }
 

@@ -492,7 +492,7 @@ pub fn run(
         let duration = p as f64 / per_second;
         let n = substeps(duration, dt_s);
         let h = if n > 0.0 { duration / n } else { 0.0 };
-        let peak = motor.pull_out(per_second / p as f64);
+        let peak = motor.pull_out_of_valid(per_second / p as f64);
         let field_omega = step * per_second / p as f64;
         rotor.advance((cmd, field_omega), peak, n as u64, h, |lag, _, _| {
             if lag.abs() > max_lag {
@@ -511,7 +511,7 @@ pub fn run(
 
     // Settle with the command fixed; the motor holds (0 Hz on the curve).
     let cmd = periods.len() as f64 * step;
-    let holding = motor.pull_out(0.0);
+    let holding = motor.pull_out_of_valid(0.0);
     let overshoot = rotor.settle(cmd, holding, settle_s, dt_s);
     // Trapped: kinetic plus potential energy within the well below the
     // barrier at ±180° electrical, 2 T / poles above its bottom.

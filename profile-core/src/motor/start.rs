@@ -295,7 +295,7 @@ pub(super) fn meets<I: Iterator<Item = f64> + Clone>(
         let n = substeps(duration, dt);
         let h = duration / n;
         let field = step / duration;
-        let peak = motor.available(1.0 / duration);
+        let peak = motor.available_of_valid(1.0 / duration);
         rotor.advance(
             (k as f64 * step, field),
             peak,
@@ -316,7 +316,7 @@ pub(super) fn meets<I: Iterator<Item = f64> + Clone>(
     }
     if end == End::Stop {
         let n = substeps(hold, dt);
-        let holding = motor.available(0.0);
+        let holding = motor.available_of_valid(0.0);
         rotor.advance(
             (count as f64 * step, 0.0),
             holding,

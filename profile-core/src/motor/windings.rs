@@ -48,7 +48,7 @@ use core::f64::consts::SQRT_2;
 use crate::base::key::Key;
 use crate::motor::chopper::Phase;
 use crate::motor::stepped::{FULL_STEPS, HALF_STEPS, SteppedPhase};
-use crate::motor::{Motor, MotorError, bounds, within};
+use crate::motor::{Motor, MotorError, bounds};
 
 /// How the driver sets the phase currents: the waveform its chopper
 /// regulates each phase to, at `rated_current`.
@@ -176,23 +176,7 @@ impl Windings {
     /// 0.1 to 1e5 V), the detent torque 0 or more and below the holding
     /// torque.
     pub fn validate(&self) -> Result<(), MotorError> {
-        within(Key::RESISTANCE, self.resistance, bounds::RESISTANCE)?;
-        within(Key::INDUCTANCE, self.inductance, bounds::INDUCTANCE)?;
-        within(
-            Key::RATED_CURRENT,
-            self.rated_current,
-            bounds::RATED_CURRENT,
-        )?;
-        within(
-            Key::HOLDING_TORQUE,
-            self.holding_torque,
-            bounds::HOLDING_TORQUE,
-        )?;
-        within(
-            Key::SUPPLY_VOLTAGE,
-            self.supply_voltage,
-            bounds::SUPPLY_VOLTAGE,
-        )?;
+        bounds::check(&bounds::WINDINGS, self)?;
         if !(self.detent_torque >= 0.0 && self.detent_torque < self.holding_torque) {
             return Err(MotorError::Invalid {
                 key: Key::DETENT_TORQUE,
@@ -218,8 +202,19 @@ impl Windings {
     /// The pull-out torque at a steady mechanical speed `omega` (rad/s) of
     /// a rotor with `poles` electrical radians per mechanical radian
     /// ([`Motor::poles`](crate::motor::Motor::poles)), in N·m: 0 where the
-    /// windings give no more than the detent torque.
+    /// windings give no more than the detent torque, and 0 for windings
+    /// [`Windings::validate`] refuses, `poles` not finite and above 0, or
+    /// `omega` not finite (the model holds no answer for them).
     pub fn pull_out(&self, poles: f64, omega: f64) -> f64 {
+        let fair = poles.is_finite() && poles > 0.0 && omega.is_finite();
+        if !fair || self.validate().is_err() {
+            return 0.0;
+        }
+        self.pull_out_of_valid(poles, omega)
+    }
+
+    /// [`Windings::pull_out`] for windings and arguments already checked.
+    pub(crate) fn pull_out_of_valid(&self, poles: f64, omega: f64) -> f64 {
         let km = self.torque_constant();
         let (r, volts) = (self.resistance, self.supply_voltage);
         let x = poles * omega.abs() * self.inductance;
@@ -252,8 +247,17 @@ impl Windings {
 impl Motor {
     /// The pull-out torque at step frequency `hz` (table steps per second),
     /// in N·m: `torque_curve` when given, else the one `windings` give at
-    /// that speed, else 0.
+    /// that speed, else 0. 0 for a motor [`Motor::validate`] refuses, and
+    /// for `hz` not finite.
     pub fn pull_out(&self, hz: f64) -> f64 {
+        if !hz.is_finite() || self.validate().is_err() {
+            return 0.0;
+        }
+        self.pull_out_of_valid(hz)
+    }
+
+    /// [`Motor::pull_out`] for a motor already validated and a finite `hz`.
+    pub(crate) fn pull_out_of_valid(&self, hz: f64) -> f64 {
         match (&self.torque_curve, &self.windings) {
             (Some(curve), _) => curve.torque(hz),
             (None, Some(w)) => self.derived(w, hz),
@@ -263,18 +267,25 @@ impl Motor {
 
     /// The pull-out torque `windings` give at step frequency `hz`, in N·m,
     /// whether or not a measured curve is given: to compare the two.
+    /// `None` without windings, for a motor [`Motor::validate`] refuses,
+    /// and for `hz` not finite.
     pub fn derived_pull_out(&self, hz: f64) -> Option<f64> {
+        if !hz.is_finite() || self.validate().is_err() {
+            return None;
+        }
         self.windings.as_ref().map(|w| self.derived(w, hz))
     }
 
     fn derived(&self, windings: &Windings, hz: f64) -> f64 {
-        windings.pull_out(self.poles(), hz * self.step_radians())
+        windings.pull_out_of_valid(self.poles(), hz * self.step_radians())
     }
 
     /// The largest pull-out torque, in N·m: the curve's largest point, or
-    /// the windings' torque at rest (it falls with speed).
+    /// the windings' torque at rest (it falls with speed). 0 for a motor
+    /// [`Motor::validate`] refuses.
     pub fn peak_torque(&self) -> f64 {
         match &self.torque_curve {
+            Some(_) if self.validate().is_err() => 0.0,
             Some(curve) => curve.points().iter().fold(0.0f64, |m, &(_, nm)| m.max(nm)),
             None => self.pull_out(0.0),
         }
@@ -284,13 +295,16 @@ impl Motor {
     /// the torque curve's last point, or where the windings' torque has
     /// fallen to a hundredth of the torque at rest (or to nothing, with
     /// detent torque). Beyond it a search for the motor's limits need not
-    /// look.
+    /// look. 0 for a motor [`Motor::validate`] refuses.
     pub fn top_hz(&self) -> f64 {
+        if self.validate().is_err() {
+            return 0.0;
+        }
         match (&self.torque_curve, &self.windings) {
             (Some(curve), _) => curve.top(),
             (None, Some(_)) => {
-                let floor = self.pull_out(0.0) / 100.0;
-                let low = |hz: f64| self.pull_out(hz) <= floor;
+                let floor = self.pull_out_of_valid(0.0) / 100.0;
+                let low = |hz: f64| self.pull_out_of_valid(hz) <= floor;
                 // Doubling, then halving, each with a bound: the torque
                 // falls with speed, as `1/ω` at the top.
                 // A torque that never falls (a supply beyond any the model
@@ -440,5 +454,70 @@ mod tests {
             (unbounded / start - 1.0).abs() < 2e-3,
             "{unbounded} against {start}"
         );
+    }
+
+    /// Windings and motors `validate` refuses, and arguments the model has
+    /// no answer for, give no torque and no top frequency: not a figure
+    /// made of them (a resistance of -1 gave a top frequency of 1e300).
+    #[test]
+    fn refused_figures_give_no_torque() {
+        let bad = [-1e300, -1.0, 0.0, 1e-300, 1e300, f64::NAN, f64::INFINITY];
+        for drive in [Drive::Sine, Drive::HalfStep, Drive::FullStep] {
+            for field in 0..6 {
+                for &value in &bad {
+                    let mut w = nema17().with_drive(drive);
+                    let slot = match field {
+                        0 => &mut w.resistance,
+                        1 => &mut w.inductance,
+                        2 => &mut w.rated_current,
+                        3 => &mut w.holding_torque,
+                        4 => &mut w.supply_voltage,
+                        _ => &mut w.detent_torque,
+                    };
+                    *slot = value;
+                    if w.validate().is_ok() {
+                        continue;
+                    }
+                    let motor = Motor::new(1.8, drive_steps(drive), 5.4e-6).with_windings(w);
+                    let case = (drive, field, value);
+                    assert_eq!(w.pull_out(50.0, 10.0), 0.0, "{case:?}");
+                    assert_eq!(motor.pull_out(100.0), 0.0, "{case:?}");
+                    assert_eq!(motor.available(100.0), 0.0, "{case:?}");
+                    assert_eq!(motor.derived_pull_out(100.0), None, "{case:?}");
+                    assert_eq!(motor.peak_torque(), 0.0, "{case:?}");
+                    assert_eq!(motor.top_hz(), 0.0, "{case:?}");
+                    assert_eq!(motor.stiffness(), 0.0, "{case:?}");
+                }
+            }
+        }
+        let good = nema17();
+        for (poles, omega) in [
+            (0.0, 10.0),
+            (-50.0, 10.0),
+            (f64::NAN, 10.0),
+            (50.0, f64::NAN),
+        ] {
+            assert_eq!(good.pull_out(poles, omega), 0.0, "{poles} {omega}");
+        }
+        assert!(good.pull_out(50.0, 10.0) > 0.3);
+        let motor = Motor::new(1.8, 8, 5.4e-6).with_windings(good);
+        assert!(motor.pull_out(100.0) > 0.3);
+        for hz in [f64::NAN, f64::INFINITY] {
+            assert_eq!(motor.pull_out(hz), 0.0);
+            assert_eq!(motor.derived_pull_out(hz), None);
+        }
+        let refused = Motor::new(f64::NAN, 8, 5.4e-6).with_windings(good);
+        assert_eq!((refused.pull_out(100.0), refused.top_hz()), (0.0, 0.0));
+        let curve = crate::motor::TorqueCurve::new(&[(0.0, 0.4), (1000.0, 0.3)]).unwrap();
+        let refused = Motor::new(1.8, 0, 5.4e-6).with_torque_curve(curve);
+        assert_eq!((refused.pull_out(100.0), refused.peak_torque()), (0.0, 0.0));
+    }
+
+    fn drive_steps(drive: Drive) -> u32 {
+        match drive {
+            Drive::Sine => 8,
+            Drive::HalfStep => 2,
+            Drive::FullStep => 1,
+        }
     }
 }

@@ -156,7 +156,9 @@ fn own_problem<L: Clone>(arg: &Arg<L>, key: Key) -> Option<Diagnostic<L>> {
         _ => return None,
     };
     let message = match crate::motor::bounds::of(key) {
-        Some(bounds) => crate::motor::within(key, value, bounds).err()?.to_string(),
+        Some(bounds) => crate::motor::bounds::within(key, value, bounds)
+            .err()?
+            .to_string(),
         None if !value.is_finite() => Error::NotFinite { key, value }.to_string(),
         None => return None,
     };
