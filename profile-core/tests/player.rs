@@ -592,6 +592,58 @@ fn entries_of_any_count_are_planned_entry_by_entry() {
     assert_eq!(play(100, 1000), (up, down, left));
 }
 
+/// A run on compressed runs, decelerating along a held table not ordered
+/// of `u32::MAX` steps an entry, plays as on the runs' expansion into a
+/// per-step table: its crossing is scanned an entry at a time once the
+/// acceleration side holds (step by step, the scan took seconds).
+#[test]
+fn a_run_onto_a_held_table_scans_it_entry_by_entry() {
+    use profile_core::runs::LinearRun;
+    let runs: Vec<[u16; 5]> = [(20, 3000u32, 0), (30, 2400, -9000), (40, 1900, -2000)]
+        .iter()
+        .map(|&(count, ticks, add)| {
+            LinearRun {
+                count,
+                interval: ticks << 16,
+                add,
+            }
+            .encode()
+        })
+        .collect();
+    let expanded: Vec<u32> = Expand::new(&runs).collect();
+    // Moves whose deceleration takes over once the runs are climbed (at
+    // about 1900 ticks), within the slow entries' steps, as on the
+    // expansions of both ramps (read directly).
+    let moves = [3000u32, 5000, 1000, 1200, 1100];
+    let decel_expanded: Vec<u32> = moves.iter().flat_map(|&p| [p; 40]).collect();
+    for steps in [50, 120, 150, 170, 190, 200, 230, 400] {
+        let mut a = Player::with_decel(Ramp::runs(&runs), Ramp::held(&moves, 40));
+        let mut c = Player::with_decel(Ramp::steps(&expanded), Ramp::steps(&decel_expanded));
+        a.start(steps);
+        c.start(steps);
+        let all = |p: &mut Player<'_, u32>| -> Vec<u32> {
+            core::iter::from_fn(|| p.next_period()).collect()
+        };
+        assert_eq!(all(&mut a), all(&mut c), "{steps}");
+    }
+    let decel = [1000u32, 5000, 1500, 4000, 2500];
+    let mut a = Player::with_decel(Ramp::runs(&runs), Ramp::held(&decel, u32::MAX));
+    let mut b = Player::with_decel(Ramp::steps(&expanded), Ramp::held(&decel, u32::MAX));
+    for player in [&mut a, &mut b] {
+        player.run();
+    }
+    let played = |p: &mut Player<'_, u32>| -> Vec<u32> {
+        (0..300).filter_map(|_| p.next_period()).collect()
+    };
+    let (up, expected) = (played(&mut a), played(&mut b));
+    assert_eq!(up, expected);
+    assert_eq!(up[..3], expanded[..3]);
+    a.stop();
+    b.stop();
+    assert_eq!(a.remaining(), b.remaining());
+    assert_eq!(played(&mut a), played(&mut b));
+}
+
 /// A held table stops as its expansion into a per-step table (read by
 /// another path), where the stop's walk down a deceleration table not
 /// ordered passes an entry's steps at once.

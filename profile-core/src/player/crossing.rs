@@ -170,10 +170,11 @@ impl<W: TableWord> Sides<'_, '_, W> {
         let mut d = self.cursor(true, r - 1 - from).unwrap_or(Cursor::ZERO);
         let mut a = self.cursor(false, q).unwrap_or(Cursor::ZERO);
         let (mut j, to) = (from, from + n);
-        // Held and segment tables: the steps where neither period changes
-        // at once, however many an entry holds (runs change every step).
-        let entries = !matches!(self.accel, Ramp::Runs(_) | Ramp::Indexed(_))
-            && !matches!(self.decel, Ramp::Runs(_) | Ramp::Indexed(_));
+        // A held or segment deceleration table: the steps where neither
+        // period changes at once, however many an entry holds, the
+        // acceleration side in an entry of such a table or holding at
+        // the cruise position (runs change every step).
+        let entries = !matches!(self.decel, Ramp::Runs(_) | Ramp::Indexed(_));
         while j < to {
             if d.period(&self.decel).into_ticks() >= a.period(&self.accel).into_ticks() {
                 return Some(j);

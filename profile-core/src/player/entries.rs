@@ -53,8 +53,11 @@ impl Cursor {
     /// Steps it can take `dir` (1 towards the fast end, -1 towards the
     /// slow end) on a held or segment table without leaving its entry, so
     /// without a change of period: 0 on runs, whose period changes every
-    /// step.
+    /// step; any number standing (`dir` 0), on any ramp.
     pub(crate) fn room_in_entry<W: TableWord>(&self, ramp: &Ramp<'_, W>, dir: i8) -> u32 {
+        if dir == 0 {
+            return u32::MAX;
+        }
         let count = match *ramp {
             Ramp::Steps { hold, .. } => hold.max(1),
             Ramp::Segments(pairs) => pairs
@@ -64,8 +67,7 @@ impl Cursor {
         };
         match dir {
             1 => count.saturating_sub(self.within + 1),
-            -1 => self.within,
-            _ => u32::MAX,
+            _ => self.within,
         }
     }
 
