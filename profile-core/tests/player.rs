@@ -644,6 +644,60 @@ fn a_run_onto_a_held_table_scans_it_entry_by_entry() {
     assert_eq!(played(&mut a), played(&mut b));
 }
 
+/// A held acceleration table not ordered, its entries of any count, takes
+/// a new target while decelerating, and a slower cruise, as its expansion
+/// into a per-step table does (read by another path): its entry of the
+/// current speed is found an entry at a time (step by step, a run taken
+/// while decelerating took 24 s on entries of `u32::MAX` steps).
+#[test]
+fn a_held_table_retargets_as_its_expansion() {
+    let held = [3000u32, 2000, 2500, 1000, 1500];
+    let expanded: Vec<u32> = held.iter().flat_map(|&p| [p; 30]).collect();
+    let decel: Vec<u32> = (0..60).map(|i| 3000 - 20 * i).collect();
+    let all =
+        |p: &mut Player<'_, u32>| -> Vec<u32> { core::iter::from_fn(|| p.next_period()).collect() };
+    // Targets taken while decelerating: the acceleration ramp entered at
+    // its first step not slower than the speed.
+    for (steps, played, target) in [
+        (200, 160, 300),
+        (300, 280, 100),
+        (120, 100, 90),
+        (400, 350, 500),
+        (400, 380, 200),
+    ] {
+        let mut a = Player::with_decel(Ramp::held(&held, 30), Ramp::steps(&decel));
+        let mut b = Player::with_decel(Ramp::steps(&expanded), Ramp::steps(&decel));
+        a.start(steps);
+        b.start(steps);
+        for _ in 0..played {
+            assert_eq!(a.next_period(), b.next_period(), "{steps} {played}");
+        }
+        assert_eq!(a.retarget(target), b.retarget(target), "{steps} {played}");
+        assert_eq!(all(&mut a), all(&mut b), "{steps} {played} {target}");
+    }
+    for (steps, played, cruise) in [(400, 130, 0), (400, 100, 40), (1000, 140, 70)] {
+        let mut a = Player::with_decel(Ramp::held(&held, 30), Ramp::steps(&decel));
+        let mut b = Player::with_decel(Ramp::steps(&expanded), Ramp::steps(&decel));
+        a.start(steps);
+        b.start(steps);
+        for _ in 0..played {
+            assert_eq!(a.next_period(), b.next_period(), "{steps} {played}");
+        }
+        a.set_cruise(cruise);
+        b.set_cruise(cruise);
+        assert_eq!(all(&mut a), all(&mut b), "{steps} {played} {cruise}");
+    }
+    // Entries of `u32::MAX` steps: a run stopped, then run again while
+    // decelerating.
+    let mut player = Player::with_decel(Ramp::held(&held, u32::MAX), Ramp::steps(&decel));
+    player.run();
+    assert_eq!(player.next_period(), Some(3000));
+    player.stop();
+    player.run();
+    assert!(player.is_running());
+    assert_eq!(player.next_period(), Some(3000));
+}
+
 /// A held table stops as its expansion into a per-step table (read by
 /// another path), where the stop's walk down a deceleration table not
 /// ordered passes an entry's steps at once.

@@ -195,6 +195,16 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
                 let lo = if long > 0 { long + 1 } else { 0 };
                 search::first_at_most_in(|pos| accel.ticks(pos), lo, near, last, slack, current)
             }
+            // Held and segment tables entry by entry, whatever an entry's
+            // count: the first step not longer, exactly as the search
+            // finds it (no step before it is).
+            (None, Ramp::Steps { .. } | Ramp::Segments(_)) => match current.checked_add(1) {
+                Some(above) => match self.accel.first_faster_than(above) {
+                    u32::MAX => last,
+                    pos => pos,
+                },
+                None => 0,
+            },
             (None, _) => {
                 let mut accel = Reader::new(&self.accel, self.tops[0]);
                 search::first_at_most(|pos| accel.ticks(pos), last, slack, current)
