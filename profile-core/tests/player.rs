@@ -654,8 +654,22 @@ fn a_held_table_retargets_as_its_expansion() {
     let held = [3000u32, 2000, 2500, 1000, 1500];
     let expanded: Vec<u32> = held.iter().flat_map(|&p| [p; 30]).collect();
     let decel: Vec<u32> = (0..60).map(|i| 3000 - 20 * i).collect();
-    let all =
-        |p: &mut Player<'_, u32>| -> Vec<u32> { core::iter::from_fn(|| p.next_period()).collect() };
+    // The held table and its expansion, `played` steps into a move of
+    // `steps`, then changed alike: the rest of each move.
+    let both = |steps: u32, played: u32, change: &dyn Fn(&mut Player<'_, u32>) -> bool| {
+        let mut a = Player::with_decel(Ramp::held(&held, 30), Ramp::steps(&decel));
+        let mut b = Player::with_decel(Ramp::steps(&expanded), Ramp::steps(&decel));
+        a.start(steps);
+        b.start(steps);
+        for _ in 0..played {
+            assert_eq!(a.next_period(), b.next_period(), "{steps} {played}");
+        }
+        assert_eq!(change(&mut a), change(&mut b), "{steps} {played}");
+        let rest = |p: &mut Player<'_, u32>| -> Vec<u32> {
+            core::iter::from_fn(|| p.next_period()).collect()
+        };
+        assert_eq!(rest(&mut a), rest(&mut b), "{steps} {played}");
+    };
     // Targets taken while decelerating: the acceleration ramp entered at
     // its first step not slower than the speed.
     for (steps, played, target) in [
@@ -665,27 +679,13 @@ fn a_held_table_retargets_as_its_expansion() {
         (400, 350, 500),
         (400, 380, 200),
     ] {
-        let mut a = Player::with_decel(Ramp::held(&held, 30), Ramp::steps(&decel));
-        let mut b = Player::with_decel(Ramp::steps(&expanded), Ramp::steps(&decel));
-        a.start(steps);
-        b.start(steps);
-        for _ in 0..played {
-            assert_eq!(a.next_period(), b.next_period(), "{steps} {played}");
-        }
-        assert_eq!(a.retarget(target), b.retarget(target), "{steps} {played}");
-        assert_eq!(all(&mut a), all(&mut b), "{steps} {played} {target}");
+        both(steps, played, &|p| p.retarget(target));
     }
     for (steps, played, cruise) in [(400, 130, 0), (400, 100, 40), (1000, 140, 70)] {
-        let mut a = Player::with_decel(Ramp::held(&held, 30), Ramp::steps(&decel));
-        let mut b = Player::with_decel(Ramp::steps(&expanded), Ramp::steps(&decel));
-        a.start(steps);
-        b.start(steps);
-        for _ in 0..played {
-            assert_eq!(a.next_period(), b.next_period(), "{steps} {played}");
-        }
-        a.set_cruise(cruise);
-        b.set_cruise(cruise);
-        assert_eq!(all(&mut a), all(&mut b), "{steps} {played} {cruise}");
+        both(steps, played, &|p| {
+            p.set_cruise(cruise);
+            true
+        });
     }
     // Entries of `u32::MAX` steps: a run stopped, then run again while
     // decelerating.
