@@ -458,7 +458,7 @@ mod tests {
 
     /// Windings and motors `validate` refuses, and arguments the model has
     /// no answer for, give no torque and no top frequency: not a figure
-    /// made of them (a resistance of -1 gave a top frequency of 1e300).
+    /// made of them (a resistance of -1 Ω gave 0.4 N·m up to 3.8 MHz).
     #[test]
     fn refused_figures_give_no_torque() {
         let bad = [-1e300, -1.0, 0.0, 1e-300, 1e300, f64::NAN, f64::INFINITY];
