@@ -47,7 +47,7 @@ mod tests {
     //! streams through `period_table!`'s expansion, called through
     //! `proc_macro2`. It must return tokens (a table or `compile_error!`s),
     //! never panic. `FUZZ_CASES` sets the number of cases (default 5000),
-    //! `FUZZ_SEED` the generator's seed (a number other than 0).
+    //! `FUZZ_STATE` the generator's first state (a number other than 0).
 
     use super::*;
 
@@ -203,8 +203,10 @@ mod tests {
             .ok()
             .and_then(|v| v.parse().ok())
             .unwrap_or(5000);
-        let seed = std::env::var("FUZZ_SEED").ok().and_then(|v| v.parse().ok());
-        let mut rng = Rng(seed.unwrap_or(0x5eed_0003));
+        let state = std::env::var("FUZZ_STATE")
+            .ok()
+            .and_then(|v| v.parse().ok());
+        let mut rng = Rng(state.unwrap_or(0x5eed_0003));
         let keys = keys();
         let pieces: Vec<&str> = keys.iter().chain(PIECES).copied().collect();
         let (mut tables, mut errors) = (0, 0);
