@@ -49,8 +49,19 @@ fn check(accel: &[[u16; 5]], decel: &[[u16; 5]], ops: &[Op]) -> Result<u64, Test
     let (a_index, d_index) = (RunIndex::new(&a_all), RunIndex::new(&d_all));
     let mut reference = Player::with_decel(Ramp::steps(&a_steps), Ramp::steps(&d_steps));
     let mut plain = Player::<u16, _>::compressed_with_decel(accel, decel);
-    let mut indexed = Player::<u16, _>::compressed_indexed_with_decel(&a_index, &d_index);
-    let mut any = Player::with_decel(Ramp::indexed(&a_index), Ramp::indexed(&d_index));
+    // One ramp both ways is one index, as `compressed_indexed` makes it
+    // (the planner knows the two ramps for one); else two.
+    let (mut indexed, mut any) = if accel == decel {
+        (
+            Player::<u16, _>::compressed_indexed(&a_index),
+            Player::new(Ramp::indexed(&a_index)),
+        )
+    } else {
+        (
+            Player::<u16, _>::compressed_indexed_with_decel(&a_index, &d_index),
+            Player::with_decel(Ramp::indexed(&a_index), Ramp::indexed(&d_index)),
+        )
+    };
     let mut steps = 0u64;
     for (i, op) in ops.iter().enumerate() {
         match *op {
