@@ -69,12 +69,18 @@ impl<W: TableWord> Sides<'_, '_, W> {
                 // The last step of the ramp at least that long, in closed
                 // form; the crossing's cursor where it stands. On one ramp
                 // both ways, no step after the held one's run is searched
-                // for before it: the held step itself is that long.
+                // for before it: the held step itself is that long; and
+                // none at all when no later step is as long as the cruise
+                // position's, which is then the entry.
                 let (runs, top) = (index.runs(), (r - 1).checked_sub(walked_down));
                 let from = match (self.accel, self.read_at(q), top) {
                     (Ramp::Indexed(a), Some(c), Some(top))
                         if core::ptr::eq(a.runs(), runs) && q <= top =>
                     {
+                        if self.cruise_last && q == self.cruise {
+                            self.crossed.set(Some(c));
+                            return r - 1 - q;
+                        }
                         c.entry + 1
                     }
                     _ => 0,

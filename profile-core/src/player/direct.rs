@@ -172,6 +172,7 @@ mod tests {
             decel_fastest,
             cap: accel.first_faster_than(decel_fastest),
             cruise,
+            cruise_last: false,
             slack: search::slack(&accel) + search::slack(&decel),
             decel_slack: search::slack(&decel),
             tops,

@@ -127,6 +127,11 @@ pub struct Player<'a, W, L = AnyLayout> {
     /// The first acceleration step faster than `decel_fastest`.
     cap: u32,
     cruise: u32,
+    /// No step after the cruise position is known to be as long as it
+    /// (so it is its own crossing's entry, on one indexed ramp both ways):
+    /// at the ramp's top, or found on an indexed ramp by
+    /// [`Player::set_cruise_period`].
+    cruise_last: bool,
     /// The ramps' slack added ([`search::slack`]): how far from ordered
     /// slow to fast they are, for planning's searches.
     slack: u32,
@@ -221,6 +226,7 @@ macro_rules! sides {
             decel_fastest: $player.decel_fastest,
             cap: $player.cap,
             cruise: $player.cruise,
+            cruise_last: $player.cruise_last,
             slack: $player.slack,
             decel_slack: $player.decel_slack,
             tops: &$player.tops,
@@ -243,6 +249,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             decel_fastest,
             cap: accel.first_faster_than(decel_fastest),
             cruise: accel_last,
+            cruise_last: true,
             slack: search::slack(&accel).saturating_add(search::slack(&decel)),
             accel_slack: search::slack(&accel),
             decel_slack: search::slack(&decel),
@@ -295,7 +302,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// Starts a move of `steps` steps from rest, cruising at the top of the
     /// acceleration ramp. A move on an empty ramp has no steps.
     pub fn start(&mut self, steps: u32) {
-        self.cruise = self.accel_last;
+        (self.cruise, self.cruise_last) = (self.accel_last, true);
         self.begin(steps);
     }
 
@@ -317,7 +324,14 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// table without divider) instead of its top; takes effect by walking the
     /// ramp up or down one step per step. Clamped to the ramp.
     pub fn set_cruise(&mut self, pos: u32) {
+        self.cruise_at(pos, false);
+    }
+
+    /// [`Player::set_cruise`], `last` when no later step is known to be
+    /// as long as the one at `pos`.
+    fn cruise_at(&mut self, pos: u32, last: bool) {
         self.cruise = pos.min(self.accel_last);
+        self.cruise_last = last || self.cruise == self.accel_last;
         let remaining = self.remaining();
         if remaining > 0 {
             let (acc, decelerating, last) = self.now();

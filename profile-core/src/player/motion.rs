@@ -98,23 +98,32 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// assert_eq!(jog, [4000, 3000, 3000, 3000]);
     /// ```
     pub fn set_cruise_period(&mut self, period: W) {
-        let pos = self.cruise_position(period.into_ticks());
-        self.set_cruise(pos);
+        let (pos, last) = self.cruise_position(period.into_ticks());
+        self.cruise_at(pos, last);
     }
 
     /// The position [`Player::set_cruise_period`] cruises at: the last
-    /// whose period is not shorter than `ticks`, 0 when none is.
-    fn cruise_position(&self, ticks: u32) -> u32 {
+    /// whose period is not shorter than `ticks`, 0 when none is; whether
+    /// no later step is known to be as long as it (on an indexed ramp,
+    /// where a plan uses it: the step found is that long).
+    fn cruise_position(&self, ticks: u32) -> (u32, bool) {
         let (last, slack) = (self.accel_last, self.accel_slack);
         match (self.accel.per_step(), self.accel) {
-            (Some(a), _) => search::last_at_least(|pos| ticks_at(a, pos), last, slack, ticks),
+            (Some(a), _) => (
+                search::last_at_least(|pos| ticks_at(a, pos), last, slack, ticks),
+                false,
+            ),
             (None, Ramp::Indexed(index)) => {
                 // The runs' first periods, then each run in closed form.
                 let mut accel = RunRead::new(index.runs());
-                accel.last_at_least(last, ticks, slack, 0).unwrap_or(0)
+                let found = accel.last_at_least(last, ticks, slack, 0);
+                (found.unwrap_or(0), found.is_some())
             }
-            (None, _) => threshold::last_at_least_on(&self.accel, self.tops[0], last, slack, ticks)
-                .unwrap_or(0),
+            (None, _) => (
+                threshold::last_at_least_on(&self.accel, self.tops[0], last, slack, ticks)
+                    .unwrap_or(0),
+                false,
+            ),
         }
     }
 

@@ -193,6 +193,8 @@ pub(crate) struct Sides<'t, 'a, W> {
     /// The first acceleration step faster than `decel_fastest`.
     pub(crate) cap: u32,
     pub(crate) cruise: u32,
+    /// No step after the cruise position is known to be as long as it.
+    pub(crate) cruise_last: bool,
     /// The two ramps' slack ([`search::slack`](super::search::slack))
     /// added: a deceleration step that far faster than the acceleration
     /// side has every step before it faster too.
