@@ -327,11 +327,11 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         self.cruise_at(pos, false);
     }
 
-    /// [`Player::set_cruise`], `last` when no later step is known to be
-    /// as long as the one at `pos`.
-    fn cruise_at(&mut self, pos: u32, last: bool) {
+    /// [`Player::set_cruise`], `none_later` when no later step is known
+    /// to be as long as the one at `pos`.
+    fn cruise_at(&mut self, pos: u32, none_later: bool) {
         self.cruise = pos.min(self.accel_last);
-        self.cruise_last = last || self.cruise == self.accel_last;
+        self.cruise_last = none_later || self.cruise == self.accel_last;
         let remaining = self.remaining();
         if remaining > 0 {
             let (acc, decelerating, last) = self.now();

@@ -98,8 +98,8 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// assert_eq!(jog, [4000, 3000, 3000, 3000]);
     /// ```
     pub fn set_cruise_period(&mut self, period: W) {
-        let (pos, last) = self.cruise_position(period.into_ticks());
-        self.cruise_at(pos, last);
+        let (pos, none_later) = self.cruise_position(period.into_ticks());
+        self.cruise_at(pos, none_later);
     }
 
     /// The position [`Player::set_cruise_period`] cruises at: the last
