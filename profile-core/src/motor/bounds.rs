@@ -102,10 +102,10 @@ pub(crate) fn of(key: Key) -> Option<Bounds> {
         .map(|(_, b)| b)
 }
 
-/// Checks each row's figure that `of` holds against its bounds.
-pub(crate) fn check<T>(rows: &[Row<T>], of: &T) -> Result<(), MotorError> {
+/// Checks each row's figure that `figures` hold against its bounds.
+pub(crate) fn check<T>(rows: &[Row<T>], figures: &T) -> Result<(), MotorError> {
     for &(key, bounds, read) in rows {
-        if let Some(value) = read(of) {
+        if let Some(value) = read(figures) {
             within(key, value, bounds)?;
         }
     }

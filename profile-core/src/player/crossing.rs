@@ -70,8 +70,8 @@ impl<W: TableWord> Sides<'_, '_, W> {
                 // form; the crossing's cursor where it stands. On one ramp
                 // both ways, no step after the held one's run is searched
                 // for before it: the held step itself is that long; and
-                // none at all when no later step is as long as the cruise
-                // position's, which is then the entry.
+                // none at all when no later step is known to be as long as
+                // the cruise position's, which is then the entry.
                 let (runs, top) = (index.runs(), (r - 1).checked_sub(walked_down));
                 let from = match (self.accel, self.read_at(q), top) {
                     (Ramp::Indexed(a), Some(c), Some(top))
