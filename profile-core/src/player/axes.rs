@@ -97,6 +97,14 @@ pub struct Axes<'a, W, const N: usize, L = AnyLayout> {
     turn: Option<([Direction; N], u32)>,
 }
 
+/// Built for Armv6-M or Armv8-M Baseline (the build script's cfg): eight
+/// low registers and no `ldrd`/`strd`. There each follower's accumulator
+/// is stored as soon as it is moved on, and a carry reads `L` and the bit
+/// through one register, so that the step keeps every value in a register
+/// and saves an even number of them (no stack slot, no padding); elsewhere
+/// a pair of accumulators is stored with one `strd`.
+const LOW_REGISTERS: bool = cfg!(thumb_low_registers);
+
 /// The followers' accumulators, laid out for the step path: the mask of an
 /// edge where no follower's count changes first, then the followers
 /// (`1..N`, in the order of their axes) in pairs, each follower's increment
@@ -186,6 +194,13 @@ impl<const N: usize> Edges<N> {
     /// than its body.
     #[inline(always)]
     fn next(&mut self) -> u32 {
+        self.next_ordered::<LOW_REGISTERS>()
+    }
+
+    /// [`Edges::next`], each accumulator stored as soon as it has moved on
+    /// if `EACH` ([`LOW_REGISTERS`]), else in pairs.
+    #[inline(always)]
+    fn next_ordered<const EACH: bool>(&mut self) -> u32 {
         let mut mask = self.base;
         // Follower `j`'s accumulator moved on, its bit of the mask flipped
         // when it carries: an addition and a branch, and where it carries
@@ -197,7 +212,16 @@ impl<const N: usize> Edges<N> {
             let (sum, carry) = acc.overflowing_add(inc);
             if carry {
                 compiler_fence(Ordering::SeqCst);
-                let [lead_steps, bit] = self.steps.get(j - 1).copied().unwrap_or([0; 2]);
+                let steps = |j: usize| self.steps.get(j - 1).copied().unwrap_or([0; 2]);
+                if EACH {
+                    // `L` and the bit through one register, one after
+                    // the other.
+                    let sum = sum.wrapping_sub(steps(j)[0]);
+                    compiler_fence(Ordering::SeqCst);
+                    mask ^= steps(j)[1];
+                    return sum;
+                }
+                let [lead_steps, bit] = steps(j);
                 mask ^= bit;
                 return sum.wrapping_sub(lead_steps);
             }
@@ -207,12 +231,22 @@ impl<const N: usize> Edges<N> {
             ($($j:literal)*) => {$(
                 if let (true, Some(&[inc, acc])) = ($j < N, self.slot.get($j - 1)) {
                     let first = follow(acc, inc, $j);
+                    let store_first = |slot: &mut [[u32; 2]; N]| {
+                        if let Some(slot) = slot.get_mut($j - 1) {
+                            slot[1] = first;
+                        }
+                    };
+                    // At once on eight low registers; else beside the
+                    // second's, one `strd`.
+                    if EACH {
+                        store_first(&mut self.slot);
+                    }
                     let second = match self.slot.get($j) {
                         Some(&[acc, inc]) if $j + 1 < N => Some(follow(acc, inc, $j + 1)),
                         _ => None,
                     };
-                    if let Some(slot) = self.slot.get_mut($j - 1) {
-                        slot[1] = first;
+                    if !EACH {
+                        store_first(&mut self.slot);
                     }
                     if let (Some(slot), Some(acc)) = (self.slot.get_mut($j), second) {
                         slot[0] = acc;
@@ -389,7 +423,7 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     /// half the lead's steps where it does not) a subtraction and its bit
     /// of the mask flipped. Three axes (two followers stepping on 86 % and
     /// 25 % of the lead's steps) take 9.2 instructions per step
-    /// more than the player on a Cortex-M3 or M4F and 15.6 on an M0
+    /// more than the player on a Cortex-M3 or M4F and 12.5 on an M0
     /// (`examples/measure/measure.sh`). `write` is called
     /// once a step at most; it is `FnMut` so that the step can hand it on
     /// to the path that refills the run.
@@ -538,7 +572,12 @@ mod tests {
                     let s = s.min(l - 1);
                     let mut edges = axes.edges;
                     edges.set(j, steps[j], held(s), 1 << j, steps[0]);
+                    // The stores in the other order (the other targets'),
+                    // to the same mask and accumulators.
+                    let mut other = edges;
+                    let other_mask = other.next_ordered::<{ !LOW_REGISTERS }>();
                     let mask = edges.next();
+                    assert_eq!((mask, edges.slot), (other_mask, other.slot));
                     let steps_now = taken(d, l, s + 1) - taken(d, l, s);
                     assert_eq!(u64::from(mask >> j & 1), steps_now, "{steps:?} at {s}");
                     let after = edges.held(j, steps[j], steps[0]);
