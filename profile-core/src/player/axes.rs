@@ -97,12 +97,12 @@ pub struct Axes<'a, W, const N: usize, L = AnyLayout> {
     turn: Option<([Direction; N], u32)>,
 }
 
-/// Built for Armv6-M or Armv8-M Baseline (the build script's cfg): eight
+/// Built for Armv6-M (the build script's cfg, on `thumbv6m` targets): eight
 /// low registers and no `ldrd`/`strd`. There each follower's accumulator
 /// is stored as soon as it is moved on, and a carry reads `L` and the bit
 /// through one register, so that the step keeps every value in a register
-/// and saves an even number of them (no stack slot, no padding); elsewhere
-/// a pair of accumulators is stored with one `strd`.
+/// and pushes an even number of them (no stack slot, no padding);
+/// elsewhere a pair of accumulators is stored with one `strd`.
 const LOW_REGISTERS: bool = cfg!(thumb_low_registers);
 
 /// The followers' accumulators, laid out for the step path: the mask of an
