@@ -598,19 +598,33 @@ fn a_reader_that_stops_early_is_not_an_error() {
     assert!(!text(&out.stderr).contains("panicked"));
 }
 
-/// A profiles file of one small table, quick to compute.
-const SMALL: &str = "[profiles.a]\ncurve = \"linear\"\nfmin = 100\nfmax = 1000\nlen = 10\n\
-                     timer_hz = 1_000_000\n";
-
 /// A generated file cut short is an error, unlike a report read by `head`:
 /// `header` and `rust` into a pipe its reader closed fail with a message.
+/// Four tables of 60 000 entries: more than 1 MiB of either, more than a
+/// pipe holds, so that the command is still writing when the pipe closes,
+/// however the two processes are scheduled.
 #[test]
 fn a_generated_file_that_cannot_be_written_whole_is_an_error() {
     let dir = work_dir("closed_stdout");
-    fs::write(dir.join("small.toml"), SMALL).unwrap();
+    let large: String = ["a", "b", "c", "d"]
+        .map(|name| {
+            format!(
+                "[profiles.{name}]\ncurve = \"linear\"\nfmin = 100\nfmax = 1000\n\
+                 len = 60000\ntimer_hz = 1_000_000\n"
+            )
+        })
+        .concat();
+    fs::write(dir.join("large.toml"), large).unwrap();
     for (command, what) in [("header", "the C header"), ("rust", "the Rust modules")] {
+        let written = Command::new(BIN)
+            .args([command, "large.toml"])
+            .current_dir(&dir)
+            .output()
+            .unwrap();
+        assert!(written.status.success(), "{}", text(&written.stderr));
+        assert!(written.stdout.len() > 1 << 20, "{command}");
         let mut child = Command::new(BIN)
-            .args([command, "small.toml"])
+            .args([command, "large.toml"])
             .current_dir(&dir)
             .stdout(Stdio::piped())
             .stderr(Stdio::piped())
