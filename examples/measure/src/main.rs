@@ -298,13 +298,17 @@ macro_rules! planning {
     }};
 }
 
+/// The lead's steps in the axes' move.
+const AXES_LEAD: u32 = 2 * UP + CRUISE;
+
 /// Three axes on the move of the per-step player, the lead on axis 1; the
-/// followers step on 4321 and 1234 of its 5000 steps. Not inlined, so that
-/// `main`'s frame (and with it where the DMA buffers of the fills lie)
-/// stays as it is without it.
+/// followers step on 4321 and 1234 of its 5000 steps, each on the lead
+/// steps the rule of `Axes` names (checked after the move, from the edges
+/// kept as bits). Not inlined, so that `main`'s frame (and with it where
+/// the DMA buffers of the fills lie) stays as it is without it.
 #[inline(never)]
 fn axes_move(timer: &mut SYST) {
-    let (lead, high, low) = (i64::from(2 * UP + CRUISE), 4321, -1234);
+    let (lead, high, low) = (i64::from(AXES_LEAD), 4321, -1234);
     let mut axes = Axes::new(Player::new(Ramp::steps(&sigmoid_exact::PERIODS)), [0; 3]);
     check(
         axes.move_by([high, lead, low])
@@ -313,6 +317,10 @@ fn axes_move(timer: &mut SYST) {
     );
     let mut pins = 0u32;
     let mut stepped = [0i64; 3];
+    // Bit `e % 32` of word `e / 32`: whether the axis stepped on edge `e`
+    // (the followers', axes 0 and 2).
+    let mut edges = [[0u32; AXES_LEAD as usize / 32 + 1]; 2];
+    let mut edge = 0usize;
     phases(
         "axes, 3 (1 lead + 2 followers), per-step table",
         (UP, CRUISE),
@@ -321,12 +329,34 @@ fn axes_move(timer: &mut SYST) {
             for (i, n) in stepped.iter_mut().enumerate() {
                 *n += i64::from(pins >> i & 1);
             }
+            for (bits, axis) in edges.iter_mut().zip([0, 2]) {
+                bits[edge / 32] |= (pins >> axis & 1) << (edge % 32);
+            }
+            edge += 1;
         },
     );
     check(
         axes.position() == [high, lead, low] && stepped == [high, lead, -low],
         "axes positions",
     );
+    // The rule: a follower of `d` steps takes its `k`-th on the lead's step
+    // `floor((2kL + d) / 2d)` (numbered from 1), so on edge `e` (from 0)
+    // it steps when some `k` names lead step `e + 1`.
+    for (bits, d) in edges.iter().zip([high.unsigned_abs(), low.unsigned_abs()]) {
+        let l = u64::from(AXES_LEAD);
+        let mut k = 1;
+        for e in 0..AXES_LEAD as usize {
+            let names = k <= d && (2 * k * l + d) / (2 * d) == e as u64 + 1;
+            if names {
+                k += 1;
+            }
+            check(
+                bits[e / 32] >> (e % 32) & 1 == u32::from(names),
+                "axes rule",
+            );
+        }
+        check(k == d + 1, "axes rule, every step");
+    }
 }
 
 /// Runs `steps` calls of a step function between the markers.
