@@ -16,8 +16,8 @@
 # phase of the compressed ramp; or when three
 # `Axes` (a lead and two followers) take more per step than the player in
 # the same phase of the same table plus, per follower, 5 on the M3 and
-# M4F (the goal) and 7 on the M0 (the figure measured, as a bound against
-# regressions: no `ldrd`/`strd` and only eight low registers). Prints the planning calls
+# M4F (the goal) and 7 on the M0 (above the 6.3 measured, as a bound
+# against regressions: no `ldrd`/`strd` and only eight low registers). Prints the planning calls
 # (start, set_cruise, set_cruise_period, retarget, stop on a 1000-entry
 # table and on a 7192-step compressed ramp, plain and indexed), and fails
 # when one takes more than 1000 instructions on the table or a start or a
