@@ -131,8 +131,9 @@ pub fn module(profile: &Profile) -> TokenStream {
                 #[doc = " play them with `runs::Expand` (see the `runs` module); each period plus `RELOAD_OFFSET`."]
                 pub static RUNS: [[u16; 5]; #len] = #array;
                 #[doc = " `RUNS` with where each run begins: `Player::compressed_indexed(&RUN_INDEX)` plays"]
-                #[doc = " them and plans its moves by bisection over the runs (16 bytes of flash a run, in"]
-                #[doc = " place of `RUNS`' 10 when `RUNS` is not played itself)."]
+                #[doc = " them and plans its moves finding a step's run by its bucket of steps (16 bytes of"]
+                #[doc = " flash a run and 132 for the buckets, in place of `RUNS`' 10 a run when `RUNS` is"]
+                #[doc = " not played itself)."]
                 pub static RUN_INDEX: ::stepper_profiles::runs::RunIndex<#len> =
                     ::stepper_profiles::runs::RunIndex::new(&RUNS);
             }

@@ -9,7 +9,7 @@ use super::reader::{Reader, RunRead, RunWalk};
 use super::search;
 use super::threshold;
 use crate::base::timer::TableWord;
-use crate::table::runs::IndexedRun;
+use crate::table::runs::IndexedRuns;
 
 impl<W: TableWord> Sides<'_, '_, W> {
     /// The first of the last `r` steps at which the deceleration ramp, read
@@ -85,7 +85,7 @@ impl<W: TableWord> Sides<'_, '_, W> {
                     }
                     _ => 0,
                 };
-                let mut read = RunRead::new(runs);
+                let mut read = RunRead::new(index);
                 let found =
                     top.and_then(|top| read.last_at_least(top, held, self.decel_slack, from));
                 let Some(pos) = found else {
@@ -130,7 +130,7 @@ impl<W: TableWord> Sides<'_, '_, W> {
             (&self.accel, 0)
         };
         match ramp {
-            Ramp::Indexed(index) => Reader::Indexed(RunRead::new(index.runs())),
+            Ramp::Indexed(index) => Reader::Indexed(RunRead::new(*index)),
             _ => Reader::new(ramp, self.hints()[side]),
         }
     }
@@ -235,7 +235,7 @@ impl<W: TableWord> Sides<'_, '_, W> {
     /// when a ramp ends, `None` when none of the `n` steps is.
     fn scan_read(&self, q: u32, r: u32, from: u32, n: u32) -> Option<u32> {
         if let (Ramp::Indexed(a), Ramp::Indexed(d)) = (self.accel, self.decel) {
-            return self.scan_runs(a.runs(), d.runs(), q, r, from, n);
+            return self.scan_runs(a, d, q, r, from, n);
         }
         let (mut a, mut d) = (
             Reader::new(&self.accel, None),
@@ -260,8 +260,8 @@ impl<W: TableWord> Sides<'_, '_, W> {
     /// the index.
     fn scan_runs(
         &self,
-        a: &[IndexedRun],
-        d: &[IndexedRun],
+        a: IndexedRuns<'_>,
+        d: IndexedRuns<'_>,
         mut q: u32,
         r: u32,
         from: u32,

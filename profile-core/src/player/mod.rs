@@ -391,7 +391,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         }
         let (last, slack) = (self.decel_last, self.decel_slack);
         if let Ramp::Indexed(index) = self.decel {
-            let mut read = RunRead::new(index.runs());
+            let mut read = RunRead::new(index);
             if read.ticks(0).is_none_or(|t| t < current) {
                 return 0;
             }

@@ -115,7 +115,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             ),
             (None, Ramp::Indexed(index)) => {
                 // The runs' first periods, then each run in closed form.
-                let mut accel = RunRead::new(index.runs());
+                let mut accel = RunRead::new(index);
                 let found = accel.last_at_least(last, ticks, slack, 0);
                 (found.unwrap_or(0), found.is_some())
             }
@@ -198,7 +198,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             (None, Ramp::Indexed(index)) => {
                 // The runs' first steps first: a step longer by more than
                 // the slack is ruled out with every step before it.
-                let mut accel = RunRead::new(index.runs());
+                let mut accel = RunRead::new(index);
                 let near = |t: u32| u64::from(t) <= u64::from(current) + u64::from(slack);
                 let (long, near) = accel.bracket(0, last, near);
                 let lo = if long > 0 { long + 1 } else { 0 };

@@ -221,7 +221,7 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
             return ticks_at(periods, pos).unwrap_or(0);
         }
         if let Ramp::Indexed(index) = self.accel {
-            let walk = RunWalk::at(index.runs(), pos);
+            let walk = RunWalk::at(index, pos);
             self.read_a.set(walk.map(|w| w.cursor()));
             return walk.map_or(0, |w| w.ticks());
         }

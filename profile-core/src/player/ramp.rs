@@ -25,8 +25,10 @@ pub enum Ramp<'a, W> {
     /// five words each (see [`runs`](crate::runs)), slowest first.
     Runs(&'a [[u16; 5]]),
     /// A compressed table with its index ([`RunIndex`]): played as
-    /// [`Ramp::Runs`] plays its runs, any step of it found by bisection
-    /// over the runs instead of a walk over them when a move is planned.
+    /// [`Ramp::Runs`] plays its runs, any step of it found through the
+    /// index (its bucket of steps, then a bisection over the few runs the
+    /// bucket spans) instead of a walk over the runs when a move is
+    /// planned.
     Indexed(IndexedRuns<'a>),
 }
 
@@ -202,7 +204,7 @@ impl Cursor {
 
     /// The cursor at step `pos` of an indexed ramp, placed by [`place`].
     fn indexed(index: IndexedRuns<'_>, pos: u32) -> Option<Cursor> {
-        place(index.runs(), pos).map(|at| Cursor::placed(pos, at))
+        place(index, pos).map(|at| Cursor::placed(pos, at))
     }
 
     /// The cursor at step `pos`, placed there through the index.

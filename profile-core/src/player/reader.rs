@@ -5,7 +5,7 @@ use super::runs::{place, run_holding};
 use super::search::{self, faster_by};
 use super::threshold;
 use crate::base::timer::TableWord;
-use crate::table::runs::{IndexedRun, LinearRun, ahead, behind, period};
+use crate::table::runs::{IndexedRun, IndexedRuns, LinearRun, ahead, behind, period};
 
 /// A run of no steps: what a reader of no runs keeps.
 static EMPTY: IndexedRun = IndexedRun {
@@ -15,10 +15,11 @@ static EMPTY: IndexedRun = IndexedRun {
 };
 
 /// Reads an indexed ramp by position: the run read last kept, so that
-/// reads within it are closed-form, and any other run found by bisection.
+/// reads within it are closed-form, and any other run found through the
+/// index ([`run_holding`]).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct RunRead<'a> {
-    runs: &'a [IndexedRun],
+    index: IndexedRuns<'a>,
     /// The run read last (the first before any read): its index, its
     /// first step, its count, its remainder and interval at its first
     /// step, its change.
@@ -31,19 +32,19 @@ pub(crate) struct RunRead<'a> {
 }
 
 impl<'a> RunRead<'a> {
-    /// A reader of `runs`, its first run kept (none when there is none).
-    pub(crate) fn new(runs: &'a [IndexedRun]) -> Self {
-        match runs.first() {
-            Some(run) => RunRead::keep(runs, 0, run, LinearRun::decode(&run.words)),
-            None => RunRead::keep(runs, 0, &EMPTY, LinearRun::decode(&EMPTY.words)),
+    /// A reader of `index`, its first run kept (none when there is none).
+    pub(crate) fn new(index: IndexedRuns<'a>) -> Self {
+        match index.runs().first() {
+            Some(run) => RunRead::keep(index, 0, run, LinearRun::decode(&run.words)),
+            None => RunRead::keep(index, 0, &EMPTY, LinearRun::decode(&EMPTY.words)),
         }
     }
 
-    /// A reader of `runs` keeping run `entry`, `run` (decoded).
+    /// A reader of `index` keeping run `entry`, `run` (decoded).
     #[inline(always)]
-    fn keep(runs: &'a [IndexedRun], entry: u32, run: &IndexedRun, decoded: LinearRun) -> Self {
+    fn keep(index: IndexedRuns<'a>, entry: u32, run: &IndexedRun, decoded: LinearRun) -> Self {
         RunRead {
-            runs,
+            index,
             entry,
             first: run.step,
             count: u32::from(decoded.count),
@@ -72,7 +73,7 @@ impl<'a> RunRead<'a> {
     /// of the first kept. Only probes: the caller's search holds whatever
     /// order the ramp's periods are in.
     pub(crate) fn bracket(&mut self, lo: u32, hi: u32, fast: impl Fn(u32) -> bool) -> (u32, u32) {
-        let runs = self.runs;
+        let runs = self.index.runs();
         // One bisection over all the runs, those that begin outside
         // `lo..hi` (strictly) passed over unprobed, so that only runs
         // inside are probed.
@@ -113,7 +114,7 @@ impl<'a> RunRead<'a> {
         }
         if let Some((entry, run, decoded)) = kept {
             if decoded.count > 0 {
-                *self = RunRead::keep(runs, entry as u32, run, decoded);
+                *self = RunRead::keep(self.index, entry as u32, run, decoded);
             }
         }
         (lo, hi)
@@ -139,7 +140,7 @@ impl<'a> RunRead<'a> {
         slack: u32,
         from: u32,
     ) -> Option<u32> {
-        let runs = self.runs;
+        let runs = self.index.runs();
         // A run of no steps tells nothing: its first step is the next
         // run's.
         let short = |run: &IndexedRun| {
@@ -196,7 +197,7 @@ impl<'a> RunRead<'a> {
                     })
                 });
             if let Some(k) = found {
-                *self = RunRead::keep(runs, a as u32, run, decoded);
+                *self = RunRead::keep(self.index, a as u32, run, decoded);
                 return Some(run.step + k);
             }
         }
@@ -217,30 +218,23 @@ impl<'a> RunRead<'a> {
     }
 
     /// Keeps the run that holds step `pos` (the next or the previous run
-    /// first, else by bisection over the runs on that side); `pos`'s step
-    /// within it.
+    /// first, else through the index's lookup, [`run_holding`]); `pos`'s
+    /// step within it.
     #[inline(never)]
     fn enter(&mut self, pos: u32) -> Option<u32> {
-        let after = pos >= self.first;
-        let next = self.entry.wrapping_add(1);
-        let side = if after {
-            self.runs.get(next as usize..)?
+        let runs = self.index.runs();
+        let neighbour = if pos >= self.first {
+            self.entry.wrapping_add(1)
         } else {
-            self.runs.get(..self.entry as usize)?
+            self.entry.wrapping_sub(1)
         };
-        let neighbour = if after {
-            side.first().map(|r| (0, r))
-        } else {
-            side.last().map(|r| (side.len() - 1, r))
-        };
-        let (entry, run, decoded) = match neighbour {
-            Some((i, r)) if r.step <= pos && pos - r.step < u32::from(r.words[0]) => {
-                (i as u32, r, LinearRun::decode(&r.words))
+        let (entry, run, decoded) = match runs.get(neighbour as usize) {
+            Some(r) if r.step <= pos && pos - r.step < u32::from(r.words[0]) => {
+                (neighbour, r, LinearRun::decode(&r.words))
             }
-            _ => run_holding(side, pos)?,
+            _ => run_holding(self.index, pos)?,
         };
-        let entry = if after { next + entry } else { entry };
-        *self = RunRead::keep(self.runs, entry, run, decoded);
+        *self = RunRead::keep(self.index, entry, run, decoded);
         Some(pos - run.step)
     }
 }
@@ -258,11 +252,11 @@ pub(crate) struct RunWalk<'a> {
 }
 
 impl<'a> RunWalk<'a> {
-    /// At step `pos` of `runs`; `None` past the ramp's end.
-    pub(crate) fn at(runs: &'a [IndexedRun], pos: u32) -> Option<Self> {
-        let at = place(runs, pos)?;
+    /// At step `pos` of `index`; `None` past the ramp's end.
+    pub(crate) fn at(index: IndexedRuns<'a>, pos: u32) -> Option<Self> {
+        let at = place(index, pos)?;
         Some(RunWalk {
-            read: RunRead::keep(runs, at.entry, at.run, at.decoded),
+            read: RunRead::keep(index, at.entry, at.run, at.decoded),
             within: at.within,
             frac: at.frac,
             interval: at.interval,
@@ -271,10 +265,10 @@ impl<'a> RunWalk<'a> {
 
     /// At `cursor`'s step of `runs` (a cursor on them); `None` if its run
     /// is not there.
-    pub(crate) fn from_cursor(runs: &'a [IndexedRun], cursor: Cursor) -> Option<Self> {
-        let run = runs.get(cursor.entry as usize)?;
+    pub(crate) fn from_cursor(index: IndexedRuns<'a>, cursor: Cursor) -> Option<Self> {
+        let run = index.runs().get(cursor.entry as usize)?;
         Some(RunWalk {
-            read: RunRead::keep(runs, cursor.entry, run, LinearRun::decode(&run.words)),
+            read: RunRead::keep(index, cursor.entry, run, LinearRun::decode(&run.words)),
             within: cursor.within,
             frac: cursor.frac,
             interval: cursor.interval,
@@ -414,7 +408,7 @@ impl<'r, 'a, W: TableWord> Reader<'r, 'a, W> {
     pub(crate) fn new(ramp: &'r Ramp<'a, W>, hint: Option<Cursor>) -> Self {
         match (ramp.per_step(), *ramp) {
             (Some(periods), _) => Reader::Table(periods),
-            (None, Ramp::Indexed(index)) => Reader::Indexed(RunRead::new(index.runs())),
+            (None, Ramp::Indexed(index)) => Reader::Indexed(RunRead::new(index)),
             (None, _) => Reader::Seek(ramp, hint),
         }
     }
@@ -504,7 +498,7 @@ mod tests {
             let d = d.unwrap_or_else(|| a.clone());
             let (a_all, d_all) = (padded::<12>(&a), padded::<12>(&d));
             let (a_index, d_index) = (RunIndex::new(&a_all), RunIndex::new(&d_all));
-            let (a_runs, d_runs) = (a_index.indexed().runs(), d_index.indexed().runs());
+            let (a_runs, d_runs) = (a_index.indexed(), d_index.indexed());
             let (a_steps, d_steps): (std::vec::Vec<u32>, std::vec::Vec<u32>) =
                 (Expand::new(&a).collect(), Expand::new(&d).collect());
             prop_assume!(!a_steps.is_empty() && !d_steps.is_empty());
@@ -553,7 +547,7 @@ mod tests {
             let top = top.index(steps.len()) as u32;
             let asked = (i64::from(steps[at.index(steps.len())]) + offset).max(0) as u32;
             let walk = (0..=top).rev().find(|&k| steps[k as usize] >= asked);
-            let mut read = RunRead::new(index.indexed().runs());
+            let mut read = RunRead::new(index.indexed());
             let found = read.last_at_least(top, asked, slack, from.index(index.indexed().runs().len() + 1) as u32);
             prop_assert_eq!(found, walk);
             if let Some(pos) = found {

@@ -1,7 +1,8 @@
 //! The runs of a compressed ramp as the player reads them, indexed
 //! ([`RunIndex`](crate::runs::RunIndex): each run knows its first step and
-//! the remainder carried into it, so that any step is found by bisection
-//! over the runs) or not, and where a run being played stands.
+//! the remainder carried into it, so that any step is found by a lookup
+//! and a bisection over the few runs its bucket spans) or not, and where a
+//! run being played stands.
 
 use crate::table::runs::{
     FRACTION_MASK, IndexedRun, IndexedRuns, LinearRun, RUN_FRACTION_BITS, ahead,
@@ -37,15 +38,16 @@ pub(crate) fn run_at(runs: impl RunList, index: u32) -> Option<LinearRun> {
 
 /// Step `pos` of a whole indexed ramp (its first run at step 0): the run
 /// that holds it as [`run_holding`] finds it, but the slowest run and the
-/// fastest (where a move starts and where it cruises) without a search;
+/// fastest (where a move starts and where it cruises) without a lookup;
 /// the step within the run and the run's state there in closed form.
 /// `None` past the ramp's end.
 #[inline(always)]
-pub(crate) fn place(runs: &[IndexedRun], pos: u32) -> Option<Placed<'_>> {
+pub(crate) fn place(index: IndexedRuns<'_>, pos: u32) -> Option<Placed<'_>> {
+    let runs = index.runs();
     let (entry, run, decoded) = match runs {
         [_, next, ..] if pos < next.step => end_run(runs, 0, pos)?,
         [.., last] if last.step <= pos => end_run(runs, runs.len() - 1, pos)?,
-        _ => run_holding(runs, pos)?,
+        _ => run_holding(index, pos)?,
     };
     Some(placed(entry, run, decoded, pos))
 }
@@ -100,14 +102,20 @@ pub(crate) struct Placed<'r> {
     pub(crate) interval: u32,
 }
 
-/// The run of `runs` that holds step `pos`, decoded, and its index; `None`
-/// past the ramp's end. A bisection over the runs' first steps: the last
-/// run that begins at or before `pos` (a run of no steps begins where the
-/// next one does, so the one found holds a step unless the ramp ends
-/// first).
+/// The run of `index` that holds step `pos`, decoded, and its index;
+/// `None` past the ramp's end. The last run that begins at or before `pos`
+/// (a run of no steps begins where the next one does, so the one found
+/// holds a step unless the ramp ends first): among the runs `pos`'s bucket
+/// spans ([`Buckets::span`](crate::table::runs::Buckets::span)), by bisection over their first steps.
 #[inline]
-pub(crate) fn run_holding(runs: &[IndexedRun], pos: u32) -> Option<(u32, &IndexedRun, LinearRun)> {
-    let entry = runs.partition_point(|r| r.step <= pos).checked_sub(1)?;
+pub(crate) fn run_holding(
+    index: IndexedRuns<'_>,
+    pos: u32,
+) -> Option<(u32, &IndexedRun, LinearRun)> {
+    let runs = index.runs();
+    let (lo, hi) = index.buckets().span(pos, runs.len());
+    let within = runs.get(lo..hi)?.partition_point(|r| r.step <= pos);
+    let entry = (lo + within).checked_sub(1)?;
     let run = runs.get(entry)?;
     let decoded = LinearRun::decode(&run.words);
     (pos - run.step < u32::from(decoded.count)).then_some((entry as u32, run, decoded))
