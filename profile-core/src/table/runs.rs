@@ -180,10 +180,11 @@ impl IndexedRun {
 /// without. A step's run is looked up in a table of 64 buckets of steps
 /// (the run holding each bucket's first step), then found by bisection
 /// among the runs that bucket spans: a few probes where runs are long, a
-/// full bisection's only where many runs share a bucket. On a ramp of 97 runs a new cruise speed or
-/// a new target takes about a ninth to a fifth of the instructions it takes
-/// without, a stop under a fifth, a start 87 % (measured
-/// on a Cortex-M3: [the measurements](https://github.com/stepper-profiles/stepper-profiles/blob/main/docs/performance.md)).
+/// full bisection's only where many runs share a bucket. On a ramp of 97
+/// runs a new cruise speed or a new target takes a tenth to under a fifth
+/// of the instructions it takes without, a stop under a fifth, a start
+/// 87 % (measured on a Cortex-M3: [the
+/// measurements](https://github.com/stepper-profiles/stepper-profiles/blob/main/docs/performance.md)).
 /// 16 bytes of flash a run, and 132 for the buckets: the
 /// runs' own words are copied in, so that a firmware that plays the index
 /// alone keeps no other copy of them.
