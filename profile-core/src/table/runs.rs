@@ -221,8 +221,8 @@ pub(crate) struct Buckets {
 }
 
 impl Buckets {
-    /// The buckets of runs beginning at `steps` (ascending), `total`
-    /// steps in all.
+    /// The buckets of `runs` (each with its first step, ascending),
+    /// `total` steps in all.
     const fn new(runs: &[IndexedRun], total: u32) -> Self {
         let mut shift = 0;
         while shift < 31 && (total.saturating_sub(1) >> shift) as usize >= BUCKETS {
