@@ -23,7 +23,7 @@
 # when one takes more than 1000 instructions on the table or a start or a
 # stop on the indexed ramp (the goal), 21 000 on the plain compressed ramp
 # or 2100 on the indexed one (bounds against regressions, about an eighth
-# above the largest figures measured, 18 873 and 1853; the goal of 1000 is
+# above the largest figures measured, 18 867 and 1855; the goal of 1000 is
 # not met there) on the M3 or M4F.
 # Needs: the three rustup targets, rustup component llvm-tools,
 # qemu-system-arm. Usage: bash measure.sh   (KEEP_LOG=1 keeps the traces;

@@ -1,7 +1,7 @@
 //! Reading a ramp's periods by position for the searches of a plan.
 
 use super::ramp::{Cursor, Ramp, ticks_at};
-use super::runs::{place, run_holding};
+use super::runs::{end_run, place, run_holding};
 use super::search::{self, faster_by};
 use super::threshold;
 use crate::base::timer::TableWord;
@@ -228,11 +228,9 @@ impl<'a> RunRead<'a> {
         } else {
             self.entry.wrapping_sub(1)
         };
-        let (entry, run, decoded) = match runs.get(neighbour as usize) {
-            Some(r) if r.step <= pos && pos - r.step < u32::from(r.words[0]) => {
-                (neighbour, r, LinearRun::decode(&r.words))
-            }
-            _ => run_holding(self.index, pos)?,
+        let (entry, run, decoded) = match end_run(runs, neighbour as usize, pos) {
+            Some(held) => held,
+            None => run_holding(self.index, pos)?,
         };
         *self = RunRead::keep(self.index, entry, run, decoded);
         Some(pos - run.step)

@@ -81,13 +81,17 @@ fn placed(entry: u32, run: &IndexedRun, decoded: LinearRun, pos: u32) -> Placed<
     }
 }
 
-/// Run `entry` of `runs`, decoded, if it holds step `pos`.
+/// Run `entry` of `runs`, decoded, if it holds step `pos` (its count, the
+/// first word, read before the rest is decoded).
 #[inline(always)]
-fn end_run(runs: &[IndexedRun], entry: usize, pos: u32) -> Option<(u32, &IndexedRun, LinearRun)> {
+pub(crate) fn end_run(
+    runs: &[IndexedRun],
+    entry: usize,
+    pos: u32,
+) -> Option<(u32, &IndexedRun, LinearRun)> {
     let run = runs.get(entry)?;
-    let decoded = LinearRun::decode(&run.words);
     let within = pos.checked_sub(run.step)?;
-    (within < u32::from(decoded.count)).then_some((entry as u32, run, decoded))
+    (within < u32::from(run.words[0])).then(|| (entry as u32, run, LinearRun::decode(&run.words)))
 }
 
 /// A step of an indexed ramp ([`place`]): its run's index, the run and its
