@@ -265,35 +265,50 @@ fn skip<L: Layout>(player: &mut Player<'_, u16, L>, n: u32) {
 /// Planning on one ramp of `len` steps, each call measured once: a move of
 /// `2 len + 3000` steps starts; cruising, it changes its cruise speed to
 /// the ramp's middle, then to twice the top's period, takes a target 1000
-/// steps farther, and stops.
+/// steps farther, and stops. With `after`, the step after each call is
+/// measured too (a compressed player's call leaves its first run to it).
 macro_rules! planning {
+    (@after $label:expr, $player:expr, $call:expr, $step:ident, $timer:expr) => {
+        hprintln!("measure: planning, {}, the step after {}: 1 call", $label, $call);
+        measure_begin();
+        $step($player, $timer);
+        measure_end();
+    };
+    (@after $label:expr, $player:expr, $call:expr) => {
+        skip($player, 1)
+    };
     ($label:expr, $player:expr, $len:expr, $top:expr, $start:ident, $cruise:ident,
-     $cruise_period:ident, $retarget:ident, $stop:ident) => {{
+     $cruise_period:ident, $retarget:ident, $stop:ident $(, after $step:ident, $timer:expr)?) => {{
         let mut player = $player;
         let len: u32 = $len;
         let top: u16 = $top;
         once(concat!("planning, ", $label, ", start"), || {
             $start(&mut player, 2 * len + 3000)
         });
-        skip(&mut player, len + 100);
+        planning!(@after $label, &mut player, "start" $(, $step, $timer)?);
+        skip(&mut player, len + 99);
         once(concat!("planning, ", $label, ", set_cruise"), || {
             $cruise(&mut player, len / 2)
         });
-        skip(&mut player, 200);
+        planning!(@after $label, &mut player, "set_cruise" $(, $step, $timer)?);
+        skip(&mut player, 199);
         once(concat!("planning, ", $label, ", set_cruise_period"), || {
             $cruise_period(&mut player, 2 * top)
         });
-        skip(&mut player, 200);
+        planning!(@after $label, &mut player, "set_cruise_period" $(, $step, $timer)?);
+        skip(&mut player, 199);
         let steps = player.remaining() + 1000;
         let mut taken = false;
         once(concat!("planning, ", $label, ", retarget"), || {
             taken = $retarget(&mut player, steps)
         });
         check(taken, "retarget");
-        skip(&mut player, 100);
+        planning!(@after $label, &mut player, "retarget" $(, $step, $timer)?);
+        skip(&mut player, 99);
         once(concat!("planning, ", $label, ", stop"), || {
             $stop(&mut player)
         });
+        planning!(@after $label, &mut player, "stop" $(, $step, $timer)?);
         while player.next_period().is_some() {}
     }};
 }
@@ -639,7 +654,8 @@ fn main() -> ! {
                 player_runs_plan_set_cruise,
                 player_runs_plan_set_cruise_period,
                 player_runs_plan_retarget,
-                player_runs_plan_stop
+                player_runs_plan_stop,
+                after player_runs_step, &mut *timer
             )
         };
     }

@@ -168,6 +168,10 @@ impl<'a, W: TableWord> Player<'a, W, Compressed> {
     /// `period_table!(.., compress = E)`), decelerating along it read
     /// backwards. It plays what `Player::new(Ramp::runs(runs))` plays,
     /// period for period, with a step path that knows its ramps are runs.
+    /// A planning call (`start`, `stop`, a new cruise or target) leaves
+    /// the first run of its plan to the step after it, which decodes it as
+    /// a step does at the end of every run: that step costs what any step
+    /// that begins a run costs, and the call does not.
     ///
     /// ```
     /// use profile_core::player::{Player, Ramp};
@@ -288,14 +292,15 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         self.run = Run::empty();
         self.computed = RunState::default();
         self.before = before;
-        // The first run now, so that the first step plays at once.
-        if L::COMPRESSED {
-            if self.refill_runs().is_none() {
-                // Nothing handed out yet: the step that finds so ends it.
-                self.run = Run::empty();
+        // A per-step table's first run now, made when the move was planned:
+        // the first step plays it at once. A compressed ramp's first run is
+        // decoded by the step that plays it, as at the end of every run, so
+        // that a planning call does not pay for it: the step after costs no
+        // more than one that ends a run.
+        if !L::COMPRESSED {
+            if let Some(run) = self.next_run() {
+                self.run = run;
             }
-        } else if let Some(run) = self.next_run() {
-            self.run = run;
         }
     }
 
