@@ -801,9 +801,10 @@ fn scenarios() -> [Scenario<'static>; 19] {
 /// Where the compressed ramp's moves stop while accelerating. The stop is
 /// planned in the step interrupt, which must end within the step it runs
 /// in for the next to be on time at the pin: on this emulated core (one
-/// instruction a nanosecond, 40 per tick) planning a stop on runs for the
-/// player of any layout takes longer than step 3000's 322 ticks.
-const STOP_RUNS_AT: u32 = 2000;
+/// instruction a nanosecond, 40 per tick) step 7000's 211 ticks are 8440
+/// instructions, and the stop on runs by the player of either layout ends
+/// within them (the pin's check).
+const STOP_RUNS_AT: u32 = 7000;
 
 /// The move whose accelerating edges are also checked against the curve.
 const RUNS_MOVE: &str = "runs, Player::compressed";
