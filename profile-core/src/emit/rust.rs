@@ -132,7 +132,7 @@ pub fn module(profile: &Profile) -> TokenStream {
                 pub static RUNS: [[u16; 5]; #len] = #array;
                 #[doc = " `RUNS` with where each run begins: `Player::compressed_indexed(&RUN_INDEX)` plays"]
                 #[doc = " them and plans its moves finding a step's run by its bucket of steps (16 bytes of"]
-                #[doc = " flash a run and 132 for the buckets, in place of `RUNS`' 10 a run when `RUNS` is"]
+                #[doc = " flash a run and 260 for the buckets, in place of `RUNS`' 10 a run when `RUNS` is"]
                 #[doc = " not played itself)."]
                 pub static RUN_INDEX: ::stepper_profiles::runs::RunIndex<#len> =
                     ::stepper_profiles::runs::RunIndex::new(&RUNS);

@@ -32,7 +32,7 @@ impl<W: TableWord> Sides<'_, '_, W> {
             // Held: only the deceleration ramp's order counts.
             _ => (0, self.decel_slack),
         };
-        if walked_down > 0 {
+        if walked_down > 0 && !self.bucket_faster(r - walked_down, p) {
             // Walking down, the acceleration side is never faster than at
             // `p` but for its slack: a deceleration step more than both
             // ramps' slack faster than that has every step before it faster
@@ -118,6 +118,27 @@ impl<W: TableWord> Sides<'_, '_, W> {
             _ => false,
         });
         self.scan(p, r, from, r - from).unwrap_or(r)
+    }
+
+    /// On two indexed ramps, `true` when their buckets' periods show the
+    /// deceleration ramp's step `x` more than both ramps' slack faster
+    /// than the acceleration ramp's step `p` (as [`Sides::crossing`]'s
+    /// walk down asks of the two periods), without reading either: the
+    /// first is at most its bucket's first period and the deceleration
+    /// ramp's slack, the second at least the next bucket's first period
+    /// less the acceleration ramp's. `false` when they do not show it.
+    fn bucket_faster(&self, x: u32, p: u32) -> bool {
+        let (Ramp::Indexed(a), Ramp::Indexed(d)) = (self.accel, self.decel) else {
+            return false;
+        };
+        // Both slacks, exact unless their sum saturated.
+        if x > self.decel_last || self.slack == u32::MAX {
+            return false;
+        }
+        let accel_slack = self.slack - self.decel_slack;
+        d.buckets().at_most(x, self.decel_slack).is_some_and(|dx| {
+            search::faster_by(dx, self.slack, a.buckets().at_least(p, accel_slack))
+        })
     }
 
     /// A reader of the deceleration ramp (else the acceleration ramp),

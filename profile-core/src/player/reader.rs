@@ -129,10 +129,16 @@ impl<'a> RunRead<'a> {
     /// it are asked in turn, last first, each in closed form
     /// ([`threshold::last_at_least`]).
     ///
-    /// The search begins at run `from` (0: the first), probing runs 1, 2,
-    /// 4, ... on from there until one is such a run, then bisecting: a
-    /// caller that knows run `from - 1` is not one is spared the probes
-    /// before it. Any `from` gives the same step.
+    /// The index's buckets are asked first: the first step of a bucket
+    /// whose period is more than `slack` short ([`Buckets::first_short`])
+    /// bounds the step sought, and the runs are asked from the one holding
+    /// it down, with no search over the runs. Else the search begins at
+    /// run `from` (0: the first), probing runs 1, 2, 4, ... on from there
+    /// until one is such a run, then bisecting: a caller that knows run
+    /// `from - 1` is not one is spared the probes before it. Any `from`
+    /// gives the same step.
+    ///
+    /// [`Buckets::first_short`]: crate::table::runs::Buckets::first_short
     pub(crate) fn last_at_least(
         &mut self,
         top: u32,
@@ -141,6 +147,21 @@ impl<'a> RunRead<'a> {
         from: u32,
     ) -> Option<u32> {
         let runs = self.index.runs();
+        let (mut top, mut a, mut b) = (top, from as usize, runs.len());
+        if from == 0 {
+            match self.index.buckets().first_short(top, ticks, slack) {
+                // Every step is short of it.
+                Some((0, _, _)) => return None,
+                // None from the bucket's first step on: the runs from the
+                // one before the bucket's to the one holding that step are
+                // bisected, as below.
+                Some((step, before, run)) => {
+                    top = top.min(step - 1);
+                    (a, b) = (before, run + 1);
+                }
+                None => {}
+            }
+        }
         // A run of no steps tells nothing: its first step is the next
         // run's.
         let short = |run: &IndexedRun| {
@@ -150,7 +171,6 @@ impl<'a> RunRead<'a> {
                     faster_by(period(u32::from(run.frac), decoded.interval), slack, ticks)
                 })
         };
-        let (mut a, mut b) = (from as usize, runs.len());
         if a > 0 {
             let mut reach = 1;
             while let Some(run) = runs.get(a + reach - 1).filter(|_| a + reach <= b) {
@@ -545,13 +565,16 @@ mod tests {
             let top = top.index(steps.len()) as u32;
             let asked = (i64::from(steps[at.index(steps.len())]) + offset).max(0) as u32;
             let walk = (0..=top).rev().find(|&k| steps[k as usize] >= asked);
-            let mut read = RunRead::new(index.indexed());
-            let found = read.last_at_least(top, asked, slack, from.index(index.indexed().runs().len() + 1) as u32);
-            prop_assert_eq!(found, walk);
-            if let Some(pos) = found {
-                let c = read.cursor(pos).unwrap();
-                let placed = Cursor::at(&Ramp::<u16>::Indexed(index.indexed()), pos).unwrap();
-                prop_assert_eq!((c.entry, c.within, c.frac, c.interval), (placed.entry, placed.within, placed.frac, placed.interval));
+            // From the first run (the buckets asked first), and from any.
+            for from in [0, from.index(index.indexed().runs().len() + 1) as u32] {
+                let mut read = RunRead::new(index.indexed());
+                let found = read.last_at_least(top, asked, slack, from);
+                prop_assert_eq!(found, walk);
+                if let Some(pos) = found {
+                    let c = read.cursor(pos).unwrap();
+                    let placed = Cursor::at(&Ramp::<u16>::Indexed(index.indexed()), pos).unwrap();
+                    prop_assert_eq!((c.entry, c.within, c.frac, c.interval), (placed.entry, placed.within, placed.frac, placed.interval));
+                }
             }
         }
     }

@@ -181,11 +181,13 @@ impl IndexedRun {
 /// (the run holding each bucket's first step), then found by bisection
 /// among the runs that bucket spans: a few probes where runs are long, a
 /// full bisection's only where many runs share a bucket. On a ramp of 97
-/// runs a new cruise speed or a new target takes a tenth to under a fifth
-/// of the instructions it takes without, a stop under a fifth, a start
-/// 87 % (measured on a Cortex-M3: [the
+/// runs a new cruise speed or a new target takes 7 to 13 % of the
+/// instructions it takes without, a stop 15 %, a start 85 % (measured on
+/// a Cortex-M3: [the
 /// measurements](https://github.com/stepper-profiles/stepper-profiles/blob/main/docs/performance.md)).
-/// 16 bytes of flash a run, and 132 for the buckets: the
+/// 16 bytes of flash a run, and 260 for the buckets (the run and the
+/// period at each bucket's first step, so that two steps far apart are
+/// often told apart in speed without reading either): the
 /// runs' own words are copied in, so that a firmware that plays the index
 /// alone keeps no other copy of them.
 ///
@@ -213,11 +215,14 @@ pub(crate) const BUCKETS: usize = 64;
 /// buckets of `1 << shift` steps, the fewest that cover the table, and
 /// for each the run holding its first step (the last that begins at or
 /// before it), saturated at `u16::MAX` (from there on the runs are
-/// bisected to the last).
+/// bisected to the last), and that step's period.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) struct Buckets {
     pub(crate) shift: u32,
     pub(crate) first: [u16; BUCKETS],
+    /// The period of each bucket's first step, in ticks: `u16::MAX` when
+    /// it is that or more, 0 for a bucket past the table's last step.
+    pub(crate) period: [u16; BUCKETS],
 }
 
 impl Buckets {
@@ -229,6 +234,7 @@ impl Buckets {
             shift += 1;
         }
         let mut first = [0u16; BUCKETS];
+        let mut period = [0u16; BUCKETS];
         let (mut b, mut i) = (0, 0usize);
         while b < BUCKETS {
             // `b << shift` fits: `shift` is at most 26 for any `total`.
@@ -241,9 +247,96 @@ impl Buckets {
             } else {
                 i as u16
             };
+            if i < runs.len() && step < total {
+                let run = &runs[i];
+                let decoded = LinearRun::decode(&run.words);
+                let within = step - run.step;
+                let (frac, interval) = ahead(
+                    run.frac as u32,
+                    decoded.interval,
+                    decoded.add as u32,
+                    within,
+                );
+                let ticks = self::period(frac, interval);
+                period[b] = if ticks > u16::MAX as u32 {
+                    u16::MAX
+                } else {
+                    ticks as u16
+                };
+            }
             b += 1;
         }
-        Buckets { shift, first }
+        Buckets {
+            shift,
+            first,
+            period,
+        }
+    }
+
+    /// A bucket past whose first step no step up to `top` is `ticks` long,
+    /// `slack` the ramp's: that step past `top`, or its period more than
+    /// `slack` short of `ticks` (every later step is at most that much
+    /// longer). Bisected over the buckets, so that the one found has
+    /// either no bucket before it or one that is not such a bucket: its
+    /// first step, the run holding the bucket before's first step (0 for
+    /// the first bucket) and the run holding its own. `None` when no
+    /// bucket is found such, or the run's number does not fit the
+    /// buckets' `u16`.
+    pub(crate) fn first_short(
+        &self,
+        top: u32,
+        ticks: u32,
+        slack: u32,
+    ) -> Option<(u32, usize, usize)> {
+        // Short: a period below `ticks - slack` (a saturated one never is),
+        // or a bucket from `end` on, which begins past `top`.
+        let limit = ticks.saturating_sub(slack).min(u32::from(u16::MAX));
+        let end = ((top >> self.shift) as usize)
+            .saturating_add(1)
+            .min(BUCKETS);
+        let (mut lo, mut hi) = (0, end);
+        while lo < hi {
+            let mid = lo + (hi - lo) / 2;
+            if self.period.get(mid).is_some_and(|&p| u32::from(p) < limit) {
+                hi = mid;
+            } else {
+                lo = mid + 1;
+            }
+        }
+        let before = lo.checked_sub(1).and_then(|b| self.first.get(b)).copied();
+        match self.first.get(lo) {
+            Some(&run) if run < u16::MAX => Some((
+                (lo as u32) << self.shift,
+                usize::from(before.unwrap_or(0)),
+                usize::from(run),
+            )),
+            _ => None,
+        }
+    }
+
+    /// A bound on the period of step `pos` from above, `slack` the
+    /// ramp's ([`search::slack`](crate::player)): its bucket's first
+    /// step's period and the slack (a later step is at most that much
+    /// longer); `None` when that period does not fit.
+    #[inline(always)]
+    pub(crate) fn at_most(&self, pos: u32, slack: u32) -> Option<u32> {
+        let b = ((pos >> self.shift) as usize).min(BUCKETS - 1);
+        match self.period.get(b) {
+            Some(&p) if p < u16::MAX => Some(u32::from(p).saturating_add(slack)),
+            _ => None,
+        }
+    }
+
+    /// A bound on the period of step `pos` from below: the next bucket's
+    /// first step's period less the slack (an earlier step is at most
+    /// that much shorter); 0 in the last bucket or the one before a
+    /// bucket past the table.
+    #[inline(always)]
+    pub(crate) fn at_least(&self, pos: u32, slack: u32) -> u32 {
+        let b = (pos >> self.shift) as usize;
+        self.period
+            .get(b + 1)
+            .map_or(0, |&p| u32::from(p).saturating_sub(slack))
     }
 
     /// The runs among which the one holding step `pos` is, of `len`: from
@@ -350,153 +443,5 @@ pub fn run_steps(runs: &[[u16; 5]]) -> u32 {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn a_run_encodes_and_decodes() {
-        let run = LinearRun {
-            count: 300,
-            interval: 0x1234_5678,
-            add: -70_000,
-        };
-        assert_eq!(LinearRun::decode(&run.encode()), run);
-    }
-
-    #[test]
-    fn runs_play_a_quadratic_with_the_remainder_carried() {
-        // 2.5 ticks, then 2.75, 3.0: edges at 0.5 + 2.5, + 2.75, + 3.0.
-        let runs = [
-            LinearRun {
-                count: 3,
-                interval: 5 << 15,
-                add: 1 << 14,
-            }
-            .encode(),
-            LinearRun {
-                count: 2,
-                interval: 1 << 16,
-                add: 0,
-            }
-            .encode(),
-        ];
-        let periods: std::vec::Vec<u32> = Expand::new(&runs).collect();
-        // Edges: 3.0, 5.75, 8.75, then 9.75, 10.75 (floor: 3, 5, 8, 9, 10).
-        assert_eq!(periods, [3, 2, 3, 1, 1]);
-        assert_eq!(run_steps(&runs), 5);
-        assert_eq!(Expand::new(&runs).size_hint(), (5, Some(5)));
-        // Offset, the same edges' remainders: every period one tick less.
-        let less: std::vec::Vec<_> = runs.iter().map(|r| with_offset(r, -1)).collect();
-        let stored: std::vec::Vec<u32> = Expand::new(&less).collect();
-        assert_eq!(stored, [2, 1, 2, 0, 0]);
-        let more: std::vec::Vec<_> = runs.iter().map(|r| with_offset(r, 3)).collect();
-        assert_eq!(
-            Expand::new(&more).collect::<std::vec::Vec<_>>(),
-            [6, 5, 6, 4, 4]
-        );
-    }
-
-    /// Each run's start against the steps added one by one: the step
-    /// count before it, and the low 16 bits of the sum, in fixed point, of
-    /// the half tick and every interval played before it.
-    #[test]
-    fn the_index_holds_each_runs_first_step_and_remainder() {
-        let runs = [
-            [3, 4000, 0x8000, 0xFE0C, 0],
-            [0, 0, 0, 0, 0],
-            [5, 2000, 0x1234, 0xFFFF, 0xF000],
-            [2, 1500, 0x9999, 0, 0x0777],
-        ];
-        let index = RunIndex::new(&runs);
-        let (mut step, mut edge) = (0u32, u64::from(RUN_START_FRACTION));
-        for (run, indexed) in runs.iter().zip(index.runs()) {
-            assert_eq!(indexed.step(), step);
-            assert_eq!(u64::from(indexed.frac()), edge & 0xFFFF);
-            assert_eq!(indexed.words(), run);
-            let run = LinearRun::decode(run);
-            let mut interval = i64::from(run.interval);
-            for _ in 0..run.count {
-                edge += interval as u64;
-                interval += i64::from(run.add);
-                step += 1;
-            }
-        }
-        assert_eq!(index.runs()[2].step(), 3);
-        assert_eq!(index.indexed().runs().len(), 4);
-        assert_eq!(core::mem::size_of::<IndexedRun>(), 16);
-        // The buckets: 132 bytes.
-        assert_eq!(core::mem::size_of::<RunIndex<4>>(), 4 * 16 + 132);
-    }
-
-    /// The run holding each step (the last that begins at or before it,
-    /// found by a walk over all the runs) is among those its bucket spans,
-    /// on tables of 1 to 200 runs of 0 to 299 steps (runs of no steps
-    /// among them), and the buckets are the smallest that cover the table.
-    #[test]
-    fn each_steps_run_is_among_those_its_bucket_spans() {
-        fn check<const N: usize>(runs: &[[u16; 5]; N]) {
-            let index = RunIndex::new(runs);
-            let total = run_steps(runs);
-            let buckets = index.indexed().buckets();
-            let last = total.saturating_sub(1);
-            assert!((last >> buckets.shift) < BUCKETS as u32, "{total}");
-            if buckets.shift > 0 {
-                assert!((last >> (buckets.shift - 1)) >= BUCKETS as u32, "{total}");
-            }
-            for pos in 0..total + 3 {
-                let holding = index.runs().iter().rposition(|r| r.step() <= pos).unwrap();
-                let (lo, hi) = buckets.span(pos, N);
-                assert!(
-                    lo <= holding && holding < hi,
-                    "{pos}: {holding} in {lo}..{hi}"
-                );
-            }
-        }
-        let mut seed = 0x2545_f491_u32;
-        let mut next = move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 17;
-            seed ^= seed << 5;
-            seed
-        };
-        fn table<const N: usize>(mut count: impl FnMut(usize) -> u16) -> [[u16; 5]; N] {
-            core::array::from_fn(|i| [count(i), 100, 0, 0, 0])
-        }
-        check(&table::<1>(|_| 7));
-        check(&table::<1>(|_| 0));
-        check(&table::<3>(|i| [0, 64, 0][i]));
-        check(&table::<64>(|_| 1));
-        check(&table::<65>(|_| 1));
-        check(&table::<97>(|i| (i * i / 8) as u16 + 2));
-        for _ in 0..20 {
-            check(&table::<5>(|_| (next() % 300) as u16));
-            check(&table::<200>(|_| match next() % 4 {
-                0 => 0,
-                _ => (next() % 300) as u16,
-            }));
-        }
-    }
-
-    /// A table of more runs than a bucket's `u16` counts: the buckets
-    /// past run 65 535 span every run from there to the last.
-    #[test]
-    fn buckets_past_run_65535_span_to_the_last() {
-        const N: usize = 70_000;
-        let worker = std::thread::Builder::new().stack_size(64 << 20);
-        let checked = worker.spawn(|| {
-            let runs = std::boxed::Box::new([[1u16, 100, 0, 0, 0]; N]);
-            let index = std::boxed::Box::new(RunIndex::new(&runs));
-            let buckets = index.indexed().buckets();
-            for pos in (0..N as u32 + 3).step_by(7) {
-                let holding = (pos as usize).min(N - 1);
-                let (lo, hi) = buckets.span(pos, N);
-                assert!(
-                    lo <= holding && holding < hi,
-                    "{pos}: {holding} in {lo}..{hi}"
-                );
-            }
-            assert_eq!(buckets.span(N as u32 - 1, N).1, N);
-        });
-        checked.unwrap().join().unwrap();
-    }
-}
+#[path = "runs_tests.rs"]
+mod tests;
