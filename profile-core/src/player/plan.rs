@@ -238,11 +238,22 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
             (&self.accel, 0)
         };
         // Held and segment tables place a cursor directly, and so does an
-        // index, unless the crossing's walk left it there.
+        // index, unless the crossing's walk left it there or it is the
+        // ramp's top, whose cursor the player keeps.
         if !matches!(ramp, Ramp::Runs(_)) {
             if let (true, Ramp::Indexed(_)) = (decel, ramp) {
                 if let Some(c) = self.crossed.get().filter(|c| c.pos == pos) {
                     return Some(c);
+                }
+            }
+            let last = if decel {
+                self.decel_last
+            } else {
+                self.accel_last
+            };
+            if pos == last {
+                if let Some(top) = self.tops[side] {
+                    return Some(top);
                 }
             }
             return Cursor::at(ramp, pos);

@@ -182,7 +182,7 @@ impl IndexedRun {
 /// among the runs that bucket spans: a few probes where runs are long, a
 /// full bisection's only where many runs share a bucket. On a ramp of 97
 /// runs a new cruise speed or a new target takes 7 to 13 % of the
-/// instructions it takes without, a stop 15 %, a start 85 % (measured on
+/// instructions it takes without, a stop 15 %, a start 78 % (measured on
 /// a Cortex-M3: [the
 /// measurements](https://github.com/stepper-profiles/stepper-profiles/blob/main/docs/performance.md)).
 /// 16 bytes of flash a run, and 260 for the buckets (the run and the
