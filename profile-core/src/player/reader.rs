@@ -129,14 +129,14 @@ impl<'a> RunRead<'a> {
     /// it are asked in turn, last first, each in closed form
     /// ([`threshold::last_at_least`]).
     ///
-    /// The index's buckets are asked first: the first step of a bucket
-    /// whose period is more than `slack` short ([`Buckets::first_short`])
-    /// bounds the step sought, and the runs are asked from the one holding
-    /// it down, with no search over the runs. Else the search begins at
-    /// run `from` (0: the first), probing runs 1, 2, 4, ... on from there
-    /// until one is such a run, then bisecting: a caller that knows run
-    /// `from - 1` is not one is spared the probes before it. Any `from`
-    /// gives the same step.
+    /// From the first run (`from` 0), the index's buckets are asked
+    /// first: the first step of a bucket whose period is more than `slack`
+    /// short ([`Buckets::first_short`]) bounds the step sought, and only
+    /// the runs from the one holding the bucket before's first step to the
+    /// one holding that step are bisected. Else the search begins at run
+    /// `from`, probing runs 1, 2, 4, ... on from there until one is such a
+    /// run, then bisecting: a caller that knows run `from - 1` is not one
+    /// is spared the probes before it. Any `from` gives the same step.
     ///
     /// [`Buckets::first_short`]: crate::table::runs::Buckets::first_short
     pub(crate) fn last_at_least(
