@@ -123,22 +123,13 @@ impl<W: TableWord> Sides<'_, '_, W> {
     /// On two indexed ramps, `true` when their buckets' periods show the
     /// deceleration ramp's step `x` more than both ramps' slack faster
     /// than the acceleration ramp's step `p` (as [`Sides::crossing`]'s
-    /// walk down asks of the two periods), without reading either: the
-    /// first is at most its bucket's first period and the deceleration
-    /// ramp's slack, the second at least the next bucket's first period
-    /// less the acceleration ramp's. `false` when they do not show it.
+    /// walk down asks of the two periods), without reading either
+    /// ([`buckets_faster`]).
     fn bucket_faster(&self, x: u32, p: u32) -> bool {
         let (Ramp::Indexed(a), Ramp::Indexed(d)) = (self.accel, self.decel) else {
             return false;
         };
-        // Both slacks, exact unless their sum saturated.
-        if x > self.decel_last || self.slack == u32::MAX {
-            return false;
-        }
-        let accel_slack = self.slack - self.decel_slack;
-        d.buckets().at_most(x, self.decel_slack).is_some_and(|dx| {
-            search::faster_by(dx, self.slack, a.buckets().at_least(p, accel_slack))
-        })
+        x <= self.decel_last && buckets_faster(a, d, x, p, self.slack, self.decel_slack)
     }
 
     /// A reader of the deceleration ramp (else the acceleration ramp),
@@ -345,4 +336,29 @@ impl<W: TableWord> Sides<'_, '_, W> {
 /// table or an indexed compressed one.
 fn read_directly<W: TableWord>(ramp: &Ramp<'_, W>) -> bool {
     ramp.per_step().is_some() || matches!(ramp, Ramp::Indexed(_))
+}
+
+/// [`Sides::crossing`]'s test of two indexed ramps' buckets: `true` when
+/// they show the deceleration ramp's step `x` more than `slack` (both
+/// ramps' slack added; `decel_slack` the deceleration ramp's alone)
+/// faster than the acceleration ramp's step `p`, without reading either.
+/// The first is at most its bucket's first period and the deceleration
+/// ramp's slack, the second at least the next bucket's first period less
+/// the acceleration ramp's. `false` when they do not show it.
+pub(crate) fn buckets_faster(
+    a: IndexedRuns<'_>,
+    d: IndexedRuns<'_>,
+    x: u32,
+    p: u32,
+    slack: u32,
+    decel_slack: u32,
+) -> bool {
+    // Both slacks, exact unless their sum saturated.
+    if slack == u32::MAX {
+        return false;
+    }
+    let accel_slack = slack - decel_slack;
+    d.buckets()
+        .at_most(x, decel_slack)
+        .is_some_and(|dx| search::faster_by(dx, slack, a.buckets().at_least(p, accel_slack)))
 }

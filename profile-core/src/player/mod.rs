@@ -55,6 +55,7 @@ mod axes;
 mod axis;
 mod buffered;
 mod crossing;
+mod cruising;
 mod direct;
 mod entries;
 mod fill;
@@ -275,6 +276,12 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// Plans `r` steps from `p` (the acceleration side's position) into
     /// the player's plan.
     fn plan_steps(&mut self, p: u32, r: u32) {
+        // Two indexed ramps: the most common plan first, out of line.
+        if let (Ramp::Indexed(_), Ramp::Indexed(_)) = (self.accel, self.decel) {
+            if self.plan_cruising(p, r, None) {
+                return;
+            }
+        }
         // The planner borrows the fields it reads, not the plan.
         let sides = sides!(self);
         sides.plan(&mut self.plan, p, r);
@@ -342,6 +349,23 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             let (acc, decelerating, last) = self.now();
             if !decelerating {
                 self.replan(acc, remaining, last);
+            }
+        }
+    }
+
+    /// [`Player::cruise_at`] a step of an indexed acceleration ramp that
+    /// a search found, `held` the cursor there, no later step known to be
+    /// as long.
+    pub(super) fn cruise_at_found(&mut self, held: Cursor) {
+        (self.cruise, self.cruise_last) = (held.pos.min(self.accel_last), true);
+        let remaining = self.remaining();
+        if remaining > 0 {
+            let (acc, decelerating, last) = self.now();
+            if !decelerating {
+                if !self.plan_cruising(acc, remaining, Some(held)) {
+                    self.plan_steps(acc, remaining);
+                }
+                self.follow(last);
             }
         }
     }

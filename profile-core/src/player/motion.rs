@@ -2,7 +2,7 @@
 //! ([`Player::run`]), a cruise speed in ticks ([`Player::set_cruise_period`])
 //! and a new end ([`Player::retarget`]).
 
-use super::ramp::ticks_at;
+use super::ramp::{Cursor, ticks_at};
 use super::reader::{Reader, RunRead};
 use super::search;
 use super::threshold;
@@ -98,31 +98,38 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// assert_eq!(jog, [4000, 3000, 3000, 3000]);
     /// ```
     pub fn set_cruise_period(&mut self, period: W) {
-        let (pos, none_later) = self.cruise_position(period.into_ticks());
-        self.cruise_at(pos, none_later);
+        match self.cruise_position(period.into_ticks()) {
+            (_, _, Some(held)) => self.cruise_at_found(held),
+            (pos, none_later, None) => self.cruise_at(pos, none_later),
+        }
     }
 
     /// The position [`Player::set_cruise_period`] cruises at: the last
     /// whose period is not shorter than `ticks`, 0 when none is; whether
     /// no later step is known to be as long as it (on an indexed ramp,
-    /// where a plan uses it: the step found is that long).
-    fn cruise_position(&self, ticks: u32) -> (u32, bool) {
+    /// where a plan uses it: the step found is that long), and there the
+    /// cursor at it.
+    fn cruise_position(&self, ticks: u32) -> (u32, bool, Option<Cursor>) {
         let (last, slack) = (self.accel_last, self.accel_slack);
         match (self.accel.per_step(), self.accel) {
             (Some(a), _) => (
                 search::last_at_least(|pos| ticks_at(a, pos), last, slack, ticks),
                 false,
+                None,
             ),
             (None, Ramp::Indexed(index)) => {
                 // The runs' first periods, then each run in closed form.
                 let mut accel = RunRead::new(index);
-                let found = accel.last_at_least(last, ticks, slack, 0);
-                (found.unwrap_or(0), found.is_some())
+                match accel.last_at_least(last, ticks, slack, 0) {
+                    Some(pos) => (pos, true, accel.cursor(pos)),
+                    None => (0, false, None),
+                }
             }
             (None, _) => (
                 threshold::last_at_least_on(&self.accel, self.tops[0], last, slack, ticks)
                     .unwrap_or(0),
                 false,
+                None,
             ),
         }
     }
