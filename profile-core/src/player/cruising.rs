@@ -1,14 +1,15 @@
 //! Planning, on two indexed ramps, a move that reaches its cruise
-//! position before the deceleration ramp is in reach: the most common
-//! plan (a start of a long move, a new cruise speed or target while
-//! cruising), written out in the few reads it needs.
+//! position before the deceleration takes over: the most common plan (a
+//! start of a long move, a new cruise speed or target while cruising),
+//! written out in the few reads it needs.
 //!
 //! Such a move walks to the cruise position, holds there, and
 //! decelerates from the deceleration ramp's last entry not shorter than
 //! the cruise position's period: the crossing of a held side is one
-//! search, and the rest of [`Sides::plan`](super::plan::Sides)'s cases
-//! (a walk capped by the deceleration ramp's fastest entry, a crossing
-//! while walking) do not arise. It plans the stretches that planner plans.
+//! search. It plans the stretches [`Sides::plan`](super::plan::Sides)
+//! plans for it; the other cases (a walk capped by the deceleration
+//! ramp's fastest entry, a crossing while walking, a walk down into reach
+//! that the buckets do not clear) are left to that planner.
 
 use super::crossing::buckets_faster;
 use super::plan::{Source, Stretch};
@@ -142,5 +143,116 @@ fn stretch<'a, W>(
         acc,
         acc_dir,
         decelerating: decel && dir == -1,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use crate::player::plan::Plan;
+    use crate::player::{Compressed, Player};
+    use crate::table::runs::{Expand, RunIndex};
+    use core_test_support::{cases, falling_runs, padded};
+    use proptest::prelude::*;
+    use proptest::test_runner::{Config, TestRunner};
+    use std::string::String;
+    use std::vec::Vec;
+
+    /// A plan's stretches, every field written out (on compressed ramps
+    /// each reads from a cursor, which it shows).
+    fn stretches(plan: &Plan<'_, u16>) -> String {
+        std::format!("{:?}", &plan.stretches[..plan.len])
+    }
+
+    /// Where the plan written out applies (a start, a new cruise position
+    /// or period, or a new target, after steps played, on one ramp both
+    /// ways or two), it writes the stretches the planner of every case
+    /// writes, stretch by stretch, cursors included; and it applies in a
+    /// good share of those calls.
+    #[test]
+    fn the_plan_written_out_is_the_general_planners() {
+        let mut runner = TestRunner::new(Config {
+            cases: cases() * 4,
+            failure_persistence: None,
+            ..Config::default()
+        });
+        let (taken, asked) = (core::cell::Cell::new(0u32), core::cell::Cell::new(0u32));
+        let ramps = (
+            falling_runs(1 << 12),
+            prop_oneof![Just(None), falling_runs(1 << 12).prop_map(Some)],
+        );
+        // The move, the steps played, then a new cruise position, a new
+        // cruise period (a tick or two from one the ramp plays, or any),
+        // or a new target (its steps from now), or none.
+        let value = prop_oneof![
+            (any::<prop::sample::Index>(), -2i64..=2).prop_map(|(at, by)| (Some(at), by)),
+            any::<u16>().prop_map(|v| (None, i64::from(v))),
+        ];
+        let calls = (0u32..3000, 0u32..1500, 0u8..4, value, 0u32..3000);
+        runner
+            .run(
+                &(ramps, calls),
+                |((accel, decel), (steps, played, call, value, target))| {
+                    let decel = decel.unwrap_or_else(|| accel.clone());
+                    let (a_all, d_all) = (padded::<40>(&accel), padded::<40>(&decel));
+                    let (a_index, d_index) = (RunIndex::new(&a_all), RunIndex::new(&d_all));
+                    let mut player = if accel == decel {
+                        Player::<u16, Compressed>::compressed_indexed(&a_index)
+                    } else {
+                        Player::<u16, Compressed>::compressed_indexed_with_decel(&a_index, &d_index)
+                    };
+                    player.start(steps);
+                    for _ in 0..played {
+                        player.next_period();
+                    }
+                    // A position, or a period in ticks.
+                    let value = match value {
+                        (Some(at), by) => {
+                            let periods: Vec<u32> = Expand::new(&accel).collect();
+                            let near = periods.get(at.index(periods.len().max(1))).copied();
+                            (i64::from(near.unwrap_or(0)) + by).max(0) as u32
+                        }
+                        (None, v) => v as u32,
+                    };
+                    let mut held = None;
+                    match call {
+                        0 => player.set_cruise(value),
+                        1 => {
+                            let (pos, none_later, at) = player.cruise_position(value);
+                            (player.cruise, player.cruise_last, held) =
+                                (pos.min(player.accel_last), none_later, at);
+                        }
+                        _ => {}
+                    }
+                    let r = match call {
+                        2 => target,
+                        _ => player.remaining(),
+                    };
+                    let (p, decelerating, _) = player.now();
+                    if r == 0 || decelerating {
+                        return Ok(());
+                    }
+                    let (mut written, mut general) = (player.clone(), player.clone());
+                    asked.set(asked.get() + 1);
+                    if written.plan_cruising(p, r, held) {
+                        taken.set(taken.get() + 1);
+                        general.plan_by_sides(p, r);
+                        prop_assert_eq!(stretches(&written.plan), stretches(&general.plan));
+                    }
+                    Ok(())
+                },
+            )
+            .unwrap();
+        std::println!(
+            "the plan written out: {} of {} plans, each the general planner's",
+            taken.get(),
+            asked.get()
+        );
+        assert!(
+            taken.get() * 4 > asked.get(),
+            "{} of {}",
+            taken.get(),
+            asked.get()
+        );
     }
 }

@@ -287,6 +287,14 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         sides.plan(&mut self.plan, p, r);
     }
 
+    /// [`Player::plan_steps`] by the planner of every case, never by
+    /// [`Player::plan_cruising`]: what the tests compare that one with.
+    #[cfg(test)]
+    fn plan_by_sides(&mut self, p: u32, r: u32) {
+        let sides = sides!(self);
+        sides.plan(&mut self.plan, p, r);
+    }
+
     /// Plans `r` steps from `p` (the acceleration side's position) and
     /// follows the plan, `before` the period played before it.
     fn replan(&mut self, p: u32, r: u32, before: u32) {

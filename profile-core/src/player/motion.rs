@@ -109,7 +109,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// no later step is known to be as long as it (on an indexed ramp,
     /// where a plan uses it: the step found is that long), and there the
     /// cursor at it.
-    fn cruise_position(&self, ticks: u32) -> (u32, bool, Option<Cursor>) {
+    pub(super) fn cruise_position(&self, ticks: u32) -> (u32, bool, Option<Cursor>) {
         let (last, slack) = (self.accel_last, self.accel_slack);
         match (self.accel.per_step(), self.accel) {
             (Some(a), _) => (
