@@ -53,12 +53,15 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         {
             return false;
         }
-        let at_c = match held.filter(|h| h.pos == c) {
-            Some(at) => Some(at),
-            None => Cursor::at(&self.accel, c),
-        };
-        let ([Some(a_top), Some(d_top)], Some(at_c)) = (self.tops, at_c) else {
+        let [Some(a_top), Some(d_top)] = &self.tops else {
             return false;
+        };
+        let at_c = match held.filter(|h| h.pos == c) {
+            Some(at) => at,
+            None => match Cursor::at(&self.accel, c) {
+                Some(at) => at,
+                None => return false,
+            },
         };
         let held = period(at_c.frac, at_c.interval);
         // The deceleration ramp's last step up to `top` (where it stands
@@ -66,23 +69,25 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         // cursor there: its top first, when the walk ends out of reach (a
         // long move's deceleration joins there); on one ramp both ways,
         // the cruise position itself when no later step is known to be
-        // as long, else a search from the run after it.
+        // as long, else a search from the run after it. `None` when no
+        // step is that long.
         let top = l - within;
         let one_ramp = core::ptr::eq(a.runs(), d.runs()) && c <= top;
-        let entry = if within == 0 && period(d_top.frac, d_top.interval) >= held {
-            Some((l, d_top))
+        let (entry, entry_at) = if within == 0 && period(d_top.frac, d_top.interval) >= held {
+            (Some(l), *d_top)
         } else if one_ramp && self.cruise_last {
-            Some((c, at_c))
+            (Some(c), at_c)
         } else {
             let from = if one_ramp { at_c.entry + 1 } else { 0 };
             let mut read = RunRead::new(d);
-            read.last_at_least(top, held, self.decel_slack, from)
-                .map(|pos| (pos, read.cursor(pos).unwrap_or(Cursor::ZERO)))
+            let found = read.last_at_least(top, held, self.decel_slack, from);
+            let at = found.and_then(|pos| read.cursor(pos));
+            (found, at.unwrap_or(Cursor::ZERO))
         };
         // The walk from the top's cursor, or near where the plan played.
         let walk = match walked {
             0 => None,
-            _ if p == self.accel_last => Some(a_top),
+            _ if p == self.accel_last => Some(*a_top),
             _ => {
                 let plan = &self.plan;
                 match plan.stretches[..plan.len].get(plan.at) {
@@ -110,14 +115,14 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             ));
         }
         // Held out of reach, then within reach until the deceleration.
-        let crossing = entry.map_or(l + 1, |(pos, _)| l - pos);
+        let crossing = entry.map_or(l + 1, |pos| l - pos);
         for n in [far.saturating_sub(walked), crossing - within] {
             if n > 0 {
                 plan.push(stretch(false, c, 0, n, c, 0, at_c));
             }
         }
-        if let Some((pos, at)) = entry {
-            plan.push(stretch(true, pos, -1, pos + 1, c, 0, at));
+        if let Some(pos) = entry {
+            plan.push(stretch(true, pos, -1, pos + 1, c, 0, entry_at));
         }
         true
     }
