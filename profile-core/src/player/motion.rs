@@ -107,8 +107,8 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// The position [`Player::set_cruise_period`] cruises at: the last
     /// whose period is not shorter than `ticks`, 0 when none is; whether
     /// no later step is known to be as long as it (on an indexed ramp,
-    /// where a plan uses it: the step found is that long), and there the
-    /// cursor at it.
+    /// where a plan uses it: the step found is that long); and on an
+    /// indexed ramp the cursor at the step found.
     pub(super) fn cruise_position(&self, ticks: u32) -> (u32, bool, Option<Cursor>) {
         let (last, slack) = (self.accel_last, self.accel_slack);
         match (self.accel.per_step(), self.accel) {
