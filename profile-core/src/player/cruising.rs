@@ -104,50 +104,21 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         plan.clear();
         if walked > 0 {
             let dir = if p < c { 1 } else { -1 };
-            plan.push(stretch(
-                false,
-                p,
-                dir,
-                walked,
-                p,
-                dir,
-                walk.unwrap_or(Cursor::ZERO),
-            ));
+            let from = Source::At(walk.unwrap_or(Cursor::ZERO));
+            plan.push(Stretch::new(from, false, p, dir, walked, p, dir));
         }
         // Held out of reach, then within reach until the deceleration.
         let crossing = entry.map_or(l + 1, |pos| l - pos);
         for n in [far.saturating_sub(walked), crossing - within] {
             if n > 0 {
-                plan.push(stretch(false, c, 0, n, c, 0, at_c));
+                plan.push(Stretch::new(Source::At(at_c), false, c, 0, n, c, 0));
             }
         }
         if let Some(pos) = entry {
-            plan.push(stretch(true, pos, -1, pos + 1, c, 0, entry_at));
+            let from = Source::At(entry_at);
+            plan.push(Stretch::new(from, true, pos, -1, pos + 1, c, 0));
         }
         true
-    }
-}
-
-/// A stretch read from cursor `at` (a compressed ramp's).
-fn stretch<'a, W>(
-    decel: bool,
-    start: u32,
-    dir: i8,
-    count: u32,
-    acc: u32,
-    acc_dir: i8,
-    at: Cursor,
-) -> Stretch<'a, W> {
-    Stretch {
-        source: Source::At(at),
-        decel,
-        start,
-        dir,
-        count,
-        total: count,
-        acc,
-        acc_dir,
-        decelerating: decel && dir == -1,
     }
 }
 

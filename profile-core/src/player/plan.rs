@@ -109,7 +109,33 @@ pub(crate) struct Stretch<'a, W> {
     pub(crate) acc: u32,
 }
 
-impl<W: TableWord> Stretch<'_, W> {
+impl<'a, W: TableWord> Stretch<'a, W> {
+    /// A stretch of `count` steps read from `source`, the deceleration
+    /// ramp's if `decel`, from position `start` on, `dir` a step; the
+    /// acceleration side at `acc` when it begins, moving `acc_dir` a step.
+    #[inline(always)]
+    pub(crate) fn new(
+        source: Source<'a, W>,
+        decel: bool,
+        start: u32,
+        dir: i8,
+        count: u32,
+        acc: u32,
+        acc_dir: i8,
+    ) -> Self {
+        Stretch {
+            source,
+            decel,
+            start,
+            dir,
+            count,
+            total: count,
+            acc,
+            acc_dir,
+            decelerating: decel && dir == -1,
+        }
+    }
+
     /// The position read by its step `k` (from 0).
     pub(crate) fn read_at(&self, k: u32) -> u32 {
         match self.dir {
@@ -322,17 +348,7 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
                     .unwrap_or(Cursor::ZERO),
             ),
         };
-        Stretch {
-            source,
-            decel,
-            start: pos,
-            dir,
-            count,
-            total: count,
-            acc,
-            acc_dir,
-            decelerating: decel && dir == -1,
-        }
+        Stretch::new(source, decel, pos, dir, count, acc, acc_dir)
     }
 
     /// The acceleration side walking from `p` for `n` steps (towards the
