@@ -32,21 +32,8 @@ impl<W: TableWord> Sides<'_, '_, W> {
             // Held: only the deceleration ramp's order counts.
             _ => (0, self.decel_slack),
         };
-        if walked_down > 0 && !self.bucket_faster(r - walked_down, p) {
-            // Walking down, the acceleration side is never faster than at
-            // `p` but for its slack: a deceleration step more than both
-            // ramps' slack faster than that has every step before it faster
-            // than the acceleration side.
-            let mut d = self.reader(true);
-            let ap = self.a(p);
-            // Often the deceleration ramp is that much faster at the last
-            // of those steps, and so at every one before: no search.
-            let last = d.ticks(r - walked_down);
-            let from = match last {
-                Some(t) if search::faster_by(t, self.slack, ap) => walked_down,
-                _ => d.past_shorter(r, 0, walked_down, self.slack, ap),
-            };
-            if let Some(j) = self.scan(p, r, from, walked_down - from) {
+        if walked_down > 0 {
+            if let Some(j) = self.crossing_down(p, r, walked_down) {
                 return j;
             }
         }
@@ -118,6 +105,69 @@ impl<W: TableWord> Sides<'_, '_, W> {
             _ => false,
         });
         self.scan(p, r, from, r - from).unwrap_or(r)
+    }
+
+    /// [`Sides::crossing`] over the first `walked_down` of the last `r`
+    /// steps, the acceleration side walking down from `p`: the step found,
+    /// `Some(r)` when a ramp ends, `None` when none of them is.
+    #[inline(never)]
+    fn crossing_down(&self, p: u32, r: u32, walked_down: u32) -> Option<u32> {
+        // Walking down, the acceleration side is never faster than at `p`
+        // but for its slack: a deceleration step more than both ramps'
+        // slack faster than that has every step before it faster than
+        // the acceleration side. On indexed ramps the buckets tell it of
+        // the last of those steps, and so of every one.
+        if self.bucket_faster(r - walked_down, p) {
+            return None;
+        }
+        // Away from an index, first past the steps where the deceleration
+        // ramp is that much faster: one bisection.
+        let from = match self.decel {
+            Ramp::Indexed(_) => 0,
+            _ => {
+                let (mut d, ap) = (self.reader(true), self.a(p));
+                // Often the deceleration ramp is that much faster at the
+                // last of those steps, and so at every one before.
+                match d.ticks(r - walked_down) {
+                    Some(t) if search::faster_by(t, self.slack, ap) => walked_down,
+                    _ => d.past_shorter(r, 0, walked_down, self.slack, ap),
+                }
+            }
+        };
+        self.scan_down(p, r, from, walked_down)
+    }
+
+    /// [`Sides::crossing`] over the walked-down steps `from..to` of the
+    /// last `r`, the acceleration side walking down from `p`: the step
+    /// found, `Some(r)` when a ramp ends, `None` when none of them is. A block at a time
+    /// ([`blocks_down`]): a block the index's buckets do not clear is
+    /// halved, and from [`READ_BLOCK`] steps down its two periods are
+    /// read; a block of [`SCAN_BLOCK`] steps or fewer they do not clear
+    /// either is read step by step ([`Sides::scan`]).
+    fn scan_down(&self, p: u32, r: u32, from: u32, to: u32) -> Option<u32> {
+        let (mut d, mut a) = (self.reader(true), self.reader(false));
+        let mut found = None;
+        blocks_down(from, to, to - from, true, |j, end| {
+            let (x, y) = (r - end, p - j);
+            let clear = self.bucket_faster(x, y)
+                || (end - j <= READ_BLOCK
+                    && match (d.ticks(x), a.ticks(y)) {
+                        (Some(dx), Some(ay)) => search::faster_by(dx, self.slack, ay),
+                        _ => false,
+                    });
+            if clear {
+                return Block::Pass;
+            }
+            if end - j > SCAN_BLOCK {
+                return Block::Split;
+            }
+            found = self.scan(p, r, j, end - j);
+            match found {
+                Some(_) => Block::Stop,
+                None => Block::Pass,
+            }
+        });
+        found
     }
 
     /// On two indexed ramps, `true` when their buckets' periods show the
@@ -331,6 +381,49 @@ impl<W: TableWord> Sides<'_, '_, W> {
         j
     }
 }
+
+/// What [`blocks_down`] does with a block of steps.
+pub(crate) enum Block {
+    /// Passed: on to the next block.
+    Pass,
+    /// Not passed: its first half next.
+    Split,
+    /// Done: the walk stops here.
+    Stop,
+}
+
+/// Steps `from..to` of a walk down passed a block at a time, in order,
+/// the first block `size` steps long: `ask(j, end)` says what to do with
+/// steps `j..end` ([`Block`]), and a block of one step is never split.
+/// A block passed, the next is as long, or twice as long if `grow`.
+/// `true` when every step was passed, `false` when `ask` stopped the walk.
+#[inline(always)]
+pub(crate) fn blocks_down(
+    from: u32,
+    to: u32,
+    size: u32,
+    grow: bool,
+    mut ask: impl FnMut(u32, u32) -> Block,
+) -> bool {
+    let (mut j, mut size) = (from, size.max(1));
+    while j < to {
+        let end = j.saturating_add(size).min(to);
+        match ask(j, end) {
+            Block::Pass if grow => (j, size) = (end, size.saturating_mul(2)),
+            Block::Pass => j = end,
+            Block::Split if end - j > 1 => size = (end - j) / 2,
+            _ => return false,
+        }
+    }
+    true
+}
+
+/// The longest block of walked-down steps [`Sides::scan_down`] reads
+/// two periods to clear, where the index's buckets do not.
+const READ_BLOCK: u32 = 256;
+
+/// The longest block [`Sides::scan_down`] reads step by step.
+const SCAN_BLOCK: u32 = 32;
 
 /// A ramp whose periods are read by position at little cost: a per-step
 /// table or an indexed compressed one.

@@ -11,13 +11,18 @@
 //! ramp's fastest entry, a crossing while walking, a walk down into reach
 //! that the buckets do not clear) are left to that planner.
 
-use super::crossing::buckets_faster;
+use super::crossing::{Block, blocks_down, buckets_faster};
 use super::plan::{Source, Stretch};
 use super::ramp::{Cursor, Ramp};
 use super::reader::RunRead;
 use super::{Layout, Player};
 use crate::base::timer::TableWord;
-use crate::table::runs::period;
+use crate::table::runs::{IndexedRuns, period};
+
+/// The shortest block of a walk down into reach the buckets are asked
+/// to clear; a block that short they do not clear leaves the plan to the
+/// general planner, which reads it.
+const BUCKETS_BLOCK: u32 = 64;
 
 impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// Plans `r` steps from `p` (the acceleration side's position) if
@@ -26,7 +31,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// position without the deceleration taking over: walking up, before
     /// the deceleration ramp is in reach; walking down, where the
     /// buckets show the deceleration ramp faster than it at every step in
-    /// reach. `false`, planning nothing, otherwise. `held`, if given, is
+    /// reach, a block of steps at a time. `false`, planning nothing, otherwise. `held`, if given, is
     /// the cursor at the cruise position.
     #[inline(never)]
     pub(super) fn plan_cruising(&mut self, p: u32, r: u32, held: Option<Cursor>) -> bool {
@@ -40,16 +45,18 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             Some(far) if far > 0 && p.max(c) < self.cap => far,
             _ => return false,
         };
-        // The walk's steps within reach, walking down: the deceleration
-        // ramp at the last of them, more than both ramps' slack faster
-        // than the acceleration side where it comes into reach, is faster
-        // than it at each of them (a step further up is not slower but
-        // for the slack, a step walked down not faster).
+        // The walk's steps within reach, walking down, a block of them at
+        // a time: the deceleration ramp at a block's last step, more than
+        // both ramps' slack faster than the acceleration side at its first,
+        // is faster than it at each of them (a step further up is not
+        // slower but for the slack, a step walked down not faster).
         let within = walked.saturating_sub(far);
+        let (slack, decel_slack) = (self.slack, self.decel_slack);
         if within > 0
             && (p < c
                 || within > l
-                || !buckets_faster(a, d, l + 1 - within, p - far, self.slack, self.decel_slack))
+                || !buckets_faster(a, d, l + 1 - within, p - far, slack, decel_slack)
+                    && !cleared_down(a, d, l, p - far, within, slack, decel_slack))
         {
             return false;
         }
@@ -120,6 +127,46 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         }
         true
     }
+}
+
+/// Whether the buckets of indexed ramps `a` and `d` show the
+/// deceleration ramp faster than the acceleration side at each of `n`
+/// steps walking down, the deceleration ramp from its step `l`, the
+/// acceleration side from `y` ([`buckets_faster`]), a block of steps at a
+/// time ([`blocks_down`]); a block of [`BUCKETS_BLOCK`] steps or fewer
+/// they do not clear answers `false`. (The caller asked the whole walk.)
+///
+/// Walking down together, the two steps a block compares are its length
+/// closer than `l + 1 - y`, and the buckets tell apart only steps some
+/// buckets apart (a step's bound is its bucket's first period, or the
+/// next bucket's, and the slack): the blocks are four buckets shorter
+/// than `l + 1 - y`, all alike (on one ramp both ways, each then as far
+/// apart as any), or half the walk when that leaves none.
+#[inline(never)]
+fn cleared_down(
+    a: IndexedRuns<'_>,
+    d: IndexedRuns<'_>,
+    l: u32,
+    y: u32,
+    n: u32,
+    slack: u32,
+    decel_slack: u32,
+) -> bool {
+    let apart = (l + 1).saturating_sub(y);
+    let buckets = 4u32 << d.buckets().shift.max(a.buckets().shift).min(30);
+    let size = match apart.saturating_sub(buckets) {
+        0 => n / 2,
+        size => size,
+    };
+    blocks_down(0, n, size, false, |j, end| {
+        if buckets_faster(a, d, l + 1 - end, y - j, slack, decel_slack) {
+            Block::Pass
+        } else if end - j > BUCKETS_BLOCK {
+            Block::Split
+        } else {
+            Block::Stop
+        }
+    })
 }
 
 #[cfg(test)]

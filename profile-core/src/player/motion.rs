@@ -178,7 +178,12 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         // As `steps_to_stop`, where the move stands read once; a move
         // made no shorter can always end where it would have.
         let (acc, decelerating, current) = self.now();
-        if steps < remaining && steps < self.stop_steps(current).min(remaining) {
+        // A stop takes the deceleration ramp's steps at most: a target at
+        // least that far is taken without searching its entry.
+        if steps < remaining
+            && steps <= self.decel_last
+            && steps < self.stop_steps(current).min(remaining)
+        {
             return false;
         }
         self.endless = false;
@@ -255,5 +260,36 @@ mod tests {
         player.stop();
         let rest: Vec<u16> = core::iter::from_fn(|| player.next_period()).collect();
         assert_eq!(rest, [1500, 2000, 3000, 4000]);
+    }
+
+    /// At the top speed a stop takes the whole deceleration ramp: a target
+    /// one step short of it is refused, one that far is taken, however
+    /// many steps the move has left, on tables and on runs, indexed or
+    /// not.
+    #[test]
+    fn a_target_as_far_as_the_whole_deceleration_is_taken() {
+        use crate::table::runs::RunIndex;
+        static RAMP: [u16; 4] = [4000, 3000, 2000, 1500];
+        // The same steps as runs of one step each.
+        static RUNS: [[u16; 5]; 4] = [
+            [1, 4000, 0, 0, 0],
+            [1, 3000, 0, 0, 0],
+            [1, 2000, 0, 0, 0],
+            [1, 1500, 0, 0, 0],
+        ];
+        static INDEX: RunIndex<4> = RunIndex::new(&RUNS);
+        for ramp in [Ramp::steps(&RAMP), Ramp::runs(&RUNS), Ramp::indexed(&INDEX)] {
+            let mut player = Player::new(ramp);
+            player.start(100);
+            for _ in 0..10 {
+                player.next_period();
+            }
+            assert_eq!(player.steps_to_stop(), 4);
+            assert!(!player.retarget(3), "{ramp:?}");
+            assert_eq!(player.remaining(), 90);
+            assert!(player.retarget(4), "{ramp:?}");
+            let rest: Vec<u16> = core::iter::from_fn(|| player.next_period()).collect();
+            assert_eq!(rest, [1500, 2000, 3000, 4000]);
+        }
     }
 }
