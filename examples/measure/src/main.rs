@@ -265,7 +265,8 @@ fn skip<L: Layout>(player: &mut Player<'_, u16, L>, n: u32) {
 /// Planning on one ramp of `len` steps, each call measured once: a move of
 /// `2 len + 3000` steps starts; cruising, it changes its cruise speed to
 /// the ramp's middle, then to twice the top's period, takes a target 1000
-/// steps farther, and stops. With `after`, the step after each call is
+/// steps farther, and stops. A copy takes a target 2000 steps nearer
+/// before the stop. With `after`, the step after each call is
 /// measured too (a compressed player's call leaves its first run to it).
 macro_rules! planning {
     (@after $label:expr, $player:expr, $call:expr, $step:ident, $timer:expr) => {
@@ -305,6 +306,16 @@ macro_rules! planning {
         check(taken, "retarget");
         planning!(@after $label, &mut player, "retarget" $(, $step, $timer)?);
         skip(&mut player, 99);
+        // A target 2000 steps nearer, on a copy: the deceleration comes
+        // into reach while the move walks down to its cruise position.
+        let mut nearer = player.clone();
+        let steps = nearer.remaining() - 2000;
+        let mut taken = false;
+        once(concat!("planning, ", $label, ", retarget nearer"), || {
+            taken = $retarget(&mut nearer, steps)
+        });
+        check(taken, "retarget nearer");
+        planning!(@after $label, &mut nearer, "retarget nearer" $(, $step, $timer)?);
         once(concat!("planning, ", $label, ", stop"), || {
             $stop(&mut player)
         });
