@@ -265,8 +265,8 @@ fn skip<L: Layout>(player: &mut Player<'_, u16, L>, n: u32) {
 /// Planning on one ramp of `len` steps, each call measured once: a move of
 /// `2 len + 3000` steps starts; cruising, it changes its cruise speed to
 /// the ramp's middle, then to twice the top's period, takes a target 1000
-/// steps farther, and stops. A copy takes a target 2000 steps nearer
-/// before the stop. With `after`, the step after each call is
+/// steps farther, and stops. Before the stop, a copy takes a target 2000
+/// steps nearer, and another one 300 steps past the stop's. With `after`, the step after each call is
 /// measured too (a compressed player's call leaves its first run to it).
 macro_rules! planning {
     (@after $label:expr, $player:expr, $call:expr, $step:ident, $timer:expr) => {
@@ -316,6 +316,15 @@ macro_rules! planning {
         });
         check(taken, "retarget nearer");
         planning!(@after $label, &mut nearer, "retarget nearer" $(, $step, $timer)?);
+        // A target 300 steps past the stop's, on another copy: the move
+        // walks down all the way to its cruise position with the
+        // deceleration ramp 300 steps ahead.
+        let mut past_stop = player.clone();
+        let steps = past_stop.steps_to_stop() + 300;
+        once(concat!("planning, ", $label, ", retarget 300 past the stop"), || {
+            taken = $retarget(&mut past_stop, steps)
+        });
+        check(taken, "retarget 300 past the stop");
         once(concat!("planning, ", $label, ", stop"), || {
             $stop(&mut player)
         });
