@@ -1,7 +1,8 @@
 //! Where a plan's deceleration takes over ([`Sides::crossing`]): the
-//! steps searched where the ramps' order allows, then read one by one,
-//! on cursors, on ramps read by position, or on two indexed ramps each
-//! walked a step at a time.
+//! steps searched where the ramps' order allows, or passed a block at a
+//! time where it does not, then read one by one, on cursors, on ramps
+//! read by position, or on two indexed ramps each walked a step at a
+//! time.
 
 use super::plan::Sides;
 use super::ramp::{Cursor, Ramp};
@@ -19,13 +20,15 @@ impl<W: TableWord> Sides<'_, '_, W> {
     /// Once the acceleration side walks up or holds, the deceleration ramp
     /// read at the steps that remain only gets slower and the acceleration
     /// side only faster, but for the ramps' slack: the step is searched
-    /// ([`search`]). Walking down, both get slower: those steps are read
-    /// one by one.
+    /// ([`search`]). Walking down, both get slower: those steps are passed
+    /// a block at a time where the two ramps' bounds show no crossing in
+    /// it, and read one by one in the blocks they do not clear
+    /// ([`Sides::crossing_down`]).
     pub(crate) fn crossing(&self, p: u32, r: u32) -> u32 {
         if let (Some(a), Some(d)) = (self.accel.per_step(), self.decel.per_step()) {
             return self.crossing_direct(a, d, p, r);
         }
-        // Walking down, the steps one by one; then the search.
+        // Walking down, a block at a time; then the search.
         let (walked_down, slack) = match self.toward(p).1 {
             -1 => ((p - self.cruise).min(r), self.slack),
             1 => (0, self.slack),
@@ -139,11 +142,18 @@ impl<W: TableWord> Sides<'_, '_, W> {
 
     /// [`Sides::crossing`] over the walked-down steps `from..to` of the
     /// last `r`, the acceleration side walking down from `p`: the step
-    /// found, `Some(r)` when a ramp ends, `None` when none of them is. A block at a time
-    /// ([`blocks_down`]): a block the index's buckets do not clear is
-    /// halved, and from [`READ_BLOCK`] steps down its two periods are
-    /// read; a block of [`SCAN_BLOCK`] steps or fewer they do not clear
-    /// either is read step by step ([`Sides::scan`]).
+    /// found, `Some(r)` when a ramp ends, `None` when none of them is.
+    ///
+    /// A block at a time ([`blocks_down`], each twice as long as the one
+    /// passed before it): the deceleration ramp at a block's last step is
+    /// its slowest there but for its slack, and the acceleration side at
+    /// its first step its fastest but for its slack; more than both
+    /// slacks faster at the first, the deceleration ramp is faster at
+    /// every step of the block, which has no crossing. The index's
+    /// buckets are asked first; from [`READ_BLOCK`] steps down the two
+    /// periods are read. A block they do not clear is halved, and one of
+    /// [`SCAN_BLOCK`] steps or fewer is read step by step
+    /// ([`Sides::scan`]).
     fn scan_down(&self, p: u32, r: u32, from: u32, to: u32) -> Option<u32> {
         let (mut d, mut a) = (self.reader(true), self.reader(false));
         let mut found = None;
