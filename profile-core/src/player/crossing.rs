@@ -144,8 +144,8 @@ impl<W: TableWord> Sides<'_, '_, W> {
     /// last `r`, the acceleration side walking down from `p`: the step
     /// found, `Some(r)` when a ramp ends, `None` when none of them is.
     ///
-    /// A block at a time ([`blocks_down`], each twice as long as the one
-    /// passed before it): the deceleration ramp at a block's last step is
+    /// A block at a time ([`blocks_down`], each as long as the one passed
+    /// before it): the deceleration ramp at a block's last step is
     /// its slowest there but for its slack, and the acceleration side at
     /// its first step its fastest but for its slack; more than both
     /// slacks faster at the first, the deceleration ramp is faster at
@@ -157,7 +157,7 @@ impl<W: TableWord> Sides<'_, '_, W> {
     fn scan_down(&self, p: u32, r: u32, from: u32, to: u32) -> Option<u32> {
         let (mut d, mut a) = (self.reader(true), self.reader(false));
         let mut found = None;
-        blocks_down(from, to, to - from, true, |j, end| {
+        blocks_down(from, to, to - from, false, |j, end| {
             let (x, y) = (r - end, p - j);
             let clear = self.bucket_faster(x, y)
                 || (end - j <= READ_BLOCK
@@ -432,8 +432,9 @@ pub(crate) fn blocks_down(
 /// two periods to clear, where the index's buckets do not.
 const READ_BLOCK: u32 = 256;
 
-/// The longest block [`Sides::scan_down`] reads step by step.
-const SCAN_BLOCK: u32 = 32;
+/// The longest block [`Sides::scan_down`] (and the crossing of two
+/// per-step tables) reads step by step.
+pub(crate) const SCAN_BLOCK: u32 = 32;
 
 /// A ramp whose periods are read by position at little cost: a per-step
 /// table or an indexed compressed one.
