@@ -350,28 +350,29 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// [`Player::set_cruise`], `none_later` when no later step is known
     /// to be as long as the one at `pos`.
     fn cruise_at(&mut self, pos: u32, none_later: bool) {
-        self.cruise = pos.min(self.accel_last);
-        self.cruise_last = none_later || self.cruise == self.accel_last;
-        let remaining = self.remaining();
-        if remaining > 0 {
-            let (acc, decelerating, last) = self.now();
-            if !decelerating {
-                self.replan(acc, remaining, last);
-            }
-        }
+        self.cruise_held(pos, none_later, None);
     }
 
     /// [`Player::cruise_at`] a step of an indexed acceleration ramp that
     /// a search found, `held` the cursor there, no later step known to be
     /// as long.
     pub(super) fn cruise_at_found(&mut self, held: Cursor) {
-        (self.cruise, self.cruise_last) = (held.pos.min(self.accel_last), true);
+        self.cruise_held(held.pos, true, Some(held));
+    }
+
+    /// [`Player::cruise_at`], the plan handed `held`, the cursor at `pos`,
+    /// if given (written in, so that a call without one plans as before).
+    #[inline(always)]
+    fn cruise_held(&mut self, pos: u32, none_later: bool, held: Option<Cursor>) {
+        self.cruise = pos.min(self.accel_last);
+        self.cruise_last = none_later || self.cruise == self.accel_last;
         let remaining = self.remaining();
         if remaining > 0 {
             let (acc, decelerating, last) = self.now();
             if !decelerating {
-                if !self.plan_cruising(acc, remaining, Some(held)) {
-                    self.plan_steps(acc, remaining);
+                match held {
+                    Some(held) if self.plan_cruising(acc, remaining, Some(held)) => {}
+                    _ => self.plan_steps(acc, remaining),
                 }
                 self.follow(last);
             }
