@@ -31,8 +31,8 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// position without the deceleration taking over: walking up, before
     /// the deceleration ramp is in reach; walking down, where the
     /// buckets show the deceleration ramp faster than it at every step in
-    /// reach, a block of steps at a time. `false`, planning nothing, otherwise. `held`, if given, is
-    /// the cursor at the cruise position.
+    /// reach, a block of steps at a time. `false`, planning nothing,
+    /// otherwise. `held`, if given, is the cursor at the cruise position.
     #[inline(never)]
     pub(super) fn plan_cruising(&mut self, p: u32, r: u32, held: Option<Cursor>) -> bool {
         let (Ramp::Indexed(a), Ramp::Indexed(d)) = (self.accel, self.decel) else {
@@ -70,7 +70,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
                 None => return false,
             },
         };
-        let held = period(at_c.frac, at_c.interval);
+        let held_ticks = period(at_c.frac, at_c.interval);
         // The deceleration ramp's last step up to `top` (where it stands
         // when the walk ends) not shorter than the held period, and the
         // cursor there: its top first, when the walk ends out of reach (a
@@ -80,14 +80,14 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         // step is that long.
         let top = l - within;
         let one_ramp = core::ptr::eq(a.runs(), d.runs()) && c <= top;
-        let (entry, entry_at) = if within == 0 && period(d_top.frac, d_top.interval) >= held {
+        let (entry, entry_at) = if within == 0 && period(d_top.frac, d_top.interval) >= held_ticks {
             (Some(l), *d_top)
         } else if one_ramp && self.cruise_last {
             (Some(c), at_c)
         } else {
             let from = if one_ramp { at_c.entry + 1 } else { 0 };
             let mut read = RunRead::new(d);
-            let found = read.last_at_least(top, held, self.decel_slack, from);
+            let found = read.last_at_least(top, held_ticks, decel_slack, from);
             let at = found.and_then(|pos| read.cursor(pos));
             (found, at.unwrap_or(Cursor::ZERO))
         };
