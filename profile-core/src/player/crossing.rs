@@ -35,7 +35,7 @@ impl<W: TableWord> Sides<'_, '_, W> {
             // Held: only the deceleration ramp's order counts.
             _ => (0, self.decel_slack),
         };
-        if walked_down > 0 {
+        if walked_down > 0 && !self.falls_ahead(p, r, walked_down) {
             if let Some(j) = self.crossing_down(p, r, walked_down) {
                 return j;
             }
@@ -190,6 +190,20 @@ impl<W: TableWord> Sides<'_, '_, W> {
             return false;
         };
         x <= self.decel_last && buckets_faster(a, d, x, p, self.slack, self.decel_slack)
+    }
+
+    /// The first `walked_down` of the last `r` steps walking down from
+    /// `p` (both sides a step lower each step), `true` when the
+    /// deceleration ramp, within its steps, stands far enough ahead of the
+    /// acceleration side to be faster at each of them ([`Fall::clears`](search::Fall::clears)):
+    /// the walk has no crossing.
+    #[inline(never)]
+    pub(crate) fn falls_ahead(&self, p: u32, r: u32, walked_down: u32) -> bool {
+        let top = r.saturating_sub(1);
+        top <= self.decel_last
+            && top
+                .checked_sub(p)
+                .is_some_and(|ahead| self.fall.clears(p + 1 - walked_down, p, ahead))
     }
 
     /// A reader of the deceleration ramp (else the acceleration ramp),

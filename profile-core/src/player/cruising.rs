@@ -30,8 +30,9 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// the deceleration ramp's fastest entry, and it reaches the cruise
     /// position without the deceleration taking over: walking up, before
     /// the deceleration ramp is in reach; walking down, where the
-    /// buckets show the deceleration ramp faster than it at every step in
-    /// reach, a block of steps at a time. `false`, planning nothing,
+    /// deceleration ramp stands far enough ahead to be faster at every
+    /// step in reach ([`Fall`](super::search::Fall)), or where the buckets
+    /// show it, a block of steps at a time. `false`, planning nothing,
     /// otherwise. `held`, if given, is the cursor at the cruise position.
     #[inline(never)]
     pub(super) fn plan_cruising(&mut self, p: u32, r: u32, held: Option<Cursor>) -> bool {
@@ -40,23 +41,18 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         };
         let (c, l) = (self.cruise, self.decel_last);
         let walked = p.abs_diff(c);
-        // Out of reach for `far` steps: all but the deceleration ramp's.
-        let far = match r.checked_sub(l).and_then(|n| n.checked_sub(1)) {
-            Some(far) if far > 0 && p.max(c) < self.cap => far,
-            _ => return false,
+        // Out of reach for `far` steps: all but the deceleration ramp's
+        // (none when the move is shorter); then the deceleration ramp
+        // stands at its step `reach`: its top, or the last step the move
+        // reaches.
+        let Some(last) = r.checked_sub(1).filter(|_| p.max(c) < self.cap) else {
+            return false;
         };
-        // The walk's steps within reach, walking down, a block of them at
-        // a time: the deceleration ramp at a block's last step, more than
-        // both ramps' slack faster than the acceleration side at its first,
-        // is faster than it at each of them (a step further up is not
-        // slower but for the slack, a step walked down not faster).
+        let far = last.saturating_sub(l);
+        let reach = last - far;
+        // The walk's steps within reach: none may be a crossing.
         let within = walked.saturating_sub(far);
-        let (slack, decel_slack) = (self.slack, self.decel_slack);
-        if within > 0
-            && (p < c
-                || within > l
-                || !buckets_faster(a, d, l + 1 - within, p - far, slack, decel_slack)
-                    && !cleared_down(a, d, l, p - far, within, slack, decel_slack))
+        if within > 0 && (p < c || within > reach || !self.clear_down(a, d, p - far, reach, within))
         {
             return false;
         }
@@ -73,21 +69,21 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         let held_ticks = period(at_c.frac, at_c.interval);
         // The deceleration ramp's last step up to `top` (where it stands
         // when the walk ends) not shorter than the held period, and the
-        // cursor there: its top first, when the walk ends out of reach (a
-        // long move's deceleration joins there); on one ramp both ways,
+        // cursor there: its top first, when the walk ends there or out of
+        // reach (a long move's deceleration joins there); on one ramp both ways,
         // the cruise position itself when no later step is known to be
         // as long, else a search from the run after it. `None` when no
         // step is that long.
-        let top = l - within;
+        let top = reach - within;
         let one_ramp = core::ptr::eq(a.runs(), d.runs()) && c <= top;
-        let (entry, entry_at) = if within == 0 && period(d_top.frac, d_top.interval) >= held_ticks {
+        let (entry, entry_at) = if top == l && period(d_top.frac, d_top.interval) >= held_ticks {
             (Some(l), *d_top)
         } else if one_ramp && self.cruise_last {
             (Some(c), at_c)
         } else {
             let from = if one_ramp { at_c.entry + 1 } else { 0 };
             let mut read = RunRead::new(d);
-            let found = read.last_at_least(top, held_ticks, decel_slack, from);
+            let found = read.last_at_least(top, held_ticks, self.decel_slack, from);
             let at = found.and_then(|pos| read.cursor(pos));
             (found, at.unwrap_or(Cursor::ZERO))
         };
@@ -115,7 +111,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             plan.push(Stretch::new(from, false, p, dir, walked, p, dir));
         }
         // Held out of reach, then within reach until the deceleration.
-        let crossing = entry.map_or(l + 1, |pos| l - pos);
+        let crossing = entry.map_or(reach + 1, |pos| reach - pos);
         for n in [far.saturating_sub(walked), crossing - within] {
             if n > 0 {
                 plan.push(Stretch::new(Source::At(at_c), false, c, 0, n, c, 0));
@@ -126,6 +122,35 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             plan.push(Stretch::new(from, true, pos, -1, pos + 1, c, 0));
         }
         true
+    }
+}
+
+impl<W: TableWord, L: Layout> Player<'_, W, L> {
+    /// Whether walking down `within` steps from `y` to the cruise
+    /// position, the deceleration ramp from its step `reach`, has no
+    /// crossing: the deceleration ramp stands far enough ahead to be
+    /// faster at each step ([`Fall::clears`](super::search::Fall)), or
+    /// else, a block of them at a time, the deceleration ramp at a
+    /// block's last step, more than both ramps' slack faster than the
+    /// acceleration side at its first, is faster than it at each of them
+    /// (a step further up is not slower but for the slack, a step walked
+    /// down not faster): for the whole walk, or block by block
+    /// ([`cleared_down`]).
+    #[inline(always)]
+    fn clear_down(
+        &self,
+        a: IndexedRuns<'_>,
+        d: IndexedRuns<'_>,
+        y: u32,
+        reach: u32,
+        within: u32,
+    ) -> bool {
+        let (slack, decel_slack) = (self.slack, self.decel_slack);
+        reach
+            .checked_sub(y)
+            .is_some_and(|ahead| self.fall.clears(self.cruise + 1, y, ahead))
+            || buckets_faster(a, d, reach + 1 - within, y, slack, decel_slack)
+            || cleared_down(a, d, reach, y, within, slack, decel_slack)
     }
 }
 

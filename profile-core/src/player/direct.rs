@@ -35,8 +35,10 @@ impl<W: TableWord> Sides<'_, '_, W> {
             _ => (0, self.decel_slack),
         };
         if walked_down > 0 {
-            if let Some(j) = self.down_direct(a, d, p, r, walked_down) {
-                return j;
+            if !self.falls_ahead(p, r, walked_down) {
+                if let Some(j) = self.down_direct(a, d, p, r, walked_down) {
+                    return j;
+                }
             }
             if walked_down == r {
                 return r;
@@ -209,6 +211,11 @@ mod tests {
             cruise_last: false,
             slack: search::slack(&accel) + search::slack(&decel),
             decel_slack: search::slack(&decel),
+            fall: std::boxed::Box::leak(std::boxed::Box::new(search::Fall::new(
+                &accel,
+                &decel,
+                search::slack(&decel),
+            ))),
             tops,
             recent: core::cell::Cell::new([None; 2]),
             crossed: core::cell::Cell::new(None),
@@ -265,6 +272,31 @@ mod tests {
         assert_eq!(direct.crossing_direct(&a, &d, p, r), want);
     }
 
+    /// On one table both ways, steep then nearly flat with a tick of
+    /// diffusion, the direct crossing answers as the step-by-step
+    /// definition does for every position, cruise position and number of
+    /// steps: walking down with the deceleration read exactly as far
+    /// ahead as [`search::Fall`] clears, and a step nearer.
+    #[test]
+    fn the_crossing_on_one_table_is_the_walks_everywhere() {
+        let steep = (0..24u16).map(|i| 3000 - 90 * i);
+        let flat = (0..40u16).map(|i| 900 - i / 4 + [0, 1, 0, 0, 1][usize::from(i % 5)]);
+        let t: Vec<u16> = steep.chain(flat).collect();
+        let n = t.len() as u32;
+        let tops = [None; 2];
+        for cruise in 0..n {
+            let direct = sides(Ramp::steps(&t), Ramp::steps(&t), cruise, &tops);
+            for (p, r) in (0..n).flat_map(|p| (1..=n).map(move |r| (p, r))) {
+                let want = walked(&t, &t, p, cruise, r);
+                assert_eq!(
+                    direct.crossing_direct(&t, &t, p, r),
+                    want,
+                    "{p} {cruise} {r}"
+                );
+            }
+        }
+    }
+
     proptest! {
         /// The direct crossing on two per-step tables, and the cursors'
         /// crossing on the same periods as segments of one step each,
@@ -288,6 +320,19 @@ mod tests {
             let tops = [Cursor::at(&ra, 39), Cursor::at(&rd, 39)];
             let cursors = sides(ra, rd, cruise, &tops);
             prop_assert_eq!(cursors.crossing(p, r), want);
+        }
+
+        /// The same on one table both ways, where the deceleration read
+        /// far enough ahead is faster at every step of a walk down
+        /// ([`search::Fall`]).
+        #[test]
+        fn the_crossing_on_one_table_is_the_walks(
+            a in table(40), p in 0u32..40, cruise in 0u32..40, r in 1u32..=40,
+        ) {
+            let want = walked(&a, &a, p, cruise, r);
+            let tops = [None; 2];
+            let direct = sides(Ramp::steps(&a), Ramp::steps(&a), cruise, &tops);
+            prop_assert_eq!(direct.crossing_direct(&a, &a, p, r), want);
         }
     }
 }

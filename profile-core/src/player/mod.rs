@@ -140,6 +140,9 @@ pub struct Player<'a, W, L = AnyLayout> {
     accel_slack: u32,
     /// The deceleration ramp's alone.
     decel_slack: u32,
+    /// How far ahead of the acceleration ramp the deceleration ramp is
+    /// faster at every step, part by part ([`search::Fall`]).
+    fall: search::Fall,
     /// Cursors at the two ramps' tops, from which searches on compressed
     /// ramps seek positions near the top, a run at a time.
     tops: [Option<Cursor>; 2],
@@ -234,6 +237,7 @@ macro_rules! sides {
             cruise_last: $player.cruise_last,
             slack: $player.slack,
             decel_slack: $player.decel_slack,
+            fall: &$player.fall,
             tops: &$player.tops,
             recent: core::cell::Cell::new([None; 2]),
             crossed: core::cell::Cell::new(None),
@@ -246,6 +250,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     fn build(accel: Ramp<'a, W>, decel: Ramp<'a, W>) -> Self {
         let accel_last = accel.len_steps().saturating_sub(1);
         let decel_fastest = decel.fastest();
+        let (accel_slack, decel_slack) = (search::slack(&accel), search::slack(&decel));
         Player {
             accel,
             decel,
@@ -255,9 +260,10 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             cap: accel.first_faster_than(decel_fastest),
             cruise: accel_last,
             cruise_last: true,
-            slack: search::slack(&accel).saturating_add(search::slack(&decel)),
-            accel_slack: search::slack(&accel),
-            decel_slack: search::slack(&decel),
+            slack: accel_slack.saturating_add(decel_slack),
+            accel_slack,
+            decel_slack,
+            fall: search::Fall::new(&accel, &decel, decel_slack),
             tops: [
                 Cursor::at(&accel, accel_last),
                 Cursor::at(&decel, decel.len_steps().saturating_sub(1)),

@@ -179,9 +179,12 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         // made no shorter can always end where it would have.
         let (acc, decelerating, current) = self.now();
         // A stop takes the deceleration ramp's steps at most: a target at
-        // least that far is taken without searching its entry.
+        // least that far is taken without searching its entry; and so is
+        // one where that ramp is faster than the current period by more
+        // than its slack, one read.
         if steps < remaining
             && steps <= self.decel_last
+            && !self.stops_within(steps, current)
             && steps < self.stop_steps(current).min(remaining)
         {
             return false;
@@ -199,6 +202,22 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             self.replan(from, steps, current);
         }
         true
+    }
+
+    /// `true` when a stop from a period of `current` ticks takes at most
+    /// `steps` steps, read at one step: the deceleration ramp's step
+    /// `steps` is faster than `current` by more than the ramp's slack, and
+    /// so no step after it is as long, and the stop's entry is before it.
+    /// `false` when that one read does not show it.
+    fn stops_within(&self, steps: u32, current: u32) -> bool {
+        let ticks = match self.decel {
+            Ramp::Indexed(index) => RunRead::new(index).ticks(steps),
+            _ => match self.decel.per_step() {
+                Some(d) => ticks_at(d, steps),
+                None => Reader::new(&self.decel, self.tops[1]).ticks(steps),
+            },
+        };
+        ticks.is_some_and(|t| search::faster_by(t, self.decel_slack, current))
     }
 
     /// The first position of the acceleration ramp whose period is not
@@ -290,6 +309,38 @@ mod tests {
             assert!(player.retarget(4), "{ramp:?}");
             let rest: Vec<u16> = core::iter::from_fn(|| player.next_period()).collect();
             assert_eq!(rest, [1500, 2000, 3000, 4000]);
+        }
+    }
+
+    /// A target is taken at one read only where the deceleration ramp is
+    /// faster than the current period by more than its slack: here its
+    /// step 3 is a tick faster, but step 4, a tick slower again, is as
+    /// long, so the stop takes 5 steps and a target of 3 is refused, on
+    /// tables and on runs, indexed or not.
+    #[test]
+    fn a_target_within_the_slack_is_searched() {
+        use crate::table::runs::RunIndex;
+        static RAMP: [u16; 6] = [3000, 2000, 1500, 1499, 1500, 1400];
+        static RUNS: [[u16; 5]; 6] = [
+            [1, 3000, 0, 0, 0],
+            [1, 2000, 0, 0, 0],
+            [1, 1500, 0, 0, 0],
+            [1, 1499, 0, 0, 0],
+            [1, 1500, 0, 0, 0],
+            [1, 1400, 0, 0, 0],
+        ];
+        static INDEX: RunIndex<6> = RunIndex::new(&RUNS);
+        for ramp in [Ramp::steps(&RAMP), Ramp::runs(&RUNS), Ramp::indexed(&INDEX)] {
+            let mut player = Player::new(ramp);
+            player.start(100);
+            let played: Vec<u16> = (0..3).filter_map(|_| player.next_period()).collect();
+            assert_eq!(played, [3000, 2000, 1500]);
+            assert_eq!(player.steps_to_stop(), 5, "{ramp:?}");
+            assert!(!player.retarget(3), "{ramp:?}");
+            assert!(!player.retarget(4), "{ramp:?}");
+            assert!(player.retarget(5), "{ramp:?}");
+            let rest: Vec<u16> = core::iter::from_fn(|| player.next_period()).collect();
+            assert_eq!(rest, [1500, 1499, 1500, 2000, 3000]);
         }
     }
 }
