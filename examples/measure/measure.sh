@@ -22,13 +22,9 @@
 # and one 300 steps past the stop, stop on a 1000-entry table and on a
 # 7192-step compressed ramp, plain and indexed), and fails when one takes
 # more than 1000 instructions on the table or on the indexed ramp (the
-# goal), or 22 500 on the plain compressed ramp (a bound against
+# goal), or 18 750 on the plain compressed ramp (a bound against
 # regressions, about an eighth above the largest figure measured,
-# 20 220; the goal is not met without the index), or the retarget 300
-# steps past the stop more than 1750 on the table, 8700 on the indexed
-# ramp and 37 700 on the plain one (bounds against regressions, about an
-# eighth above 1555, 7724 and 33 464: the goal is not met there) on the
-# M3 or M4F; or, on
+# 16 639; the goal is not met without the index) on the M3 or M4F; or, on
 # any core, when the step after a call on a compressed ramp (which decodes
 # the plan's first run) takes more than the largest step of the compressed
 # player's move.
@@ -156,10 +152,7 @@ for core in "${cores[@]}"; do
                 # against regressions at the figures measured (the goal is
                 # not met without the index).
                 if (l ~ /^planning, / && l !~ /the step after/ && core != "M0") {
-                    most_plan = l ~ /indexed compressed/ ? 1000 : l ~ /compressed/ ? 22500 : 1000
-                    # A target just past the stop: bounds against
-                    # regressions (the goal is not met there).
-                    if (l ~ /past the stop$/) most_plan = l ~ /, compressed ramp/ ? 37700 : l ~ /indexed/ ? 8700 : 1750
+                    most_plan = l ~ /indexed compressed/ ? 1000 : l ~ /compressed/ ? 18750 : 1000
                     if (mean[l] > most_plan) {
                         printf "FAIL %s: %s %.0f instructions, more than %d\n", core, l, mean[l], most_plan
                         bad = 1
@@ -192,5 +185,5 @@ for core in "${cores[@]}"; do
             exit bad
         }' "$out/$core.rows" || status=1
 done
-[ "$status" = 0 ] && echo "ok: on every core the player's per-step mean is within the bare load + 4, the compressed player's within the bare load + 8 (Buffered the same), the step interrupt within 20 on the M3 and M4F, Player::fill takes at most 6 instructions per period of the per-step table, 12 of compressed runs, three Axes within the player + 2 x 5 (M0: 2 x 7), planning within 1000 on the table and on the indexed ramp, 22500 on the plain compressed ramp, a retarget just past the stop within 1750, 8700 and 37700 (M3, M4F), the step after a call on a compressed ramp within the compressed player's largest step"
+[ "$status" = 0 ] && echo "ok: on every core the player's per-step mean is within the bare load + 4, the compressed player's within the bare load + 8 (Buffered the same), the step interrupt within 20 on the M3 and M4F, Player::fill takes at most 6 instructions per period of the per-step table, 12 of compressed runs, three Axes within the player + 2 x 5 (M0: 2 x 7), planning within 1000 on the table and on the indexed ramp and 18750 on the plain compressed ramp (M3, M4F), the step after a call on a compressed ramp within the compressed player's largest step"
 exit "$status"

@@ -15,7 +15,9 @@ use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprintln};
 use panic_semihosting as _;
 use stepgen::Stepgen;
+use core::hint::black_box;
 use stepper_profiles::player::{Axes, Axis, Buffered, Compressed, Direction, Layout, Player, Ramp};
+use stepper_profiles::runs::RunIndex;
 
 /// The tables of the root `profiles.toml`.
 mod profiles {
@@ -200,6 +202,31 @@ pub fn player_stop(player: &mut Player<'_, u16>) {
 #[unsafe(no_mangle)]
 pub fn player_set_cruise(player: &mut Player<'_, u16>, pos: u32) {
     player.set_cruise(pos);
+}
+
+/// A player made on a per-step table: each ramp read once for its slack,
+/// and once more, both together, for how far ahead the deceleration ramp
+/// is faster. Not inlined and not mangled, as the planning calls.
+#[inline(never)]
+#[unsafe(no_mangle)]
+pub fn player_new(periods: &'static [u16]) -> Player<'static, u16> {
+    Player::new(Ramp::steps(periods))
+}
+
+/// [`player_new`] on a compressed ramp.
+#[inline(never)]
+#[unsafe(no_mangle)]
+pub fn player_runs_new(runs: &'static [[u16; 5]]) -> Player<'static, u16, Compressed> {
+    Player::compressed(runs)
+}
+
+/// [`player_new`] on a compressed ramp with its index.
+#[inline(never)]
+#[unsafe(no_mangle)]
+pub fn player_runs_new_indexed(
+    index: &'static RunIndex<{ microstep_runs::RUNS.len() }>,
+) -> Player<'static, u16, Compressed> {
+    Player::compressed_indexed(index)
 }
 
 /// Planning calls, one set per kind of player: not inlined and not
@@ -649,6 +676,17 @@ fn main() -> ! {
     }
     once("player, stop (at entry 500)", || player_stop(&mut player));
     while player.next_period().is_some() {}
+
+    // Making a player, once per kind: work done at boot, not per move.
+    once("made, per-step table (sigmoid_exact, 1000 entries)", || {
+        black_box(player_new(&sigmoid_exact::PERIODS));
+    });
+    once("made, compressed ramp (microstep_runs, 7192 steps)", || {
+        black_box(player_runs_new(&microstep_runs::RUNS));
+    });
+    once("made, indexed compressed ramp (microstep_runs, 7192 steps)", || {
+        black_box(player_runs_new_indexed(&microstep_runs::RUN_INDEX));
+    });
 
     // Planning on the per-step table and on the compressed microstep ramp.
     planning!(

@@ -195,7 +195,7 @@ impl<W: TableWord> Sides<'_, '_, W> {
     /// The first `walked_down` of the last `r` steps walking down from
     /// `p` (both sides a step lower each step), `true` when the
     /// deceleration ramp, within its steps, stands far enough ahead of the
-    /// acceleration side to be faster at each of them ([`Fall::clears`](search::Fall::clears)):
+    /// acceleration side to be faster at each of them ([`Fall::clears`](crate::table::fall::Fall::clears)):
     /// the walk has no crossing.
     #[inline(never)]
     pub(crate) fn falls_ahead(&self, p: u32, r: u32, walked_down: u32) -> bool {

@@ -31,7 +31,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// position without the deceleration taking over: walking up, before
     /// the deceleration ramp is in reach; walking down, where the
     /// deceleration ramp stands far enough ahead to be faster at every
-    /// step in reach ([`Fall`](super::search::Fall)), or where the buckets
+    /// step in reach ([`Fall`](crate::table::fall::Fall)), or where the buckets
     /// show it, a block of steps at a time. `false`, planning nothing,
     /// otherwise. `held`, if given, is the cursor at the cruise position.
     #[inline(never)]
@@ -129,7 +129,7 @@ impl<W: TableWord, L: Layout> Player<'_, W, L> {
     /// Whether walking down `within` steps from `y` to the cruise
     /// position, the deceleration ramp from its step `reach`, has no
     /// crossing: the deceleration ramp stands far enough ahead to be
-    /// faster at each step ([`Fall::clears`](super::search::Fall)), or
+    /// faster at each step ([`Fall::clears`](crate::table::fall::Fall::clears)), or
     /// else, a block of them at a time, the deceleration ramp at a
     /// block's last step, more than both ramps' slack faster than the
     /// acceleration side at its first, is faster than it at each of them

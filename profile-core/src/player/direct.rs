@@ -211,7 +211,7 @@ mod tests {
             cruise_last: false,
             slack: search::slack(&accel) + search::slack(&decel),
             decel_slack: search::slack(&decel),
-            fall: std::boxed::Box::leak(std::boxed::Box::new(search::Fall::new(
+            fall: std::boxed::Box::leak(std::boxed::Box::new(search::fall(
                 &accel,
                 &decel,
                 search::slack(&decel),
@@ -276,7 +276,7 @@ mod tests {
     /// diffusion, the direct crossing answers as the step-by-step
     /// definition does for every position, cruise position and number of
     /// steps: walking down with the deceleration read exactly as far
-    /// ahead as [`search::Fall`] clears, and a step nearer.
+    /// ahead as [`Fall`](crate::table::fall::Fall) clears, and a step nearer.
     #[test]
     fn the_crossing_on_one_table_is_the_walks_everywhere() {
         let steep = (0..24u16).map(|i| 3000 - 90 * i);
@@ -324,7 +324,7 @@ mod tests {
 
         /// The same on one table both ways, where the deceleration read
         /// far enough ahead is faster at every step of a walk down
-        /// ([`search::Fall`]).
+        /// ([`Fall`](crate::table::fall::Fall)).
         #[test]
         fn the_crossing_on_one_table_is_the_walks(
             a in table(40), p in 0u32..40, cruise in 0u32..40, r in 1u32..=40,

@@ -73,6 +73,7 @@ mod threshold;
 use core::marker::PhantomData;
 
 use crate::base::timer::TableWord;
+use crate::table::fall::Fall;
 use crate::table::runs::RunIndex;
 pub use axes::Axes;
 pub use axis::{Axis, Direction, Moving};
@@ -141,8 +142,8 @@ pub struct Player<'a, W, L = AnyLayout> {
     /// The deceleration ramp's alone.
     decel_slack: u32,
     /// How far ahead of the acceleration ramp the deceleration ramp is
-    /// faster at every step, part by part ([`search::Fall`]).
-    fall: search::Fall,
+    /// faster at every step, part by part ([`Fall`], [`search::fall`]).
+    fall: Fall,
     /// Cursors at the two ramps' tops, from which searches on compressed
     /// ramps seek positions near the top, a run at a time.
     tops: [Option<Cursor>; 2],
@@ -250,7 +251,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     fn build(accel: Ramp<'a, W>, decel: Ramp<'a, W>) -> Self {
         let accel_last = accel.len_steps().saturating_sub(1);
         let decel_fastest = decel.fastest();
-        let (accel_slack, decel_slack) = (search::slack(&accel), search::slack(&decel));
+        let (accel_slack, decel_slack) = search::slacks(&accel, &decel);
         Player {
             accel,
             decel,
@@ -263,7 +264,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             slack: accel_slack.saturating_add(decel_slack),
             accel_slack,
             decel_slack,
-            fall: search::Fall::new(&accel, &decel, decel_slack),
+            fall: search::fall(&accel, &decel, decel_slack),
             tops: [
                 Cursor::at(&accel, accel_last),
                 Cursor::at(&decel, decel.len_steps().saturating_sub(1)),

@@ -228,8 +228,8 @@ pub(crate) struct Sides<'t, 'a, W> {
     /// The deceleration ramp's slack alone.
     pub(crate) decel_slack: u32,
     /// How far ahead of the acceleration ramp the deceleration ramp is
-    /// faster at every step ([`Fall`](super::search::Fall)).
-    pub(crate) fall: &'t super::search::Fall,
+    /// faster at every step ([`Fall`](crate::table::fall::Fall)).
+    pub(crate) fall: &'t crate::table::fall::Fall,
     /// Cursors at the tops of the acceleration and deceleration ramps.
     pub(crate) tops: &'t [Option<Cursor>; 2],
     /// The cursors placed last on each ramp: a plan's stretches begin near

@@ -128,17 +128,39 @@ pub(crate) fn run_holding(
 /// The periods an indexed ramp plays, in ticks: each run played from its
 /// own remainder, as the index gives it (not carried from the run before,
 /// as [`Expand`](crate::runs::Expand) carries it).
-pub(crate) fn periods(index: IndexedRuns<'_>) -> impl Iterator<Item = u32> + '_ {
-    index.runs().iter().flat_map(|r| {
-        let run = LinearRun::decode(&r.words);
-        let mut state = RunState {
-            left: u32::from(run.count),
-            frac: u32::from(r.frac),
-            interval: run.interval,
-            add: run.add as u32,
-        };
-        core::iter::from_fn(move || state.next())
-    })
+pub(crate) fn periods(index: IndexedRuns<'_>) -> Periods<'_> {
+    Periods {
+        runs: index.runs().iter(),
+        run: RunState::default(),
+    }
+}
+
+/// [`periods`]: the runs left, and where the one being played stands.
+#[derive(Clone, Debug)]
+pub(crate) struct Periods<'a> {
+    runs: core::slice::Iter<'a, IndexedRun>,
+    run: RunState,
+}
+
+impl Iterator for Periods<'_> {
+    type Item = u32;
+
+    #[inline]
+    fn next(&mut self) -> Option<u32> {
+        loop {
+            if let Some(period) = self.run.next() {
+                return Some(period);
+            }
+            let r = self.runs.next()?;
+            let run = LinearRun::decode(&r.words);
+            self.run = RunState {
+                left: u32::from(run.count),
+                frac: u32::from(r.frac),
+                interval: run.interval,
+                add: run.add as u32,
+            };
+        }
+    }
 }
 
 /// Where a run of a compressed ramp stands: `left` steps to play, the

@@ -17,6 +17,7 @@
 
 use super::ramp::{Ramp, ticks_at};
 use crate::base::timer::TableWord;
+use crate::table::fall::Fall;
 use crate::table::runs::Expand;
 
 /// A step just past the steps that `before` rules out: bisects `lo..hi`
@@ -182,129 +183,85 @@ pub(crate) fn slack<W: TableWord>(ramp: &Ramp<'_, W>) -> u32 {
                 .map(|p| p.0.into_ticks()),
         ),
         Ramp::Runs(runs) => rise(Expand::new(runs)),
-        Ramp::Indexed(index) => rise(super::runs::periods(index)),
+        // Computed with the index.
+        Ramp::Indexed(index) => index.buckets().slack,
     }
 }
 
-/// Parts of the acceleration ramp [`Fall`] keeps a figure for.
-const FALL_PARTS: usize = 16;
-
-/// How far ahead of the acceleration ramp the deceleration ramp is read
-/// where it is faster at every step, for each sixteenth of the
-/// acceleration ramp: at a step `y` of the first in part `i`, and any
-/// step `z >= y + ahead[i]` of the second, the second's period is
-/// shorter ([`Fall::of`]). A part's figure is kept where the ramp falls
-/// steeply as where it is nearly flat, so that a walk in the steep parts
-/// is not held to the flat ones' figure.
-///
-/// A plan that walks the acceleration side down while the deceleration
-/// ramp, read at the steps that remain, stands at least that far ahead
-/// has no crossing in the walk, however long: a comparison a part
-/// instead of a search ([`Fall::clears`]).
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct Fall {
-    /// Steps a part spans: `1 << shift`.
-    shift: u8,
-    /// Each part's figure; `u16::MAX` when not known to be less.
-    ahead: [u16; FALL_PARTS],
-    /// The largest figure: ahead that far, every part is cleared at once.
-    most: u16,
-}
-
-impl Fall {
-    /// No figure: held and segment tables, whose planning reads entries,
-    /// not steps.
-    const UNKNOWN: Fall = Fall {
-        shift: 31,
-        ahead: [u16::MAX; FALL_PARTS],
-        most: u16::MAX,
+/// The slack of a player's acceleration and deceleration ramps
+/// ([`slack`]), read once when they are one ramp (the same periods at the
+/// same address).
+pub(crate) fn slacks<W: TableWord>(accel: &Ramp<'_, W>, decel: &Ramp<'_, W>) -> (u32, u32) {
+    let one = match (*accel, *decel) {
+        (
+            Ramp::Steps {
+                periods: a,
+                hold: x,
+            },
+            Ramp::Steps {
+                periods: d,
+                hold: y,
+            },
+        ) => core::ptr::eq(a, d) && x == y,
+        (Ramp::Segments(a), Ramp::Segments(d)) => core::ptr::eq(a, d),
+        (Ramp::Runs(a), Ramp::Runs(d)) => core::ptr::eq(a, d),
+        _ => false,
     };
+    let accel_slack = slack(accel);
+    (accel_slack, if one { accel_slack } else { slack(decel) })
+}
 
-    /// The figures of two ramps, `decel_slack` the second's ([`slack`]).
-    pub(crate) fn new<W: TableWord>(
-        accel: &Ramp<'_, W>,
-        decel: &Ramp<'_, W>,
-        decel_slack: u32,
-    ) -> Self {
-        let steps = accel.len_steps();
-        let mut shift = 0u8;
-        while steps.checked_shr(shift.into()).unwrap_or(0) > FALL_PARTS as u32 {
-            shift += 1;
+/// How far ahead of the acceleration ramp the deceleration ramp is
+/// faster at every step ([`Fall`]), `decel_slack` the latter's
+/// ([`slack`]): an indexed ramp's own, computed with its index, when it
+/// is both; else read off the two ramps' steps, one pass over each;
+/// [`Fall::UNKNOWN`] for held and segment tables.
+pub(crate) fn fall<W: TableWord>(
+    accel: &Ramp<'_, W>,
+    decel: &Ramp<'_, W>,
+    decel_slack: u32,
+) -> Fall {
+    if let (Ramp::Indexed(a), Ramp::Indexed(d)) = (accel, decel) {
+        if core::ptr::eq(a.runs(), d.runs()) {
+            return a.buckets().fall;
         }
-        let mut fall = None;
-        with_steps(accel, &mut |a| {
-            with_steps(decel, &mut |d| {
-                fall = Some(Fall::of(a, d, decel_slack, shift))
-            });
-        });
-        fall.unwrap_or(Fall::UNKNOWN)
     }
-
-    /// [`Fall`] of two ramps' periods, parts of `1 << shift` steps: each
-    /// part's largest `t(y) - y` (0 at least), where `t(y)` is the first
-    /// step of the second more than `decel_slack` faster than the fastest
-    /// of the first's steps up to `y` (one past its last when none is).
-    /// From `t(y)` on, the second is no slower than at `t(y)` but for its
-    /// slack, so faster than every one of those steps, `y`'s among them.
-    /// The fastest step so far only gets faster as `y` grows, so `t(y)`
-    /// only moves on: one pass over each ramp.
-    pub(crate) fn of(
-        accel: &mut dyn Iterator<Item = u32>,
-        decel: &mut dyn Iterator<Item = u32>,
-        decel_slack: u32,
-        shift: u8,
-    ) -> Self {
-        let mut fall = Fall {
-            shift,
-            ahead: [0; FALL_PARTS],
-            most: 0,
-        };
-        let mut fastest = u32::MAX;
-        let (mut t, mut at_t) = (0u32, decel.next());
-        for (y, period) in (0u32..).zip(accel) {
-            fastest = fastest.min(period);
-            while at_t.is_some_and(|d| !faster_by(d, decel_slack, fastest)) {
-                (t, at_t) = (t + 1, decel.next());
-            }
-            let ahead = u16::try_from(t.saturating_sub(y)).unwrap_or(u16::MAX);
-            if let Some(part) = fall.ahead.get_mut((y >> shift) as usize) {
-                *part = (*part).max(ahead);
-            }
-            fall.most = fall.most.max(ahead);
-        }
-        fall
-    }
-
-    /// `true` when the deceleration ramp, read `ahead` steps ahead of the
-    /// acceleration ramp, is faster than it at each of the latter's steps
-    /// `from..=to`: at least each of their parts' figures ahead.
-    #[inline]
-    pub(crate) fn clears(&self, from: u32, to: u32, ahead: u32) -> bool {
-        // `u16::MAX` is never cleared.
-        let ahead = ahead.min(u32::from(u16::MAX) - 1) as u16;
-        if ahead >= self.most {
-            return true;
-        }
-        // From the top down: a ramp is flattest near its top.
-        let part = |y: u32| (y >> self.shift) as usize;
-        self.ahead
-            .get(part(from)..=part(to))
-            .is_some_and(|parts| parts.iter().rev().all(|&f| ahead >= f))
+    match (Steps::of(accel), Steps::of(decel)) {
+        (Some(a), Some(d)) => Fall::of(a, d, accel.len_steps(), decel_slack),
+        _ => Fall::UNKNOWN,
     }
 }
 
-/// `f` given a ramp's periods step by step, for a per-step table or a
-/// compressed ramp; not called for held and segment tables.
-fn with_steps<W: TableWord>(ramp: &Ramp<'_, W>, f: &mut dyn FnMut(&mut dyn Iterator<Item = u32>)) {
-    match *ramp {
-        _ if ramp.per_step().is_some() => f(&mut ramp
-            .per_step()
-            .unwrap_or(&[])
-            .iter()
-            .map(|p| p.into_ticks())),
-        Ramp::Runs(runs) => f(&mut Expand::new(runs)),
-        Ramp::Indexed(index) => f(&mut super::runs::periods(index)),
-        Ramp::Steps { .. } | Ramp::Segments(_) => {}
+/// A ramp's periods step by step, in ticks: a per-step table's or a
+/// compressed ramp's (one type for each, so that [`Fall::of`] is made once
+/// and each step's read stays inline).
+enum Steps<'a, W> {
+    Table(core::slice::Iter<'a, W>),
+    Runs(Expand<'a>),
+    Indexed(super::runs::Periods<'a>),
+}
+
+impl<'a, W: TableWord> Steps<'a, W> {
+    /// `None` for held and segment tables.
+    fn of(ramp: &Ramp<'a, W>) -> Option<Self> {
+        Some(match *ramp {
+            Ramp::Runs(runs) => Steps::Runs(Expand::new(runs)),
+            Ramp::Indexed(index) => Steps::Indexed(super::runs::periods(index)),
+            _ => Steps::Table(ramp.per_step()?.iter()),
+        })
+    }
+}
+
+impl<W: TableWord> Iterator for Steps<'_, W> {
+    type Item = u32;
+
+    #[inline]
+    fn next(&mut self) -> Option<u32> {
+        match self {
+            Steps::Table(periods) => periods.next().map(|p| p.into_ticks()),
+            Steps::Runs(runs) => runs.next(),
+            Steps::Indexed(runs) => runs.next(),
+        }
     }
 }
 
@@ -343,85 +300,5 @@ mod tests {
                 }
             }
         }
-    }
-
-    /// [`Fall::of`] two ramps' periods, parts of `1 << shift` steps.
-    fn fall_on(accel: &[u32], decel: &[u32], decel_slack: u32, shift: u8) -> Fall {
-        Fall::of(
-            &mut accel.iter().copied(),
-            &mut decel.iter().copied(),
-            decel_slack,
-            shift,
-        )
-    }
-
-    /// Read as far ahead as [`Fall::clears`] takes, or farther, the
-    /// second ramp is faster than the first at every pair of steps
-    /// (checked pair by pair): on every ramp of up to 6 steps of periods
-    /// 1 to 4, one ramp both ways or two, parts of 1, 2 and 4 steps, any
-    /// steps of the first and any distance; on ramps ordered strictly,
-    /// a step ahead clears them all.
-    #[test]
-    fn the_deceleration_read_far_enough_ahead_is_faster() {
-        let ramps: Vec<Vec<u32>> = (0..7u32)
-            .flat_map(|len| (0..4u32.pow(len)).map(move |n| (len, n)))
-            .map(|(len, n)| (0..len).map(|i| n / 4u32.pow(i) % 4 + 1).collect())
-            .collect();
-        let (mut checked, mut cleared) = (0u32, 0u32);
-        for (i, a) in ramps.iter().enumerate() {
-            let n = a.len() as u32;
-            // One ramp both ways, and a few others.
-            for d in [a]
-                .into_iter()
-                .chain(ramps.iter().skip(i % 97).step_by(301))
-            {
-                for shift in [0, 1, 2] {
-                    let fall = fall_on(a, d, rise_of(d), shift);
-                    for (from, to) in (0..n).flat_map(|f| (f..n).map(move |t| (f, t))) {
-                        for ahead in 0..=d.len() as u32 {
-                            if !fall.clears(from, to, ahead) {
-                                continue;
-                            }
-                            cleared += 1;
-                            for y in from..=to {
-                                for z in (y + ahead) as usize..d.len() {
-                                    assert!(
-                                        d[z] < a[y as usize],
-                                        "{a:?} {d:?} {fall:?}: {from}..={to} {ahead} ahead, {y} -> {z}"
-                                    );
-                                    checked += 1;
-                                }
-                            }
-                        }
-                    }
-                    let strict = d.windows(2).all(|w| w[1] < w[0]);
-                    if core::ptr::eq(a, d) && strict && n > 0 {
-                        assert!(fall.clears(0, n - 1, 1), "{a:?}: {fall:?}");
-                    }
-                }
-            }
-        }
-        assert!(
-            checked > 100_000 && cleared > 100_000,
-            "{checked} {cleared}"
-        );
-        // Flat for three steps from step 2: read three ahead there, and
-        // a step ahead elsewhere.
-        let f = [9, 8, 5, 5, 5, 4, 2];
-        let fall = fall_on(&f, &f, 0, 0);
-        assert!(fall.clears(0, 1, 1) && fall.clears(4, 6, 1) && fall.clears(2, 2, 3));
-        assert!(!fall.clears(2, 2, 2) && !fall.clears(0, 6, 2) && fall.clears(0, 6, 3));
-    }
-
-    /// The slack of periods, by its definition: the most a period exceeds
-    /// the shortest before it.
-    fn rise_of(periods: &[u32]) -> u32 {
-        (0..periods.len())
-            .map(|i| {
-                let before = periods[..i].iter().min().copied().unwrap_or(u32::MAX);
-                periods[i].saturating_sub(before)
-            })
-            .max()
-            .unwrap_or(0)
     }
 }

@@ -5,6 +5,7 @@
 pub(crate) mod compress;
 #[cfg(feature = "std")]
 pub(crate) mod computed;
+pub(crate) mod fall;
 pub(crate) mod generate;
 pub(crate) mod quantize;
 pub mod runs;

@@ -16,6 +16,8 @@
 //! rounded, not truncated) and carried from run to run. [`Expand`] is that
 //! loop; the player, the C function and every check use it.
 
+use super::fall::Fall;
+
 /// Fractional bits of a run's `interval` and `add`.
 pub const RUN_FRACTION_BITS: u32 = 16;
 
@@ -185,9 +187,11 @@ impl IndexedRun {
 /// instructions it takes without, a stop 15 %, a start 78 % (measured on
 /// a Cortex-M3: [the
 /// measurements](https://github.com/stepper-profiles/stepper-profiles/blob/main/docs/performance.md)).
-/// 16 bytes of flash a run, and 260 for the buckets (the run and the
+/// 16 bytes of flash a run, and 300 for the buckets (the run and the
 /// period at each bucket's first step, so that two steps far apart are
-/// often told apart in speed without reading either): the
+/// often told apart in speed without reading either, and the ramp's
+/// slack and how far ahead of itself it is faster at every step, so that
+/// a player made on the index reads none of its steps to know them): the
 /// runs' own words are copied in, so that a firmware that plays the index
 /// alone keeps no other copy of them.
 ///
@@ -215,7 +219,10 @@ pub(crate) const BUCKETS: usize = 64;
 /// buckets of `1 << shift` steps, the fewest that cover the table, and
 /// for each the run holding its first step (the last that begins at or
 /// before it), saturated at `u16::MAX` (from there on the runs are
-/// bisected to the last), and that step's period.
+/// bisected to the last), and that step's period; and what planning
+/// knows of the ramp as a whole, computed with them so that a player
+/// made on the index reads no step to know it: its slack and how far
+/// ahead of itself it is faster at every step.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) struct Buckets {
     pub(crate) shift: u32,
@@ -223,6 +230,11 @@ pub(crate) struct Buckets {
     /// The period of each bucket's first step, in ticks: `u16::MAX` when
     /// it is that or more, 0 for a bucket past the table's last step.
     pub(crate) period: [u16; BUCKETS],
+    /// The most a step's period exceeds the shortest before it, in ticks.
+    pub(crate) slack: u32,
+    /// How far ahead of itself the ramp is faster at every step, read
+    /// both ways ([`Fall`]).
+    pub(crate) fall: Fall,
 }
 
 impl Buckets {
@@ -266,10 +278,13 @@ impl Buckets {
             }
             b += 1;
         }
+        let slack = slack(runs);
         Buckets {
             shift,
             first,
             period,
+            slack,
+            fall: fall(runs, total, slack),
         }
     }
 
@@ -351,6 +366,92 @@ impl Buckets {
         };
         (lo, hi.min(len))
     }
+}
+
+/// The periods of indexed runs, step by step, in `const` code: the run
+/// being played and the runs after it.
+struct ConstSteps<'a> {
+    runs: &'a [IndexedRun],
+    /// The next run to play.
+    next: usize,
+    left: u32,
+    frac: u32,
+    interval: u32,
+    add: u32,
+}
+
+impl<'a> ConstSteps<'a> {
+    const fn new(runs: &'a [IndexedRun]) -> Self {
+        ConstSteps {
+            runs,
+            next: 0,
+            left: 0,
+            frac: 0,
+            interval: 0,
+            add: 0,
+        }
+    }
+
+    /// The next step's period, in ticks; `None` past the last run.
+    const fn next(&mut self) -> Option<u32> {
+        while self.left == 0 {
+            if self.next >= self.runs.len() {
+                return None;
+            }
+            let run = &self.runs[self.next];
+            let decoded = LinearRun::decode(&run.words);
+            self.left = decoded.count as u32;
+            self.frac = run.frac as u32;
+            self.interval = decoded.interval;
+            self.add = decoded.add as u32;
+            self.next += 1;
+        }
+        self.left -= 1;
+        let x = self.frac.wrapping_add(self.interval);
+        self.frac = x & FRACTION_MASK;
+        self.interval = self.interval.wrapping_add(self.add);
+        Some(x >> RUN_FRACTION_BITS)
+    }
+}
+
+/// The most a step's period of `runs` exceeds the shortest before it.
+const fn slack(runs: &[IndexedRun]) -> u32 {
+    let mut steps = ConstSteps::new(runs);
+    let (mut fastest, mut rise) = (u32::MAX, 0u32);
+    while let Some(p) = steps.next() {
+        if p.saturating_sub(fastest) > rise {
+            rise = p.saturating_sub(fastest);
+        }
+        if p < fastest {
+            fastest = p;
+        }
+    }
+    rise
+}
+
+/// [`Fall::of`] the ramp of `runs` (`total` steps, `slack` its slack)
+/// read both ways, in `const` code.
+const fn fall(runs: &[IndexedRun], total: u32, slack: u32) -> Fall {
+    let mut fall = Fall::empty(total);
+    let (mut accel, mut decel) = (ConstSteps::new(runs), ConstSteps::new(runs));
+    let mut fastest = u32::MAX;
+    let (mut t, mut at_t) = (0u32, decel.next());
+    let mut y = 0u32;
+    while let Some(p) = accel.next() {
+        if p < fastest {
+            fastest = p;
+        }
+        while let Some(d) = at_t {
+            if d.saturating_add(slack) < fastest {
+                break;
+            }
+            t += 1;
+            at_t = decel.next();
+        }
+        fall.take(y, t.saturating_sub(y));
+        y += 1;
+    }
+    fall
 }
 
 impl<const N: usize> RunIndex<N> {

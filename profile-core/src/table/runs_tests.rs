@@ -73,8 +73,8 @@ fn the_index_holds_each_runs_first_step_and_remainder() {
     assert_eq!(index.runs()[2].step(), 3);
     assert_eq!(index.indexed().runs().len(), 4);
     assert_eq!(core::mem::size_of::<IndexedRun>(), 16);
-    // The buckets: 260 bytes.
-    assert_eq!(core::mem::size_of::<RunIndex<4>>(), 4 * 16 + 260);
+    // The buckets, the slack and the fall: 300 bytes.
+    assert_eq!(core::mem::size_of::<RunIndex<4>>(), 4 * 16 + 300);
 }
 
 /// The run holding each step (the last that begins at or before it,
@@ -143,6 +143,13 @@ fn each_steps_period_is_within_its_buckets_bounds() {
             let shortest = steps[..i].iter().copied().min().unwrap_or(u32::MAX);
             slack = slack.max(p.saturating_sub(shortest));
         }
+        // The slack and the fall the index computed at compile time: the
+        // slack computed here, the fall as a player computes it for two
+        // ramps, read off the expansion.
+        assert_eq!(buckets.slack, slack);
+        let (one, other) = (Expand::new(runs), Expand::new(runs));
+        let fall = super::super::fall::Fall::of(one, other, steps.len() as u32, slack);
+        assert_eq!(buckets.fall, fall);
         for (b, &period) in buckets.period.iter().enumerate() {
             let first = (b as u32) << buckets.shift;
             let want = steps.get(first as usize).map_or(0, |&p| p.min(65_535));
