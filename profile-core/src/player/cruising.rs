@@ -9,7 +9,8 @@
 //! search. It plans the stretches [`Sides::plan`](super::plan::Sides)
 //! plans for it; the other cases (a walk capped by the deceleration
 //! ramp's fastest entry, a crossing while walking, a walk down into reach
-//! that the buckets do not clear) are left to that planner.
+//! that neither the ramps' [`Fall`](crate::table::fall::Fall) nor the
+//! buckets clear) are left to that planner.
 
 use super::crossing::{Block, blocks_down, buckets_faster};
 use super::plan::{Source, Stretch};
