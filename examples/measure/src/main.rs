@@ -9,13 +9,13 @@
 #![no_std]
 #![no_main]
 
+use core::hint::black_box;
 use cortex_m::asm;
 use cortex_m::peripheral::SYST;
 use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprintln};
 use panic_semihosting as _;
 use stepgen::Stepgen;
-use core::hint::black_box;
 use stepper_profiles::player::{Axes, Axis, Buffered, Compressed, Direction, Layout, Player, Ramp};
 use stepper_profiles::runs::RunIndex;
 
@@ -684,9 +684,12 @@ fn main() -> ! {
     once("made, compressed ramp (microstep_runs, 7192 steps)", || {
         black_box(player_runs_new(&microstep_runs::RUNS));
     });
-    once("made, indexed compressed ramp (microstep_runs, 7192 steps)", || {
-        black_box(player_runs_new_indexed(&microstep_runs::RUN_INDEX));
-    });
+    once(
+        "made, indexed compressed ramp (microstep_runs, 7192 steps)",
+        || {
+            black_box(player_runs_new_indexed(&microstep_runs::RUN_INDEX));
+        },
+    );
 
     // Planning on the per-step table and on the compressed microstep ramp.
     planning!(
