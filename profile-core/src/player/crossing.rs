@@ -203,7 +203,7 @@ impl<W: TableWord> Sides<'_, '_, W> {
         top <= self.decel_last
             && top
                 .checked_sub(p)
-                .is_some_and(|ahead| self.fall.clears(p + 1 - walked_down, p, ahead))
+                .is_some_and(|ahead| self.known.fall.clears(p + 1 - walked_down, p, ahead))
     }
 
     /// A reader of the deceleration ramp (else the acceleration ramp),
@@ -248,7 +248,7 @@ impl<W: TableWord> Sides<'_, '_, W> {
         // One step, both ramps read at their tops (a long move's
         // deceleration joining at its top, cruising at the acceleration
         // ramp's): the tops' cursors, no search.
-        if let (1, [Some(a), Some(d)]) = (n, self.tops) {
+        if let (1, [Some(a), Some(d)]) = (n, self.known.tops) {
             if a.pos == q && d.pos == r - 1 - from {
                 let joins =
                     d.period(&self.decel).into_ticks() >= a.period(&self.accel).into_ticks();

@@ -57,7 +57,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         {
             return false;
         }
-        let [Some(a_top), Some(d_top)] = &self.tops else {
+        let [Some(a_top), Some(d_top)] = &self.known.tops else {
             return false;
         };
         let at_c = match held.filter(|h| h.pos == c) {
@@ -149,7 +149,7 @@ impl<W: TableWord, L: Layout> Player<'_, W, L> {
         let (slack, decel_slack) = (self.slack, self.decel_slack);
         reach
             .checked_sub(y)
-            .is_some_and(|ahead| self.fall.clears(self.cruise + 1, y, ahead))
+            .is_some_and(|ahead| self.known.fall.clears(self.cruise + 1, y, ahead))
             || buckets_faster(a, d, reach + 1 - within, y, slack, decel_slack)
             || cleared_down(a, d, reach, y, within, slack, decel_slack)
     }

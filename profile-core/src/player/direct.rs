@@ -138,7 +138,7 @@ impl<W: TableWord> Sides<'_, '_, W> {
 #[cfg(test)]
 mod tests {
     extern crate std;
-    use super::super::plan::Sides;
+    use super::super::plan::{Known, Sides};
     use super::super::ramp::{Cursor, Ramp};
     use super::super::search;
     use proptest::prelude::*;
@@ -211,12 +211,10 @@ mod tests {
             cruise_last: false,
             slack: search::slack(&accel) + search::slack(&decel),
             decel_slack: search::slack(&decel),
-            fall: std::boxed::Box::leak(std::boxed::Box::new(search::fall(
-                &accel,
-                &decel,
-                search::slack(&decel),
-            ))),
-            tops,
+            known: std::boxed::Box::leak(std::boxed::Box::new(Known {
+                tops: *tops,
+                fall: search::fall(&accel, &decel, search::slack(&decel)),
+            })),
             recent: core::cell::Cell::new([None; 2]),
             crossed: core::cell::Cell::new(None),
             read_a: core::cell::Cell::new(None),

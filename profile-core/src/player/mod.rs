@@ -73,13 +73,12 @@ mod threshold;
 use core::marker::PhantomData;
 
 use crate::base::timer::TableWord;
-use crate::table::fall::Fall;
 use crate::table::runs::RunIndex;
 pub use axes::Axes;
 pub use axis::{Axis, Direction, Moving};
 pub use buffered::{AxesStart, Buffered, Steps};
 pub use layout::{AnyLayout, Compressed, Layout};
-use plan::{Plan, Run, Sides, Source};
+use plan::{Known, Plan, Run, Sides, Source};
 pub use ramp::Ramp;
 use ramp::{Cursor, ticks_at};
 pub use rated::Rated;
@@ -141,12 +140,9 @@ pub struct Player<'a, W, L = AnyLayout> {
     accel_slack: u32,
     /// The deceleration ramp's alone.
     decel_slack: u32,
-    /// How far ahead of the acceleration ramp the deceleration ramp is
-    /// faster at every step, part by part ([`Fall`], [`search::fall`]).
-    fall: Fall,
-    /// Cursors at the two ramps' tops, from which searches on compressed
-    /// ramps seek positions near the top, a run at a time.
-    tops: [Option<Cursor>; 2],
+    /// What planning knows of the two ramps from when the player was
+    /// made.
+    known: Known,
     /// Playing [`Player::run`]: the deceleration is put off, a lap at a
     /// time, until [`Player::stop`].
     endless: bool,
@@ -250,8 +246,7 @@ macro_rules! sides {
             cruise_last: $player.cruise_last,
             slack: $player.slack,
             decel_slack: $player.decel_slack,
-            fall: &$player.fall,
-            tops: &$player.tops,
+            known: &$player.known,
             recent: core::cell::Cell::new([None; 2]),
             crossed: core::cell::Cell::new(None),
             read_a: core::cell::Cell::new(None),
@@ -276,11 +271,13 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             slack: accel_slack.saturating_add(decel_slack),
             accel_slack,
             decel_slack,
-            fall: search::fall(&accel, &decel, decel_slack),
-            tops: [
-                Cursor::at(&accel, accel_last),
-                Cursor::at(&decel, decel.len_steps().saturating_sub(1)),
-            ],
+            known: Known {
+                tops: [
+                    Cursor::at(&accel, accel_last),
+                    Cursor::at(&decel, decel.len_steps().saturating_sub(1)),
+                ],
+                fall: search::fall(&accel, &decel, decel_slack),
+            },
             endless: false,
             extended: 0,
             // At rest: nothing to hand out, as after a move's end.
@@ -350,7 +347,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         self.endless = false;
         self.extended = 0;
         // A ramp of no steps has no top.
-        let empty = self.tops[0].is_none() || self.tops[1].is_none();
+        let empty = self.known.tops[0].is_none() || self.known.tops[1].is_none();
         if empty || steps == 0 {
             self.plan.clear();
             self.follow(0);
@@ -464,8 +461,10 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         let entry = match self.decel.per_step() {
             Some(d) => search::last_at_least(|pos| ticks_at(d, pos), last, slack, current),
             // (Step 0 is that long: checked above.)
-            None => threshold::last_at_least_on(&self.decel, self.tops[1], last, slack, current)
-                .unwrap_or(0),
+            None => {
+                threshold::last_at_least_on(&self.decel, self.known.tops[1], last, slack, current)
+                    .unwrap_or(0)
+            }
         };
         entry + 1
     }
@@ -473,7 +472,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     fn period_dec(&self, pos: u32) -> u32 {
         match self.decel.per_step() {
             Some(d) => ticks_at(d, pos),
-            None => Reader::new(&self.decel, self.tops[1]).ticks(pos),
+            None => Reader::new(&self.decel, self.known.tops[1]).ticks(pos),
         }
         .unwrap_or(0)
     }

@@ -126,7 +126,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
                 }
             }
             (None, _) => (
-                threshold::last_at_least_on(&self.accel, self.tops[0], last, slack, ticks)
+                threshold::last_at_least_on(&self.accel, self.known.tops[0], last, slack, ticks)
                     .unwrap_or(0),
                 false,
                 None,
@@ -214,7 +214,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             Ramp::Indexed(index) => RunRead::new(index).ticks(steps),
             _ => match self.decel.per_step() {
                 Some(d) => ticks_at(d, steps),
-                None => Reader::new(&self.decel, self.tops[1]).ticks(steps),
+                None => Reader::new(&self.decel, self.known.tops[1]).ticks(steps),
             },
         };
         ticks.is_some_and(|t| search::faster_by(t, self.decel_slack, current))
@@ -246,7 +246,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
                 None => 0,
             },
             (None, _) => {
-                let mut accel = Reader::new(&self.accel, self.tops[0]);
+                let mut accel = Reader::new(&self.accel, self.known.tops[0]);
                 search::first_at_most(|pos| accel.ticks(pos), last, slack, current)
             }
         }

@@ -209,6 +209,19 @@ impl<'a, W: TableWord> Plan<'a, W> {
     }
 }
 
+/// What a player knows of its two ramps from when it was made, which its
+/// planner reads through one reference.
+#[derive(Clone, Debug)]
+pub(crate) struct Known {
+    /// Cursors at the tops of the acceleration and deceleration ramps,
+    /// from which searches on compressed ramps seek positions near the
+    /// top, a run at a time.
+    pub(crate) tops: [Option<Cursor>; 2],
+    /// How far ahead of the acceleration ramp the deceleration ramp is
+    /// faster at every step ([`Fall`](crate::table::fall::Fall)).
+    pub(crate) fall: crate::table::fall::Fall,
+}
+
 /// What the planner knows of a player.
 pub(crate) struct Sides<'t, 'a, W> {
     pub(crate) accel: Ramp<'a, W>,
@@ -227,11 +240,9 @@ pub(crate) struct Sides<'t, 'a, W> {
     pub(crate) slack: u32,
     /// The deceleration ramp's slack alone.
     pub(crate) decel_slack: u32,
-    /// How far ahead of the acceleration ramp the deceleration ramp is
-    /// faster at every step ([`Fall`](crate::table::fall::Fall)).
-    pub(crate) fall: &'t crate::table::fall::Fall,
-    /// Cursors at the tops of the acceleration and deceleration ramps.
-    pub(crate) tops: &'t [Option<Cursor>; 2],
+    /// What planning knows of the two ramps: the cursors at their tops,
+    /// and how far ahead the deceleration ramp is faster.
+    pub(crate) known: &'t Known,
     /// The cursors placed last on each ramp: a plan's stretches begin near
     /// each other.
     pub(crate) recent: Cell<[Option<Cursor>; 2]>,
@@ -281,14 +292,14 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
                 self.accel_last
             };
             if pos == last {
-                if let Some(top) = self.tops[side] {
+                if let Some(top) = self.known.tops[side] {
                     return Some(top);
                 }
             }
             return Cursor::at(ramp, pos);
         }
         let mut recent = self.recent.get();
-        let hint = match (recent[side], self.tops[side]) {
+        let hint = match (recent[side], self.known.tops[side]) {
             (Some(r), Some(t)) if r.pos.abs_diff(pos) < t.pos.abs_diff(pos) => Some(r),
             (r, None) => r,
             (_, t) => t,
@@ -310,7 +321,10 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
     /// A cursor to begin a search on each ramp from: the one placed last.
     pub(crate) fn hints(&self) -> [Option<Cursor>; 2] {
         let recent = self.recent.get();
-        [recent[0].or(self.tops[0]), recent[1].or(self.tops[1])]
+        [
+            recent[0].or(self.known.tops[0]),
+            recent[1].or(self.known.tops[1]),
+        ]
     }
 
     /// One step of the acceleration side towards the cruise position.
