@@ -233,8 +233,8 @@ pub(crate) fn fall<W: TableWord>(
 }
 
 /// A ramp's periods step by step, in ticks: a per-step table's or a
-/// compressed ramp's (one type for each, so that [`Fall::of`] is made once
-/// and each step's read stays inline).
+/// compressed ramp's (one type for every kind, so that [`Fall::of`] is
+/// compiled once, each step's read a match on the kind).
 enum Steps<'a, W> {
     Table(core::slice::Iter<'a, W>),
     Runs(Expand<'a>),
