@@ -155,13 +155,13 @@ impl<'a, W: TableWord> Player<'a, W> {
     /// A player that decelerates along the acceleration ramp read backwards.
     ///
     /// Making a player reads its ramps, a pass or two over every step
-    /// (their slack, and how far ahead the deceleration ramp is faster at
-    /// every step, which planning asks before it searches): about 100 000
-    /// instructions for a 1000-entry table on a Cortex-M3, 1.6 million for
-    /// a compressed ramp of 7192 steps, a third of that indexed
-    /// ([`Player::compressed_indexed`]: the index has both already). Make
-    /// it once, at boot, and plan each move with [`Player::start`] or
-    /// [`Player::retarget`].
+    /// (their slack, their fastest periods, and how far ahead the
+    /// deceleration ramp is faster at every step, which planning asks
+    /// before it searches): about 96 000 instructions for a 1000-entry
+    /// table on a Cortex-M3, 1.2 million for a compressed ramp of 7192
+    /// steps, and under a thousand indexed ([`Player::compressed_indexed`]:
+    /// the index has all of it already). Make it once, at boot, and plan
+    /// each move with [`Player::start`] or [`Player::retarget`].
     pub fn new(accel: Ramp<'a, W>) -> Self {
         Self::with_decel(accel, accel)
     }
@@ -214,9 +214,9 @@ impl<'a, W: TableWord> Player<'a, W, Compressed> {
     /// along it read backwards: it plays what [`Player::compressed`] plays
     /// of the same runs, and plans its moves (start, stop, a new cruise or
     /// target) by bisection over the runs instead of a walk over them.
-    /// The index holds the ramp's slack and how far ahead of itself it is
-    /// faster at every step, computed at compile time: making the player
-    /// reads none of its steps for them.
+    /// The index holds the ramp's slack, its shortest period and how far
+    /// ahead of itself it is faster at every step, computed at compile
+    /// time: making the player reads none of its steps.
     pub fn compressed_indexed<const N: usize>(index: &'a RunIndex<N>) -> Self {
         Self::build(Ramp::indexed(index), Ramp::indexed(index))
     }
@@ -265,7 +265,11 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             accel_last,
             decel_last: decel.len_steps().saturating_sub(1),
             decel_fastest,
-            cap: accel.first_faster_than(decel_fastest),
+            // One ramp both ways has no step faster than its fastest.
+            cap: match search::one_ramp(&accel, &decel) {
+                true => u32::MAX,
+                false => accel.first_faster_than(decel_fastest),
+            },
             cruise: accel_last,
             cruise_last: true,
             slack: accel_slack.saturating_add(decel_slack),

@@ -109,7 +109,8 @@ impl<'a, W: TableWord> Ramp<'a, W> {
                 .map(|p| p.0.into_ticks())
                 .min(),
             Ramp::Runs(runs) => Expand::new(runs).min(),
-            Ramp::Indexed(index) => super::runs::periods(index).min(),
+            // Computed with the index.
+            Ramp::Indexed(index) => Some(index.buckets().fastest),
         }
         .unwrap_or(0)
     }

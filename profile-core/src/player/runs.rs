@@ -5,7 +5,7 @@
 //! run being played stands.
 
 use crate::table::runs::{
-    FRACTION_MASK, IndexedRun, IndexedRuns, LinearRun, RUN_FRACTION_BITS, ahead,
+    FRACTION_MASK, IndexedRun, IndexedRuns, IndexedSteps, LinearRun, RUN_FRACTION_BITS, ahead,
 };
 
 /// The runs of a compressed ramp, plain words or indexed: the code that
@@ -128,39 +128,8 @@ pub(crate) fn run_holding(
 /// The periods an indexed ramp plays, in ticks: each run played from its
 /// own remainder, as the index gives it (not carried from the run before,
 /// as [`Expand`](crate::runs::Expand) carries it).
-pub(crate) fn periods(index: IndexedRuns<'_>) -> Periods<'_> {
-    Periods {
-        runs: index.runs().iter(),
-        run: RunState::default(),
-    }
-}
-
-/// [`periods`]: the runs left, and where the one being played stands.
-#[derive(Clone, Debug)]
-pub(crate) struct Periods<'a> {
-    runs: core::slice::Iter<'a, IndexedRun>,
-    run: RunState,
-}
-
-impl Iterator for Periods<'_> {
-    type Item = u32;
-
-    #[inline]
-    fn next(&mut self) -> Option<u32> {
-        loop {
-            if let Some(period) = self.run.next() {
-                return Some(period);
-            }
-            let r = self.runs.next()?;
-            let run = LinearRun::decode(&r.words);
-            self.run = RunState {
-                left: u32::from(run.count),
-                frac: u32::from(r.frac),
-                interval: run.interval,
-                add: run.add as u32,
-            };
-        }
-    }
+pub(crate) fn periods(index: IndexedRuns<'_>) -> IndexedSteps<'_> {
+    IndexedSteps::new(index.runs())
 }
 
 /// Where a run of a compressed ramp stands: `left` steps to play, the

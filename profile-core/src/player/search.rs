@@ -188,11 +188,10 @@ pub(crate) fn slack<W: TableWord>(ramp: &Ramp<'_, W>) -> u32 {
     }
 }
 
-/// The slack of a player's acceleration and deceleration ramps
-/// ([`slack`]), read once when they are one ramp (the same periods at the
-/// same address).
-pub(crate) fn slacks<W: TableWord>(accel: &Ramp<'_, W>, decel: &Ramp<'_, W>) -> (u32, u32) {
-    let one = match (*accel, *decel) {
+/// `true` when two ramps are one: the same periods at the same address,
+/// read the same way.
+pub(crate) fn one_ramp<W: TableWord>(accel: &Ramp<'_, W>, decel: &Ramp<'_, W>) -> bool {
+    match (*accel, *decel) {
         (
             Ramp::Steps {
                 periods: a,
@@ -205,10 +204,20 @@ pub(crate) fn slacks<W: TableWord>(accel: &Ramp<'_, W>, decel: &Ramp<'_, W>) -> 
         ) => core::ptr::eq(a, d) && x == y,
         (Ramp::Segments(a), Ramp::Segments(d)) => core::ptr::eq(a, d),
         (Ramp::Runs(a), Ramp::Runs(d)) => core::ptr::eq(a, d),
+        (Ramp::Indexed(a), Ramp::Indexed(d)) => core::ptr::eq(a.runs(), d.runs()),
         _ => false,
-    };
+    }
+}
+
+/// The slack of a player's acceleration and deceleration ramps
+/// ([`slack`]), read once when they are one ramp ([`one_ramp`]).
+pub(crate) fn slacks<W: TableWord>(accel: &Ramp<'_, W>, decel: &Ramp<'_, W>) -> (u32, u32) {
     let accel_slack = slack(accel);
-    (accel_slack, if one { accel_slack } else { slack(decel) })
+    let decel_slack = match one_ramp(accel, decel) {
+        true => accel_slack,
+        false => slack(decel),
+    };
+    (accel_slack, decel_slack)
 }
 
 /// How far ahead of the acceleration ramp the deceleration ramp is
@@ -221,10 +230,8 @@ pub(crate) fn fall<W: TableWord>(
     decel: &Ramp<'_, W>,
     decel_slack: u32,
 ) -> Fall {
-    if let (Ramp::Indexed(a), Ramp::Indexed(d)) = (accel, decel) {
-        if core::ptr::eq(a.runs(), d.runs()) {
-            return a.buckets().fall;
-        }
+    if let (Ramp::Indexed(index), true) = (accel, one_ramp(accel, decel)) {
+        return index.buckets().fall;
     }
     match (Steps::of(accel), Steps::of(decel)) {
         (Some(a), Some(d)) => Fall::of(a, d, accel.len_steps(), decel_slack),
@@ -238,7 +245,7 @@ pub(crate) fn fall<W: TableWord>(
 enum Steps<'a, W> {
     Table(core::slice::Iter<'a, W>),
     Runs(Expand<'a>),
-    Indexed(super::runs::Periods<'a>),
+    Indexed(crate::table::runs::IndexedSteps<'a>),
 }
 
 impl<'a, W: TableWord> Steps<'a, W> {
@@ -275,6 +282,37 @@ mod tests {
     /// `before` true wherever it may be (every step up to it fails) or
     /// only at some of those places: the walk's answer is never before the
     /// step returned, and the steps `before` held at are all before it.
+    /// One ramp both ways has no step faster than its shortest period, so
+    /// a player of one ramp takes no step for its first faster one: on a
+    /// table (with a step a tick slower after a faster one), held,
+    /// segments, runs and an index; two ramps at different addresses are
+    /// not one, even with the same periods.
+    #[test]
+    fn one_ramp_has_no_step_faster_than_its_fastest() {
+        use crate::table::runs::RunIndex;
+        static TABLE: [u16; 5] = [900, 700, 500, 501, 400];
+        static OTHER: [u16; 5] = [900, 700, 500, 501, 400];
+        static PAIRS: [(u16, u16); 3] = [(900, 2), (500, 0), (450, 3)];
+        static RUNS: [[u16; 5]; 2] = [[3, 4000, 0x8000, 0xFE0C, 0], [2, 2000, 0, 0, 0]];
+        static INDEX: RunIndex<2> = RunIndex::new(&RUNS);
+        let ramps = [
+            Ramp::steps(&TABLE),
+            Ramp::held(&TABLE, 3),
+            Ramp::segments(&PAIRS),
+            Ramp::runs(&RUNS),
+            Ramp::indexed(&INDEX),
+        ];
+        for ramp in ramps {
+            assert!(one_ramp(&ramp, &ramp), "{ramp:?}");
+            assert_eq!(ramp.first_faster_than(ramp.fastest()), u32::MAX, "{ramp:?}");
+            assert!(ramp.fastest() > 0, "{ramp:?}");
+        }
+        assert!(!one_ramp(&Ramp::steps(&TABLE), &Ramp::steps(&OTHER)));
+        assert!(!one_ramp(&Ramp::steps(&TABLE), &Ramp::held(&TABLE, 2)));
+        assert!(!one_ramp(&Ramp::<u16>::runs(&RUNS), &Ramp::indexed(&INDEX)));
+        assert_eq!(Ramp::<u16>::indexed(&INDEX).fastest(), 2000);
+    }
+
     #[test]
     fn nothing_before_the_step_returned_answers() {
         for len in 0..10u32 {

@@ -187,11 +187,12 @@ impl IndexedRun {
 /// instructions it takes without, a stop 15 %, a start 78 % (measured on
 /// a Cortex-M3: [the
 /// measurements](https://github.com/stepper-profiles/stepper-profiles/blob/main/docs/performance.md)).
-/// 16 bytes of flash a run, and 300 for the buckets (the run and the
+/// 16 bytes of flash a run, and 304 for the buckets (the run and the
 /// period at each bucket's first step, so that two steps far apart are
 /// often told apart in speed without reading either, and the ramp's
-/// slack and how far ahead of itself it is faster at every step, so that
-/// a player made on the index reads none of its steps to know them): the
+/// slack, its shortest period and how far ahead of itself it is faster
+/// at every step, so that a player made on the index reads none of its
+/// steps): the
 /// runs' own words are copied in, so that a firmware that plays the index
 /// alone keeps no other copy of them.
 ///
@@ -221,8 +222,8 @@ pub(crate) const BUCKETS: usize = 64;
 /// before it), saturated at `u16::MAX` (from there on the runs are
 /// bisected to the last), and that step's period; and what planning
 /// knows of the ramp as a whole, computed with them so that a player
-/// made on the index reads no step to know it: its slack and how far
-/// ahead of itself it is faster at every step.
+/// made on the index reads no step to know it: its slack, its shortest
+/// period and how far ahead of itself it is faster at every step.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) struct Buckets {
     pub(crate) shift: u32,
@@ -232,6 +233,8 @@ pub(crate) struct Buckets {
     pub(crate) period: [u16; BUCKETS],
     /// The most a step's period exceeds the shortest before it, in ticks.
     pub(crate) slack: u32,
+    /// The shortest period, in ticks (0 without a step).
+    pub(crate) fastest: u32,
     /// How far ahead of itself the ramp is faster at every step, read
     /// both ways ([`Fall`]).
     pub(crate) fall: Fall,
@@ -278,12 +281,13 @@ impl Buckets {
             }
             b += 1;
         }
-        let slack = slack(runs);
+        let (slack, fastest) = slack(runs);
         Buckets {
             shift,
             first,
             period,
             slack,
+            fastest,
             fall: fall(runs, total, slack),
         }
     }
@@ -368,9 +372,13 @@ impl Buckets {
     }
 }
 
-/// The periods of indexed runs, step by step, in `const` code: the run
-/// being played and the runs after it.
-struct ConstSteps<'a> {
+/// The periods of indexed runs, step by step, each run played from its
+/// own remainder as the index gives it (not carried from the run before,
+/// as [`Expand`] carries it): the run being played and the runs after
+/// it. Read in `const` code by [`IndexedSteps::step`], and as an
+/// iterator.
+#[derive(Clone, Debug)]
+pub(crate) struct IndexedSteps<'a> {
     runs: &'a [IndexedRun],
     /// The next run to play.
     next: usize,
@@ -380,9 +388,9 @@ struct ConstSteps<'a> {
     add: u32,
 }
 
-impl<'a> ConstSteps<'a> {
-    const fn new(runs: &'a [IndexedRun]) -> Self {
-        ConstSteps {
+impl<'a> IndexedSteps<'a> {
+    pub(crate) const fn new(runs: &'a [IndexedRun]) -> Self {
+        IndexedSteps {
             runs,
             next: 0,
             left: 0,
@@ -393,7 +401,7 @@ impl<'a> ConstSteps<'a> {
     }
 
     /// The next step's period, in ticks; `None` past the last run.
-    const fn next(&mut self) -> Option<u32> {
+    pub(crate) const fn step(&mut self) -> Option<u32> {
         while self.left == 0 {
             if self.next >= self.runs.len() {
                 return None;
@@ -414,11 +422,21 @@ impl<'a> ConstSteps<'a> {
     }
 }
 
-/// The most a step's period of `runs` exceeds the shortest before it.
-const fn slack(runs: &[IndexedRun]) -> u32 {
-    let mut steps = ConstSteps::new(runs);
+impl Iterator for IndexedSteps<'_> {
+    type Item = u32;
+
+    #[inline]
+    fn next(&mut self) -> Option<u32> {
+        self.step()
+    }
+}
+
+/// The most a step's period of `runs` exceeds the shortest before it,
+/// and the shortest (0 without a step).
+const fn slack(runs: &[IndexedRun]) -> (u32, u32) {
+    let mut steps = IndexedSteps::new(runs);
     let (mut fastest, mut rise) = (u32::MAX, 0u32);
-    while let Some(p) = steps.next() {
+    while let Some(p) = steps.step() {
         if p.saturating_sub(fastest) > rise {
             rise = p.saturating_sub(fastest);
         }
@@ -426,18 +444,18 @@ const fn slack(runs: &[IndexedRun]) -> u32 {
             fastest = p;
         }
     }
-    rise
+    (rise, if fastest == u32::MAX { 0 } else { fastest })
 }
 
 /// [`Fall::of`] the ramp of `runs` (`total` steps, `slack` its slack)
 /// read both ways, in `const` code.
 const fn fall(runs: &[IndexedRun], total: u32, slack: u32) -> Fall {
     let mut fall = Fall::empty(total);
-    let (mut accel, mut decel) = (ConstSteps::new(runs), ConstSteps::new(runs));
+    let (mut accel, mut decel) = (IndexedSteps::new(runs), IndexedSteps::new(runs));
     let mut fastest = u32::MAX;
-    let (mut t, mut at_t) = (0u32, decel.next());
+    let (mut t, mut at_t) = (0u32, decel.step());
     let mut y = 0u32;
-    while let Some(p) = accel.next() {
+    while let Some(p) = accel.step() {
         if p < fastest {
             fastest = p;
         }
@@ -446,7 +464,7 @@ const fn fall(runs: &[IndexedRun], total: u32, slack: u32) -> Fall {
                 break;
             }
             t += 1;
-            at_t = decel.next();
+            at_t = decel.step();
         }
         fall.take(y, t.saturating_sub(y));
         y += 1;

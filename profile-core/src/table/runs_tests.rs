@@ -73,8 +73,8 @@ fn the_index_holds_each_runs_first_step_and_remainder() {
     assert_eq!(index.runs()[2].step(), 3);
     assert_eq!(index.indexed().runs().len(), 4);
     assert_eq!(core::mem::size_of::<IndexedRun>(), 16);
-    // The buckets, the slack and the fall: 300 bytes.
-    assert_eq!(core::mem::size_of::<RunIndex<4>>(), 4 * 16 + 300);
+    // The buckets, the slack, the shortest period and the fall: 304 bytes.
+    assert_eq!(core::mem::size_of::<RunIndex<4>>(), 4 * 16 + 304);
 }
 
 /// The run holding each step (the last that begins at or before it,
@@ -147,6 +147,7 @@ fn each_steps_period_is_within_its_buckets_bounds() {
         // slack computed here, the fall as a player computes it for two
         // ramps, read off the expansion.
         assert_eq!(buckets.slack, slack);
+        assert_eq!(buckets.fastest, steps.iter().copied().min().unwrap_or(0));
         let (one, other) = (Expand::new(runs), Expand::new(runs));
         let fall = super::super::fall::Fall::of(one, other, steps.len() as u32, slack);
         assert_eq!(buckets.fall, fall);
