@@ -213,7 +213,12 @@ mod tests {
             decel_slack: search::slack(&decel),
             known: std::boxed::Box::leak(std::boxed::Box::new(Known {
                 tops: *tops,
-                fall: search::fall(&accel, &decel, search::slack(&decel)),
+                fall: search::fall(
+                    &accel,
+                    &decel,
+                    search::slack(&decel),
+                    search::one_ramp(&accel, &decel),
+                ),
             })),
             recent: core::cell::Cell::new([None; 2]),
             crossed: core::cell::Cell::new(None),

@@ -258,7 +258,8 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     fn build(accel: Ramp<'a, W>, decel: Ramp<'a, W>) -> Self {
         let accel_last = accel.len_steps().saturating_sub(1);
         let decel_fastest = decel.fastest();
-        let (accel_slack, decel_slack) = search::slacks(&accel, &decel);
+        let one = search::one_ramp(&accel, &decel);
+        let (accel_slack, decel_slack) = search::slacks(&accel, &decel, one);
         Player {
             accel,
             decel,
@@ -266,7 +267,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             decel_last: decel.len_steps().saturating_sub(1),
             decel_fastest,
             // One ramp both ways has no step faster than its fastest.
-            cap: match search::one_ramp(&accel, &decel) {
+            cap: match one {
                 true => u32::MAX,
                 false => accel.first_faster_than(decel_fastest),
             },
@@ -280,7 +281,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
                     Cursor::at(&accel, accel_last),
                     Cursor::at(&decel, decel.len_steps().saturating_sub(1)),
                 ],
-                fall: search::fall(&accel, &decel, decel_slack),
+                fall: search::fall(&accel, &decel, decel_slack, one),
             },
             endless: false,
             extended: 0,
@@ -459,7 +460,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             }
             return entry + 1;
         }
-        if self.period_dec(0) < current {
+        if self.decel_ticks(0).unwrap_or(0) < current {
             return 0;
         }
         let entry = match self.decel.per_step() {
@@ -473,12 +474,15 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         entry + 1
     }
 
-    fn period_dec(&self, pos: u32) -> u32 {
-        match self.decel.per_step() {
-            Some(d) => ticks_at(d, pos),
-            None => Reader::new(&self.decel, self.known.tops[1]).ticks(pos),
+    /// The deceleration ramp's period at step `pos`, in ticks; `None`
+    /// past its last step.
+    #[inline(always)]
+    fn decel_ticks(&self, pos: u32) -> Option<u32> {
+        match (self.decel.per_step(), self.decel) {
+            (Some(d), _) => ticks_at(d, pos),
+            (None, Ramp::Indexed(index)) => RunRead::new(index).ticks(pos),
+            (None, _) => Reader::new(&self.decel, self.known.tops[1]).ticks(pos),
         }
-        .unwrap_or(0)
     }
 
     /// Where the move stands, read off the plan once: where the

@@ -210,14 +210,8 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// so no step after it is as long, and the stop's entry is before it.
     /// `false` when that one read does not show it.
     fn stops_within(&self, steps: u32, current: u32) -> bool {
-        let ticks = match self.decel {
-            Ramp::Indexed(index) => RunRead::new(index).ticks(steps),
-            _ => match self.decel.per_step() {
-                Some(d) => ticks_at(d, steps),
-                None => Reader::new(&self.decel, self.known.tops[1]).ticks(steps),
-            },
-        };
-        ticks.is_some_and(|t| search::faster_by(t, self.decel_slack, current))
+        self.decel_ticks(steps)
+            .is_some_and(|t| search::faster_by(t, self.decel_slack, current))
     }
 
     /// The first position of the acceleration ramp whose period is not

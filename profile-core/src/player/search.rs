@@ -210,10 +210,14 @@ pub(crate) fn one_ramp<W: TableWord>(accel: &Ramp<'_, W>, decel: &Ramp<'_, W>) -
 }
 
 /// The slack of a player's acceleration and deceleration ramps
-/// ([`slack`]), read once when they are one ramp ([`one_ramp`]).
-pub(crate) fn slacks<W: TableWord>(accel: &Ramp<'_, W>, decel: &Ramp<'_, W>) -> (u32, u32) {
+/// ([`slack`]), read once when they are `one` ramp ([`one_ramp`]).
+pub(crate) fn slacks<W: TableWord>(
+    accel: &Ramp<'_, W>,
+    decel: &Ramp<'_, W>,
+    one: bool,
+) -> (u32, u32) {
     let accel_slack = slack(accel);
-    let decel_slack = match one_ramp(accel, decel) {
+    let decel_slack = match one {
         true => accel_slack,
         false => slack(decel),
     };
@@ -223,14 +227,16 @@ pub(crate) fn slacks<W: TableWord>(accel: &Ramp<'_, W>, decel: &Ramp<'_, W>) -> 
 /// How far ahead of the acceleration ramp the deceleration ramp is
 /// faster at every step ([`Fall`]), `decel_slack` the latter's
 /// ([`slack`]): an indexed ramp's own, computed with its index, when it
-/// is both; else read off the two ramps' steps, one pass over each;
-/// [`Fall::UNKNOWN`] for held and segment tables.
+/// is both (`one` ramp, [`one_ramp`]); else read off the two ramps'
+/// steps, one pass over each; [`Fall::UNKNOWN`] for held and segment
+/// tables.
 pub(crate) fn fall<W: TableWord>(
     accel: &Ramp<'_, W>,
     decel: &Ramp<'_, W>,
     decel_slack: u32,
+    one: bool,
 ) -> Fall {
-    if let (Ramp::Indexed(index), true) = (accel, one_ramp(accel, decel)) {
+    if let (Ramp::Indexed(index), true) = (accel, one) {
         return index.buckets().fall;
     }
     match (Steps::of(accel), Steps::of(decel)) {
