@@ -16,8 +16,9 @@
 # phase of the compressed ramp; or when three
 # `Axes` (a lead and two followers) take more per step than the player in
 # the same phase of the same table plus, per follower, 5 on the M3 and
-# M4F (the goal) and 7 on the M0 (above the 6.3 measured, as a bound
-# against regressions: no `ldrd`/`strd` and only eight low registers). Prints the planning calls
+# M4F (the goal) and 7 on the M0 (a bound against regressions above the
+# 6.27 measured, which is the least this step takes there: no `ldrd`/`strd`
+# and three free low registers; docs/performance.md counts it). Prints the planning calls
 # (start, set_cruise, set_cruise_period, a retarget farther, one nearer
 # and one 300 steps past the stop, stop on a 1000-entry table and on a
 # 7192-step compressed ramp, plain and indexed), and fails when one takes
