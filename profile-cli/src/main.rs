@@ -141,52 +141,8 @@ fn main() -> ExitCode {
 
 fn run(command: Command) -> Result<(), Failure> {
     match command {
-        Command::Report { file, out, docs } => {
-            let profiles = load(&file)?;
-            stdout(&report::text(&file.display().to_string(), &profiles)?)?;
-            if let Some(out) = out {
-                let mut files = Staging::new(&out)?;
-                files::write_plots(&profiles, &mut files)
-                    .map_err(|e| format!("cannot write into `{}`: {e}", out.display()))?;
-                let header = profiles.c_header_named("profiles.h", &CStyle::default());
-                files.write("profiles.h", &header)?;
-                let written = files.commit()?;
-                stdout(&format!(
-                    "\nwrote {} files to {}\n",
-                    written.len(),
-                    out.display()
-                ))?;
-            }
-            if let Some(docs) = docs {
-                let mut files = Staging::new(&docs)?;
-                files::write_docs(&profiles, &mut files)
-                    .map_err(|e| format!("cannot write the guide's figures: {e}"))?;
-                files.commit()?;
-                stdout(&format!(
-                    "wrote the guide's figures to {}\n",
-                    docs.display()
-                ))?;
-            }
-            Ok(())
-        }
-        Command::Check { files } => {
-            let mut failed = Vec::new();
-            for file in &files {
-                match Profiles::load(file) {
-                    Ok(p) => stdout(&format!(
-                        "{}: {} profiles, no mistakes\n",
-                        file.display(),
-                        p.profiles().len()
-                    ))?,
-                    Err(e) => failed.push(e.to_string()),
-                }
-            }
-            if failed.is_empty() {
-                Ok(())
-            } else {
-                Err(Failure(failed.join("\n")))
-            }
-        }
+        Command::Report { file, out, docs } => report(&file, out.as_deref(), docs.as_deref()),
+        Command::Check { files } => check(&files),
         Command::Header {
             file,
             out,
@@ -200,59 +156,126 @@ fn run(command: Command) -> Result<(), Failure> {
                 attribute,
                 prefix,
             };
-            style
-                .check()
-                .map_err(|e| format!("`--{}` {}", e.field, e.problem))?;
-            let profiles = load(&file)?;
-            match (out, split) {
-                (Some(out), true) => {
-                    if out.extension().is_none_or(|e| e != "h") {
-                        return Err(Failure(format!(
-                            "`--split` writes a header and a `.c` beside it: give the header a \
-                             name ending in `.h` (got `{}`)",
-                            out.display()
-                        )));
-                    }
-                    let (dir, name) = folder_and_name(&out)?;
-                    let files = profiles.c_split(&name.to_string_lossy(), &style);
-                    let mut staging = Staging::new(dir)?;
-                    staging.write(name, &files.header)?;
-                    staging.write(Path::new(name).with_extension("c"), &files.source)?;
-                    let written = staging.commit()?;
-                    note(&format!(
-                        "wrote {} and {}",
-                        written[0].display(),
-                        written[1].display()
-                    ));
-                    Ok(())
-                }
-                (Some(out), false) => {
-                    let (_, name) = folder_and_name(&out)?;
-                    let header = profiles.c_header_named(&name.to_string_lossy(), &style);
-                    emit(Some(&out), &header, "the C header")
-                }
-                (None, _) => whole(&profiles.c_header_with(&style), "the C header"),
-            }
+            header(&file, out.as_deref(), split, &style)
         }
         Command::Rust { file, out } => emit(
             out.as_deref(),
             &load(&file)?.rust_source(),
             "the Rust modules",
         ),
-        Command::Plot { file, out } => {
-            let profiles = load(&file)?;
-            let mut files = Staging::new(&out)?;
-            files::write_plots(&profiles, &mut files)
-                .map_err(|e| format!("cannot write into `{}`: {e}", out.display()))?;
-            let written = files.commit()?;
-            stdout(&format!(
-                "wrote {} files to {}\n",
-                written.len(),
-                out.display()
-            ))?;
-            Ok(())
+        Command::Plot { file, out } => plot(&file, &out),
+    }
+}
+
+/// `report`: the figures of `file` on standard output; with `out`, the
+/// plots, the CSVs and `profiles.h` written there; with `docs`, the
+/// guide's figures.
+fn report(file: &Path, out: Option<&Path>, docs: Option<&Path>) -> Result<(), Failure> {
+    let profiles = load(file)?;
+    stdout(&report::text(&file.display().to_string(), &profiles)?)?;
+    if let Some(out) = out {
+        let mut files = Staging::new(out)?;
+        files::write_plots(&profiles, &mut files)
+            .map_err(|e| format!("cannot write into `{}`: {e}", out.display()))?;
+        let header = profiles.c_header_named("profiles.h", &CStyle::default());
+        files.write("profiles.h", &header)?;
+        let written = files.commit()?;
+        stdout(&format!(
+            "\nwrote {} files to {}\n",
+            written.len(),
+            out.display()
+        ))?;
+    }
+    if let Some(docs) = docs {
+        let mut files = Staging::new(docs)?;
+        files::write_docs(&profiles, &mut files)
+            .map_err(|e| format!("cannot write the guide's figures: {e}"))?;
+        files.commit()?;
+        stdout(&format!(
+            "wrote the guide's figures to {}\n",
+            docs.display()
+        ))?;
+    }
+    Ok(())
+}
+
+/// `check`: each file read and computed, a line for each that holds no
+/// mistake; the mistakes of all of them in one failure.
+fn check(files: &[PathBuf]) -> Result<(), Failure> {
+    let mut failed = Vec::new();
+    for file in files {
+        match Profiles::load(file) {
+            Ok(p) => stdout(&format!(
+                "{}: {} profiles, no mistakes\n",
+                file.display(),
+                p.profiles().len()
+            ))?,
+            Err(e) => failed.push(e.to_string()),
         }
     }
+    if failed.is_empty() {
+        Ok(())
+    } else {
+        Err(Failure(failed.join("\n")))
+    }
+}
+
+/// `header`: the C of `file` in `style`, the style checked before the file
+/// is read: one header to `out` or standard output, or with `split` a
+/// header and a `.c` beside it.
+fn header(file: &Path, out: Option<&Path>, split: bool, style: &CStyle) -> Result<(), Failure> {
+    style
+        .check()
+        .map_err(|e| format!("`--{}` {}", e.field, e.problem))?;
+    let profiles = load(file)?;
+    match (out, split) {
+        (Some(out), true) => header_split(&profiles, out, style),
+        (Some(out), false) => {
+            let (_, name) = folder_and_name(out)?;
+            let header = profiles.c_header_named(&name.to_string_lossy(), style);
+            emit(Some(out), &header, "the C header")
+        }
+        (None, _) => whole(&profiles.c_header_with(style), "the C header"),
+    }
+}
+
+/// `header --split`: the header `out`, which must end in `.h`, and the
+/// `.c` beside it, written together.
+fn header_split(profiles: &Profiles, out: &Path, style: &CStyle) -> Result<(), Failure> {
+    if out.extension().is_none_or(|e| e != "h") {
+        return Err(Failure(format!(
+            "`--split` writes a header and a `.c` beside it: give the header a \
+             name ending in `.h` (got `{}`)",
+            out.display()
+        )));
+    }
+    let (dir, name) = folder_and_name(out)?;
+    let files = profiles.c_split(&name.to_string_lossy(), style);
+    let mut staging = Staging::new(dir)?;
+    staging.write(name, &files.header)?;
+    staging.write(Path::new(name).with_extension("c"), &files.source)?;
+    let written = staging.commit()?;
+    note(&format!(
+        "wrote {} and {}",
+        written[0].display(),
+        written[1].display()
+    ));
+    Ok(())
+}
+
+/// `plot`: the plots and CSVs of `file` written into `out`.
+fn plot(file: &Path, out: &Path) -> Result<(), Failure> {
+    let profiles = load(file)?;
+    let mut files = Staging::new(out)?;
+    files::write_plots(&profiles, &mut files)
+        .map_err(|e| format!("cannot write into `{}`: {e}", out.display()))?;
+    let written = files.commit()?;
+    stdout(&format!(
+        "wrote {} files to {}\n",
+        written.len(),
+        out.display()
+    ))?;
+    Ok(())
 }
 
 /// Reads and computes a profiles file, saying so if it takes a while.
