@@ -322,7 +322,8 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     }
 
     /// The direction of each axis in the move playing, or in the last one
-    /// (forward for an axis that stays).
+    /// (forward for an axis that stays in a move of some steps; a move of
+    /// no steps keeps them).
     pub fn directions(&self) -> [Direction; N] {
         self.directions
     }
@@ -338,21 +339,47 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     /// does not bend in the middle) and then move to `target` in a straight
     /// line from where they stopped; [`Axes::directions`] changes at the
     /// step that begins that move.
+    ///
+    /// The target the axes already go to (the one given last, or where a
+    /// stop ends) changes nothing, and a move to where they stand has no
+    /// steps and keeps the directions.
     pub fn move_to(&mut self, target: [i64; N]) -> [Direction; N] {
-        self.turn = None;
         if !self.player.is_done() {
-            self.stop();
-            self.then = Some(target);
+            if self.destination() != target {
+                self.stop();
+                self.then = Some(target);
+            }
             return self.directions;
         }
         self.then = None;
         let position = self.position();
+        if position == target {
+            return self.directions;
+        }
+        self.turn = None;
         let mut delta = [0i64; N];
         for ((d, t), p) in delta.iter_mut().zip(target).zip(position) {
             *d = t.saturating_sub(p);
         }
         self.start_by(delta);
         self.directions
+    }
+
+    /// Where the move playing ends, or the one queued after it.
+    fn destination(&self) -> [i64; N] {
+        self.then
+            .unwrap_or_else(|| self.position_after(self.lead_total))
+    }
+
+    /// Moves to `target` once the move playing has ended: for a register
+    /// that still holds the move's last edge when the lead has handed out
+    /// every period (`Buffered`), so that the pins take that edge in the
+    /// move's directions. The target the axes already go to changes
+    /// nothing.
+    pub(super) fn move_after(&mut self, target: [i64; N]) {
+        if self.destination() != target {
+            self.then = Some(target);
+        }
     }
 
     /// Moves by `delta` steps on each axis from the positions (negative:
@@ -393,7 +420,8 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
         self.edges = edges;
         self.lead_steps = l;
         self.lead = lead;
-        self.player.start(l);
+        // The cruise set on the axes holds.
+        self.player.begin(l);
         // `l`, or none on an empty ramp.
         self.lead_total = self.player.remaining();
     }
@@ -403,15 +431,24 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     /// taken it by then.
     pub fn stop(&mut self) {
         self.then = None;
-        self.turn = None;
         let played = self.lead_played();
+        let turn = self.at_turn();
         self.player.stop();
         self.lead_total = played + self.player.remaining();
+        // A turn whose first edge nothing has followed stays one.
+        self.turn = turn.map(|before| (before, self.player.remaining()));
     }
 
-    /// Cruises slower or faster ([`Player::set_cruise`]); the targets stay.
+    /// Cruises slower or faster ([`Player::set_cruise`]) for this move and
+    /// the next; the targets stay.
     pub fn set_cruise(&mut self, pos: u32) {
         self.player.set_cruise(pos);
+    }
+
+    /// Cruises at a period in ticks ([`Player::set_cruise_period`]) for
+    /// this move and the next; the targets stay.
+    pub fn set_cruise_period(&mut self, period: W) {
+        self.player.set_cruise_period(period);
     }
 
     /// Plays the next edge: hands the period until the one after it and
@@ -477,9 +514,21 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
         true
     }
 
-    /// The last turn to a queued move.
-    pub(super) fn turn(&self) -> Option<([Direction; N], u32)> {
-        self.turn
+    /// The directions before the last turn to a queued move, when the
+    /// lead has handed out nothing since the first edge after it (which
+    /// may still be in a buffered register's hands, not taken).
+    fn at_turn(&self) -> Option<[Direction; N]> {
+        let (before, mark) = self.turn?;
+        let remaining = self.player.remaining();
+        (remaining == mark && (mark > 0 || !self.player.is_ended())).then_some(before)
+    }
+
+    /// The directions of the edge whose period the lead handed out last:
+    /// those before a turn while nothing has followed its first edge
+    /// ([`Buffered`](super::Buffered)'s pins take that edge one interval
+    /// later).
+    pub(super) fn handed_directions(&self) -> [Direction; N] {
+        self.at_turn().unwrap_or(self.directions)
     }
 
     /// The next edge's period and mask ([`Axes::step`]), or `None` when

@@ -104,9 +104,19 @@ pub struct Axis<'a, W, L = AnyLayout> {
     direction: Direction,
     /// The move after this one.
     then: Then,
-    /// The last reversal: the direction before it, and the steps the
-    /// player had left once it handed out the first period after it.
-    turn: Option<(Direction, u32)>,
+    /// The last reversal.
+    turn: Option<Turn>,
+}
+
+/// A reversal: the direction before it, and where the player stood once it
+/// had handed out the first period after it (a run's laps change the steps
+/// left, and add to those they have added, so the two never stand there
+/// again).
+#[derive(Clone, Copy, Debug)]
+struct Turn {
+    before: Direction,
+    remaining: u32,
+    extended: u64,
 }
 
 impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
@@ -121,15 +131,31 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
         }
     }
 
-    /// The steps to the move's end, a run's laps taken off.
+    /// The steps to the move's end, a run's laps taken off (modulo 2^64,
+    /// as positions are).
     fn left(&self) -> i64 {
-        i64::from(self.player.remaining()) - self.player.extended() as i64
+        i64::from(self.player.remaining()).wrapping_sub(self.player.extended() as i64)
     }
 
     /// The position, in steps: exact after every step (past `i64::MAX` it
     /// wraps to `i64::MIN`, and back, as a hardware counter does).
     pub fn position(&self) -> i64 {
-        self.end.wrapping_sub(self.direction.sign() * self.left())
+        self.end
+            .wrapping_sub(self.direction.sign().wrapping_mul(self.left()))
+    }
+
+    /// Where the move playing and the one queued after it end, in steps;
+    /// `None` for a run.
+    fn destination(&self) -> Option<i64> {
+        match self.then {
+            Then::To(target) => Some(target),
+            Then::Run(_) => None,
+            Then::Rest if self.player.is_running() => None,
+            Then::Rest => Some(
+                self.position()
+                    .wrapping_add(self.direction.sign() * i64::from(self.player.remaining())),
+            ),
+        }
     }
 
     /// Sets the position (after homing, say), at rest; refused while a move
@@ -147,33 +173,52 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
     }
 
     /// Moves to `target` and returns the direction to set now. From rest,
-    /// starts the move (a move to the position itself has no steps; one of
-    /// more than `u32::MAX` steps stops there). While a move plays, takes
-    /// the new target as the type's docs say.
+    /// starts the move (a move to the position itself has no steps and
+    /// keeps the direction; one of more than `u32::MAX` steps stops
+    /// `u32::MAX` steps along). While a move plays, takes the new target as
+    /// the type's docs say; the target the move already ends at changes
+    /// nothing.
     pub fn move_to(&mut self, target: i64) -> Direction {
-        self.turn = None;
         if self.player.is_done() {
+            self.turn = None;
             self.then = Then::Rest;
             self.start_to(target);
+            return self.direction;
+        }
+        if self.destination() == Some(target) {
             return self.direction;
         }
         let position = self.position();
         let delta = target.saturating_sub(position);
         let ahead = delta != 0 && delta.signum() == self.direction.sign();
-        let reach = u32::try_from(delta.unsigned_abs()).ok();
-        match reach {
-            Some(steps) if ahead && steps >= self.player.steps_to_stop() => {
-                self.then = Then::Rest;
-                self.replan(|p| {
-                    p.retarget(steps);
-                });
-            }
-            _ => {
-                self.then = Then::To(target);
-                self.replan(Player::stop);
-            }
+        // Farther than a move can be: as far as one can, at speed.
+        let steps = u32::try_from(delta.unsigned_abs()).unwrap_or(u32::MAX);
+        if ahead && steps >= self.player.steps_to_stop() {
+            self.then = Then::Rest;
+            self.replan(|p| {
+                p.retarget(steps);
+            });
+        } else {
+            self.then = Then::To(target);
+            self.replan(Player::stop);
         }
         self.direction
+    }
+
+    /// Moves to `target` once the move playing has ended: for a register
+    /// that still holds the move's last period when the player has handed
+    /// out every period (`Buffered`), so that the pin takes that step in
+    /// the move's direction. The target the move ends at changes nothing.
+    pub(crate) fn move_after(&mut self, target: i64) {
+        if self.destination() != Some(target) {
+            self.then = Then::To(target);
+        }
+    }
+
+    /// Runs `direction` once the move playing has ended
+    /// ([`Axis::move_after`]).
+    pub(crate) fn run_after(&mut self, direction: Direction) {
+        self.then = Then::Run(direction);
     }
 
     /// Moves by `delta` steps from the position (negative: backward), as
@@ -186,8 +231,8 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
     /// [`Axis::stop`]: at once from rest or moving that way, after a stop
     /// when moving the other way. Returns the direction to set now.
     pub fn run(&mut self, direction: Direction) -> Direction {
-        self.turn = None;
         if self.player.is_done() {
+            self.turn = None;
             self.then = Then::Rest;
             self.direction = direction;
             self.replan(Player::run);
@@ -201,11 +246,34 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
         self.direction
     }
 
-    /// Changes the player's move, the position kept.
+    /// Changes the player's move, the position kept, and a reversal whose
+    /// first period nothing has followed yet kept with it.
     fn replan(&mut self, change: impl FnOnce(&mut Player<'a, W, L>)) {
         let position = self.position();
+        let turn = self.at_turn();
         change(&mut self.player);
-        self.end = position.wrapping_add(self.direction.sign() * self.left());
+        self.end = position.wrapping_add(self.direction.sign().wrapping_mul(self.left()));
+        self.turn = turn.map(|before| self.turn_from(before));
+    }
+
+    /// A reversal from `before`, the player having handed out the first
+    /// period after it.
+    fn turn_from(&self, before: Direction) -> Turn {
+        Turn {
+            before,
+            remaining: self.player.remaining(),
+            extended: self.player.extended(),
+        }
+    }
+
+    /// The direction before the last reversal, when the player has handed
+    /// out nothing since the first period after it (which may still be in
+    /// a buffered register's hands, its step not taken).
+    fn at_turn(&self) -> Option<Direction> {
+        let turn = self.turn?;
+        let (remaining, extended) = (self.player.remaining(), self.player.extended());
+        let here = remaining == turn.remaining && extended == turn.extended;
+        (here && (remaining > 0 || !self.player.is_ended())).then_some(turn.before)
     }
 
     /// Starts a move from rest to `target`.
@@ -213,11 +281,13 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
         let position = self.position();
         let delta = target.saturating_sub(position);
         let steps = u32::try_from(delta.unsigned_abs()).unwrap_or(u32::MAX);
-        self.direction = if delta < 0 {
-            Direction::Backward
-        } else {
-            Direction::Forward
-        };
+        if delta != 0 {
+            self.direction = if delta < 0 {
+                Direction::Backward
+            } else {
+                Direction::Forward
+            };
+        }
         self.player.begin(steps);
         self.end = position.wrapping_add(self.direction.sign() * i64::from(steps));
     }
@@ -227,7 +297,6 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
     /// is dropped.
     pub fn stop(&mut self) {
         self.then = Then::Rest;
-        self.turn = None;
         self.replan(Player::stop);
     }
 
@@ -301,7 +370,7 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
         if !self.player.step(write) {
             return false;
         }
-        self.turn = Some((before, self.player.remaining()));
+        self.turn = Some(self.turn_from(before));
         true
     }
 
@@ -345,10 +414,12 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
         &self.player
     }
 
-    /// The last reversal ([`Buffered`](super::Buffered) reads the direction
-    /// at the pin from it).
-    pub(crate) fn turn(&self) -> Option<(Direction, u32)> {
-        self.turn
+    /// The direction of the step whose period the player handed out last:
+    /// the one before a reversal while nothing has followed the first
+    /// period after it ([`Buffered`](super::Buffered)'s pin takes that
+    /// period's step one interval later).
+    pub(crate) fn handed_direction(&self) -> Direction {
+        self.at_turn().unwrap_or(self.direction)
     }
 
     fn idle(&self) -> Result<(), Moving> {

@@ -3,16 +3,18 @@
 
 use crate::base::timer::TableWord;
 use crate::player::Player;
-use crate::player::axes::Axes;
 use crate::player::axis::{Axis, Direction};
 use crate::player::layout::Layout;
+
+mod axes;
+pub use axes::AxesStart;
 
 mod sealed {
     pub trait Sealed {}
 }
 
 /// What [`Buffered`] plays: one period per call, as [`Player`] and [`Axis`]
-/// hand them out. ([`Axes`] hand out a period and a mask of the axes that
+/// hand them out. ([`Axes`](super::Axes) hand out a period and a mask of the axes that
 /// step: `Buffered<Axes>` has its own calls, which hand on both.) Sealed:
 /// the two are all there is.
 pub trait Steps: sealed::Sealed {
@@ -126,7 +128,7 @@ impl<F> Pulsed<F> {
     }
 }
 
-/// A [`Player`], an [`Axis`] or [`Axes`] for a reload register that takes
+/// A [`Player`], an [`Axis`] or [`Axes`](super::Axes) for a reload register that takes
 /// effect at the next wrap.
 ///
 /// Playing a move on a timer whose reload register takes effect at the next
@@ -174,15 +176,67 @@ impl<F> Pulsed<F> {
 /// cruise changes included. One period is always in the timer's hands, so
 /// they take effect one interval after the same call on a register that
 /// takes effect at once.
+///
+/// A call that starts a move (`start`, `run`, `move_to`, `move_by`) says
+/// what to load by where the timer stands:
+///
+/// - at rest (the interrupt that ends the last interval has come, or
+///   nothing has played yet): `(Some(first), next)`: load `first`, start
+///   the counter (the first step is taken now), then load `next`;
+/// - in a move's last interval, every step taken and the counter still
+///   counting: `(None, Some(first))`: load `first` into the reload register
+///   now, the counter running on; the interrupt that ends the interval
+///   takes the new move's first step, as on a register that takes effect
+///   at once;
+/// - while a step is ahead of the pin (its period in the register): `(None,
+///   None)`, nothing to load: the new move follows the periods in the
+///   timer's hands, the last of them taken in its own move's direction.
+///
+/// So the same two lines serve every case: load `first` and start the
+/// counter if there is one, then load `next` if there is one.
+///
+/// ```
+/// use profile_core::player::{Buffered, Player, Ramp};
+///
+/// static RAMP: [u16; 3] = [3000, 2000, 1500];
+/// let mut stepper = Buffered::new(Player::new(Ramp::steps(&RAMP)));
+/// assert_eq!(stepper.start(2), (Some(3000), Some(3000)));
+/// // One interrupt: the second and last step; the counter counts the
+/// // last interval.
+/// assert!(stepper.step(|_| unreachable!()));
+/// assert!(stepper.is_done());
+/// // A move from there: its first period to the register now, and the
+/// // interrupt that ends the interval takes its first step.
+/// assert_eq!(stepper.start(3), (None, Some(3000)));
+/// let mut loaded = vec![];
+/// while stepper.step(|period| loaded.push(period)) {}
+/// assert_eq!(loaded, [2000, 3000]);
+/// ```
 #[derive(Clone, Debug)]
 pub struct Buffered<S> {
     inner: S,
-    /// For [`Axes`]: the mask of the axes that step on the edge whose
+    /// For [`Axes`](super::Axes): the mask of the axes that step on the edge whose
     /// period is in the reload register, its step not taken yet; 0 when
     /// there is none (never 0 else: the lead steps on every edge). A
     /// [`Player`] or an [`Axis`] says so itself: a step is ahead of the pin
     /// until its step returns `false`.
     ahead: u32,
+    /// At rest: the interrupt that ends the last interval has come (the
+    /// step has returned `false`), or no move has begun.
+    rested: bool,
+}
+
+/// Where the timer stands for a call that may start a move.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Timer {
+    /// Stopped: a move starts the counter.
+    Rest,
+    /// Counting a move's last interval, every step taken: a move's first
+    /// period goes to the register.
+    Last,
+    /// A step is ahead of the pin: a move follows the periods in the
+    /// timer's hands.
+    Playing,
 }
 
 impl<S> Buffered<S> {
@@ -191,7 +245,11 @@ impl<S> Buffered<S> {
     /// since its step last returned `false` has the last of them in the
     /// register, its step not taken.)
     pub fn new(inner: S) -> Self {
-        Buffered { inner, ahead: 0 }
+        Buffered {
+            inner,
+            ahead: 0,
+            rested: true,
+        }
     }
 
     /// The player or axis: what it has handed out is one period ahead of
@@ -216,7 +274,27 @@ impl<S: Steps> Buffered<S> {
         // no step is ahead of the pin.
         let first = self.inner.next_period();
         let next = first.as_ref().and_then(|_| self.inner.next_period());
+        self.rested &= first.is_none();
         (first, next)
+    }
+
+    /// Where the timer stands.
+    fn timer(&self) -> Timer {
+        match (self.inner.ended(), self.rested) {
+            (false, _) => Timer::Playing,
+            (true, false) => Timer::Last,
+            (true, true) => Timer::Rest,
+        }
+    }
+
+    /// What to load for the move the inner player has just started, the
+    /// timer standing at `timer` (the type's docs).
+    fn load(&mut self, timer: Timer) -> (Option<S::Word>, Option<S::Word>) {
+        match timer {
+            Timer::Rest => self.begin(),
+            Timer::Last => (None, self.inner.next_period()),
+            Timer::Playing => (None, None),
+        }
     }
 
     /// From the timer's interrupt, at the end of an interval: `true` when a
@@ -228,7 +306,12 @@ impl<S: Steps> Buffered<S> {
         // While the player has periods, one is always in the register; then
         // the period in the register, if any, is the last interval,
         // starting now: one kind of the run being played says which.
-        self.inner.step_buffered(write)
+        let taken = self.inner.step_buffered(write);
+        // (Folded away on the path that plays a run: it takes a step.)
+        if !taken {
+            self.rested = true;
+        }
+        taken
     }
 
     /// From the timer's interrupt, at the end of an interval: when a step
@@ -240,7 +323,11 @@ impl<S: Steps> Buffered<S> {
     /// [`Buffered::step`] with the pin pulsed first.
     #[inline]
     pub fn pulse_and_step(&mut self, pulse: impl FnOnce(), write: impl FnMut(S::Word)) -> bool {
-        self.inner.step_pulsed(pulse, write)
+        let taken = self.inner.step_pulsed(pulse, write);
+        if !taken {
+            self.rested = true;
+        }
+        taken
     }
 
     /// Steps not yet taken (at most `u32::MAX`).
@@ -258,11 +345,12 @@ impl<S: Steps> Buffered<S> {
 }
 
 impl<'a, W: TableWord, L: Layout> Buffered<Player<'a, W, L>> {
-    /// Starts a move of `steps` steps ([`Player::start`]) and begins it
-    /// ([`Buffered::begin`]).
+    /// Starts a move of `steps` steps ([`Player::start`]): what to load as
+    /// the type's docs say (from rest, [`Buffered::begin`]).
     pub fn start(&mut self, steps: u32) -> (Option<W>, Option<W>) {
+        let timer = self.timer();
         self.inner.start(steps);
-        self.begin()
+        self.load(timer)
     }
 
     /// Decelerates to rest ([`Player::stop`]), from the first period not
@@ -287,21 +375,21 @@ impl<'a, W: TableWord, L: Layout> Buffered<Player<'a, W, L>> {
     /// Ends the move `steps` periods after those already handed out (one
     /// is in the timer's hands), if it can stop in that many
     /// ([`Player::retarget`]); `false`, changing nothing, when it cannot.
+    /// As the player's: with every period handed out (at rest, or in the
+    /// move's last interval) there is no move to end later, and only
+    /// `retarget(0)` is taken, changing nothing.
     pub fn retarget(&mut self, steps: u32) -> bool {
-        self.remaining() == 0 || self.inner.retarget(steps)
+        self.inner.retarget(steps)
     }
 
     /// A move without an end ([`Player::run`]) until [`Buffered::stop`]:
-    /// from rest, its first two periods to load; while a move plays, it
-    /// goes on from the first period not yet in the timer's hands and
-    /// there is nothing to load, `(None, None)`.
+    /// what to load as the type's docs say. While a move plays, it goes on
+    /// from the first period not yet in the timer's hands and there is
+    /// nothing to load, `(None, None)`.
     pub fn run(&mut self) -> (Option<W>, Option<W>) {
-        if self.remaining() > 0 {
-            self.inner.run();
-            return (None, None);
-        }
+        let timer = self.timer();
         self.inner.run();
-        self.begin()
+        self.load(timer)
     }
 }
 
@@ -310,14 +398,27 @@ impl<'a, W: TableWord, L: Layout> Buffered<Axis<'a, W, L>> {
     /// and, when the move starts from rest, its first two periods
     /// ([`Buffered::begin`]). While a move plays, the new target is taken
     /// from the first period not yet in the timer's hands, and there is
-    /// nothing to load: `(direction, None, None)`.
+    /// nothing to load: `(direction, None, None)`. In the move's last
+    /// interval (its last period in the timer's hands, the player's all
+    /// handed out), the move to `target` follows that step as it would
+    /// follow a stop: every step is taken in the direction of the move it
+    /// belongs to, and [`Buffered::direction`] changes at the step that
+    /// starts the way back.
     pub fn move_to(&mut self, target: i64) -> (Direction, Option<W>, Option<W>) {
-        if self.remaining() > 0 {
-            return (self.inner.move_to(target), None, None);
+        if self.last_ahead() {
+            self.inner.move_after(target);
+            return (self.inner.direction(), None, None);
         }
+        let timer = self.timer();
         let direction = self.inner.move_to(target);
-        let (first, next) = self.begin();
+        let (first, next) = self.load(timer);
         (direction, first, next)
+    }
+
+    /// `true` when the move's last period is in the timer's hands, its
+    /// step not taken, and the axis has no period left to hand out.
+    fn last_ahead(&self) -> bool {
+        self.inner.remaining() == 0 && !self.inner.ended()
     }
 
     /// Moves by `delta` steps from the position at the pin, as
@@ -327,13 +428,17 @@ impl<'a, W: TableWord, L: Layout> Buffered<Axis<'a, W, L>> {
     }
 
     /// Runs `direction` without an end ([`Axis::run`]): the direction to
-    /// set now, and from rest the first two periods to load.
+    /// set now, and from rest the first two periods to load. In the move's
+    /// last interval, the run follows its last step, as a new target does
+    /// ([`Buffered::move_to`]).
     pub fn run(&mut self, direction: Direction) -> (Direction, Option<W>, Option<W>) {
-        if self.remaining() > 0 {
-            return (self.inner.run(direction), None, None);
+        if self.last_ahead() {
+            self.inner.run_after(direction);
+            return (self.inner.direction(), None, None);
         }
+        let timer = self.timer();
         let direction = self.inner.run(direction);
-        let (first, next) = self.begin();
+        let (first, next) = self.load(timer);
         (direction, first, next)
     }
 
@@ -342,22 +447,19 @@ impl<'a, W: TableWord, L: Layout> Buffered<Axis<'a, W, L>> {
     /// must say for it. The axis's own direction is one step ahead at a
     /// reversal.
     pub fn direction(&self) -> Direction {
-        match self.inner.turn() {
-            // The first period after the turn is in the timer's hands, its
-            // step not taken: the pin takes the last step before the turn.
-            Some((before, mark))
-                if self.inner.player().remaining() == mark && (mark > 0 || !self.inner.ended()) =>
-            {
-                before
-            }
-            _ => self.inner.direction(),
-        }
+        // At a reversal, the first period after it is in the timer's
+        // hands, its step not taken: the pin takes the last step before.
+        self.inner.handed_direction()
     }
 
     /// The position at the pin, in steps: the axis's less the step whose
-    /// period is in the timer's hands and not yet taken.
+    /// period is in the timer's hands and not yet taken (wrapping past the
+    /// ends of `i64` as the axis's does).
     pub fn position(&self) -> i64 {
-        self.inner.position() - self.inner.direction().sign() * i64::from(!self.inner.ended())
+        let ahead = i64::from(!self.inner.ended());
+        self.inner
+            .position()
+            .wrapping_sub(self.inner.direction().sign() * ahead)
     }
 
     /// Decelerates to rest ([`Axis::stop`]), from the first period not yet
@@ -366,126 +468,15 @@ impl<'a, W: TableWord, L: Layout> Buffered<Axis<'a, W, L>> {
         self.inner.stop();
     }
 
-    /// Cruises slower or faster ([`Axis::set_cruise`]).
+    /// Cruises slower or faster ([`Axis::set_cruise`]), from the first
+    /// period not yet in the timer's hands.
     pub fn set_cruise(&mut self, pos: u32) {
         self.inner.set_cruise(pos);
     }
-}
 
-/// How a move of [`Buffered`] [`Axes`] begins: set the direction pins,
-/// load `first`, start the counter and take the first step (on the axes in
-/// `mask`), then load `next`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct AxesStart<W, const N: usize> {
-    /// The direction each axis's pin must say before the first step.
-    pub directions: [Direction; N],
-    /// The axes that step on the first edge (0 for a move without steps).
-    pub mask: u32,
-    /// The first period: `None` for a move without steps.
-    pub first: Option<W>,
-    /// The second: `None` for a move of fewer than two steps.
-    pub next: Option<W>,
-}
-
-impl<'a, W: TableWord, const N: usize, L: Layout> Buffered<Axes<'a, W, N, L>> {
-    /// Moves to `target` ([`Axes::move_to`]). From rest, begins the move:
-    /// the directions, the first edge's mask and the first two periods.
-    /// While a move plays, the new target is taken from the first period
-    /// not yet in the timer's hands, and there is nothing to load: the
-    /// directions now, mask 0 and no periods.
-    pub fn move_to(&mut self, target: [i64; N]) -> AxesStart<W, N> {
-        if self.remaining() > 0 {
-            return AxesStart {
-                directions: self.inner.move_to(target),
-                mask: 0,
-                first: None,
-                next: None,
-            };
-        }
-        let directions = self.inner.move_to(target);
-        let (first, mask) = match self.inner.next_step() {
-            Some((period, mask)) => (Some(period), mask),
-            None => (None, 0),
-        };
-        let next = first.and_then(|_| self.inner.next_step());
-        self.ahead = next.map_or(0, |(_, mask)| mask);
-        AxesStart {
-            directions,
-            mask,
-            first,
-            next: next.map(|(period, _)| period),
-        }
-    }
-
-    /// Moves by `delta` steps on each axis from the positions at the pins,
-    /// as [`Buffered::move_to`] does.
-    pub fn move_by(&mut self, delta: [i64; N]) -> AxesStart<W, N> {
-        let mut target = self.position();
-        for (t, d) in target.iter_mut().zip(delta) {
-            *t = t.saturating_add(d);
-        }
-        self.move_to(target)
-    }
-
-    /// The direction each axis's pin must say for the edge the pins take
-    /// now, from the interrupt [`Buffered::step`] returned a mask in: at a
-    /// turn to a queued move the axes' own directions are one edge ahead.
-    pub fn directions(&self) -> [Direction; N] {
-        match self.inner.turn() {
-            Some((before, mark))
-                if self.inner.player().remaining() == mark && (mark > 0 || self.ahead != 0) =>
-            {
-                before
-            }
-            _ => self.inner.directions(),
-        }
-    }
-
-    /// From the timer's interrupt, at the end of an interval: the mask of
-    /// the axes that step now, on the edge the interval now starting
-    /// begins with, having handed the period after that interval to
-    /// `write` (not called near the move's end, where there is none); 0
-    /// when the interval that ended was the move's last.
-    #[inline]
-    pub fn step(&mut self, mut write: impl FnMut(W)) -> u32 {
-        let now = self.ahead;
-        let ahead = &mut self.ahead;
-        if !self.inner.step(|period, mask| {
-            *ahead = mask;
-            write(period);
-        }) {
-            *ahead = 0;
-        }
-        now
-    }
-
-    /// Edges not yet taken.
-    pub fn remaining(&self) -> u32 {
-        self.inner.remaining() + u32::from(self.ahead != 0)
-    }
-
-    /// `true` when every step has been taken (the last interval may still
-    /// be counting).
-    pub fn is_done(&self) -> bool {
-        self.remaining() == 0
-    }
-
-    /// The positions at the pins, in steps: the axes' less the edge whose
-    /// period is in the timer's hands and not yet taken.
-    pub fn position(&self) -> [i64; N] {
-        let played = self.inner.lead_played();
-        self.inner
-            .position_after(played - u32::from(self.ahead != 0 && played > 0))
-    }
-
-    /// Decelerates to rest ([`Axes::stop`]), from the first period not yet
-    /// in the timer's hands.
-    pub fn stop(&mut self) {
-        self.inner.stop();
-    }
-
-    /// Cruises slower or faster ([`Axes::set_cruise`]).
-    pub fn set_cruise(&mut self, pos: u32) {
-        self.inner.set_cruise(pos);
+    /// Cruises at a period in ticks ([`Axis::set_cruise_period`]), from
+    /// the first period not yet in the timer's hands.
+    pub fn set_cruise_period(&mut self, period: W) {
+        self.inner.set_cruise_period(period);
     }
 }

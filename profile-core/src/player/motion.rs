@@ -147,7 +147,10 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
 
     /// Ends the move `steps` steps from now, at rest, if it can stop in
     /// that many ([`Player::steps_to_stop`]); returns `false`, changing
-    /// nothing, when it cannot. At rest, starts a move of `steps` steps.
+    /// nothing, when it cannot. A retarget to the steps that remain is
+    /// taken and changes nothing (but that a run, [`Player::run`], then
+    /// ends there). At rest there is no move to end later: only
+    /// `retarget(0)` is taken; [`Player::start`] starts a move.
     ///
     /// The move goes on from where it stands: accelerating, cruising or
     /// decelerating, it plays on along the acceleration ramp towards the
@@ -168,12 +171,19 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// let rest: Vec<u16> = core::iter::from_fn(|| player.next_period()).collect();
     /// assert_eq!(rest, [1500, 1500, 1500, 2000, 3000]);
     /// assert!(!{ player.start(6); player.next_period(); player.next_period(); player.retarget(1) });
+    /// // At rest, nothing to end later.
+    /// while player.next_period().is_some() {}
+    /// assert!(!player.retarget(5) && player.next_period().is_none());
     /// ```
     pub fn retarget(&mut self, steps: u32) -> bool {
         let remaining = self.remaining();
-        if remaining == 0 {
-            self.start(steps);
+        if steps == remaining {
+            // Where the move ends already (a run's end, no longer put off).
+            self.endless = false;
             return true;
+        }
+        if remaining == 0 {
+            return false;
         }
         // As `steps_to_stop`, where the move stands read once; a move
         // made no shorter can always end where it would have.
