@@ -14,6 +14,8 @@ use super::{Constant, Number, Profile, constants, doc_lines};
 use crate::base::error::Fixed;
 use crate::base::timer::Word;
 use crate::table::computed::Generated;
+use crate::table::runs::{IndexedRun, RunIndex};
+use core::mem::size_of;
 
 /// A period as a literal: the first of an array carries the word's suffix,
 /// which gives the array its type.
@@ -80,6 +82,26 @@ fn doc(line: &str) -> String {
     format!(" {line}")
 }
 
+/// The lines of `RUN_INDEX`'s docs that state its sizes, as the types have
+/// them: a run indexed, the buckets and what an index holds besides, and a
+/// run of `RUNS`.
+fn run_index_sizes() -> [String; 3] {
+    let (indexed, buckets, run) = (
+        size_of::<IndexedRun>(),
+        size_of::<RunIndex<0>>(),
+        size_of::<[u16; 5]>(),
+    );
+    [
+        format!(
+            " them and plans its moves finding a step's run by its bucket of steps ({indexed} bytes of"
+        ),
+        format!(
+            " flash a run and {buckets} for the buckets, in place of `RUNS`' {run} a run when `RUNS` is"
+        ),
+        String::from(" not played itself)."),
+    ]
+}
+
 /// A module named after the profile, holding the table and its figures,
 /// documented with its parameters.
 pub fn module(profile: &Profile) -> TokenStream {
@@ -126,14 +148,13 @@ pub fn module(profile: &Profile) -> TokenStream {
         }
         Generated::Runs(t) => {
             let len = Literal::usize_unsuffixed(t.runs.len());
+            let sizes = run_index_sizes();
             quote! {
                 #[doc = " Runs of fixed-point periods, `[count, interval_hi, interval_lo, add_hi, add_lo]`:"]
                 #[doc = " play them with `runs::Expand` (see the `runs` module); each period plus `RELOAD_OFFSET`."]
                 pub static RUNS: [[u16; 5]; #len] = #array;
                 #[doc = " `RUNS` with where each run begins: `Player::compressed_indexed(&RUN_INDEX)` plays"]
-                #[doc = " them and plans its moves finding a step's run by its bucket of steps (16 bytes of"]
-                #[doc = " flash a run and 260 for the buckets, in place of `RUNS`' 10 a run when `RUNS` is"]
-                #[doc = " not played itself)."]
+                #(#[doc = #sizes])*
                 pub static RUN_INDEX: ::stepper_profiles::runs::RunIndex<#len> =
                     ::stepper_profiles::runs::RunIndex::new(&RUNS);
             }
