@@ -2,6 +2,7 @@
 //! where an editor shows it (the macro's doc comment), and public docs name
 //! the articles, never this repository's file numbers for them.
 
+use std::collections::{BTreeMap, BTreeSet};
 use std::fs;
 use std::path::{Path, PathBuf};
 
@@ -622,4 +623,688 @@ fn the_emitted_run_index_states_its_size() {
         "the emitted RUN_INDEX's docs should say \"{phrase}\" with `size_of` \
          `IndexedRun`, `RunIndex<0>` and `[u16; 5]`:\n{docs}"
     );
+}
+
+// ---------------------------------------------------------------------------
+// Features: what the documents say each cargo feature brings, against the
+// `[features]` tables and the `cfg` attributes of the sources.
+
+/// The two crates with features: `stepper-profiles` (the root) and
+/// `profile-core`, each its manifest and the prefix of its paths in
+/// `tests/public-api.txt`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Crate {
+    Facade,
+    Core,
+}
+
+impl Crate {
+    fn manifest(self) -> &'static str {
+        match self {
+            Crate::Facade => "Cargo.toml",
+            Crate::Core => "profile-core/Cargo.toml",
+        }
+    }
+
+    fn api_prefix(self) -> &'static str {
+        match self {
+            Crate::Facade => "stepper_profiles",
+            Crate::Core => "profile_core",
+        }
+    }
+}
+
+/// A feature of a manifest: its name, what it enables, and the comment
+/// above it (its lines joined).
+#[derive(Debug)]
+struct Feature {
+    name: String,
+    enables: Vec<String>,
+    comment: String,
+}
+
+/// The `[features]` table of `krate`'s manifest (`default` aside).
+fn features(krate: Crate) -> Vec<Feature> {
+    let text = fs::read_to_string(root().join(krate.manifest())).unwrap();
+    let table = text
+        .split("\n[features]\n")
+        .nth(1)
+        .unwrap_or_else(|| panic!("{} has no [features]", krate.manifest()));
+    let mut out = Vec::new();
+    let mut comment = Vec::new();
+    for line in table.lines() {
+        let line = line.trim();
+        if line.starts_with('[') {
+            break;
+        }
+        if let Some(c) = line.strip_prefix('#') {
+            comment.push(c.trim().to_string());
+            continue;
+        }
+        if let Some((name, list)) = line.split_once('=') {
+            let name = name.trim().to_string();
+            let enables = list
+                .split('"')
+                .skip(1)
+                .step_by(2)
+                .map(str::to_string)
+                .collect();
+            if name != "default" {
+                out.push(Feature {
+                    name,
+                    enables,
+                    comment: comment.join(" "),
+                });
+            }
+        }
+        comment.clear();
+    }
+    assert!(!out.is_empty(), "{}: no features read", krate.manifest());
+    out
+}
+
+/// The features of `profile-core` that `feature` of `krate` turns on,
+/// itself included for `profile-core`'s own.
+fn core_features(krate: Crate, feature: &str) -> BTreeSet<String> {
+    let mut out = BTreeSet::new();
+    let mut stack = vec![(krate, feature.to_string())];
+    while let Some((krate, name)) = stack.pop() {
+        if krate == Crate::Core && !out.insert(name.clone()) {
+            continue;
+        }
+        let all = features(krate);
+        let Some(f) = all.iter().find(|f| f.name == name) else {
+            continue;
+        };
+        for e in &f.enables {
+            if let Some(core) = e.strip_prefix("profile-core/") {
+                stack.push((Crate::Core, core.to_string()));
+            } else if !e.starts_with("dep:") && !e.contains('/') {
+                stack.push((krate, e.clone()));
+            }
+        }
+    }
+    out
+}
+
+/// Where the API and the modules' `cfg`s say what needs a feature: each
+/// path of `tests/public-api.txt` (`stepper_profiles::simulate::run`) and
+/// each module `profile-core/src/lib.rs` declares (`profile_core::schema`),
+/// with the features of `profile-core` it needs.
+fn gates() -> BTreeMap<String, BTreeSet<String>> {
+    let mut out = BTreeMap::new();
+    let api = fs::read_to_string(root().join("tests/public-api.txt")).unwrap();
+    for line in api.lines().filter(|l| !l.starts_with('#')) {
+        let mut words = line.split_whitespace();
+        let (Some(_kind), Some(path)) = (words.next(), words.next()) else {
+            continue;
+        };
+        let krate = if path.starts_with("profile_core::") {
+            Crate::Core
+        } else {
+            Crate::Facade
+        };
+        let needs: BTreeSet<String> = line
+            .split_once("(feature ")
+            .map(|(_, f)| f.trim_end_matches(')'))
+            .into_iter()
+            .flat_map(|f| f.split(", "))
+            .flat_map(|f| core_features(krate, f))
+            .collect();
+        out.insert(path.to_string(), needs);
+    }
+    let lib = fs::read_to_string(root().join("profile-core/src/lib.rs")).unwrap();
+    let mut cfg = None;
+    for line in lib.lines() {
+        let line = line.trim();
+        if let Some(f) = line.strip_prefix("#[cfg(feature = \"") {
+            cfg = f.split('"').next().map(str::to_string);
+            continue;
+        }
+        let module = line
+            .strip_prefix("pub mod ")
+            .or_else(|| line.strip_prefix("mod "))
+            .and_then(|m| m.strip_suffix(';'));
+        if let Some(module) = module {
+            let needs = cfg
+                .iter()
+                .flat_map(|f| core_features(Crate::Core, f))
+                .collect();
+            out.entry(format!("profile_core::{module}"))
+                .or_insert(needs);
+        }
+        if !line.starts_with("#[") {
+            cfg = None;
+        }
+    }
+    assert!(
+        out.len() > 100,
+        "{} paths read: the reader is broken",
+        out.len()
+    );
+    out
+}
+
+/// The features of `profile-core` that what `span` names needs, read from
+/// [`gates`]: `span` is a path from `krate`'s root (`profiles::Profiles`,
+/// `fugit::TimerDurationU32<HZ>`, `simulate::run(...)`, `Table`), resolved
+/// to its longest known prefix. `None` when it names nothing known.
+fn needs(
+    gates: &BTreeMap<String, BTreeSet<String>>,
+    krate: Crate,
+    span: &str,
+) -> Option<BTreeSet<String>> {
+    let path: String = span
+        .chars()
+        .take_while(|c| c.is_ascii_alphanumeric() || *c == '_' || *c == ':')
+        .collect();
+    let mut parts: Vec<&str> = path.split("::").filter(|p| !p.is_empty()).collect();
+    if parts.first() == Some(&krate.api_prefix()) {
+        parts.remove(0);
+    }
+    while !parts.is_empty() {
+        let full = format!("{}::{}", krate.api_prefix(), parts.join("::"));
+        if let Some(needs) = gates.get(&full) {
+            return Some(needs.clone());
+        }
+        // The facade names what `profile-core` declares privately by the
+        // same path (`schema`, `pipeline`, `emit`).
+        if let Some(needs) = gates.get(&format!("profile_core::{}", parts.join("::"))) {
+            return Some(needs.clone());
+        }
+        parts.pop();
+    }
+    None
+}
+
+/// What the phrases of feature lists that are not a path in backticks
+/// name, as a path [`needs`] reads.
+const PHRASES: &[(&str, &str)] = &[
+    ("owned tables", "Table"),
+    ("the runs' fitter", "RunTable"),
+    ("the simulator", "simulate"),
+    ("the schema", "schema"),
+    ("the argument schema", "schema"),
+    ("the pipeline", "pipeline"),
+    ("the emitter", "emit"),
+    ("profiles files", "profiles"),
+    ("the profiles file", "profiles"),
+    ("the golden-file checks", "golden::check"),
+];
+
+/// The lists of features in the documents, each where it begins (text
+/// found once in the file) and the crate whose features it lists:
+/// `` `name` (what it brings, ...; implies `other`; `no_std`), ... ``.
+const FEATURE_LISTS: &[(&str, &str, Crate)] = &[
+    (
+        "README.md",
+        "Features of `stepper-profiles`:",
+        Crate::Facade,
+    ),
+    ("profile-core/README.md", "Features:", Crate::Core),
+    (
+        "ARCHITECTURE.md",
+        "`libm` only by default; its features:",
+        Crate::Core,
+    ),
+    (
+        "ARCHITECTURE.md",
+        "doc tests). Its features:",
+        Crate::Facade,
+    ),
+];
+
+/// The list of features at the start of `text`: each feature's name and
+/// what its parentheses hold.
+fn feature_list(text: &str) -> Vec<(String, String)> {
+    let mut out = Vec::new();
+    let mut rest = text;
+    loop {
+        rest = rest.trim_start_matches([' ', ',']);
+        rest = rest.strip_prefix("and ").unwrap_or(rest);
+        let Some(after) = rest.strip_prefix('`') else {
+            break;
+        };
+        let Some((name, after)) = after.split_once('`') else {
+            break;
+        };
+        let Some(after) = after.strip_prefix(" (") else {
+            break;
+        };
+        let mut depth = 1;
+        let Some(end) = after.char_indices().find_map(|(i, c)| {
+            depth += match c {
+                '(' => 1,
+                ')' => -1,
+                _ => 0,
+            };
+            (depth == 0).then_some(i)
+        }) else {
+            break;
+        };
+        out.push((name.to_string(), after[..end].to_string()));
+        rest = &after[end + 1..];
+    }
+    out
+}
+
+/// The parts of a feature's parentheses: split at the `,` and `;` outside
+/// backticks.
+fn parts(content: &str) -> Vec<String> {
+    let (mut out, mut part, mut quoted) = (Vec::new(), String::new(), false);
+    for c in content.chars() {
+        match c {
+            '`' => {
+                quoted = !quoted;
+                part.push(c);
+            }
+            ',' | ';' if !quoted => out.push(std::mem::take(&mut part)),
+            _ => part.push(c),
+        }
+    }
+    out.push(part);
+    out.into_iter()
+        .map(|p| p.trim().trim_start_matches("and ").trim().to_string())
+        .filter(|p| !p.is_empty())
+        .collect()
+}
+
+/// The spans in backticks of `text`.
+fn spans(text: &str) -> Vec<&str> {
+    text.split('`').skip(1).step_by(2).collect()
+}
+
+/// What one feature of `krate` is said to bring (`parts` of its
+/// parentheses), against what needs it: each problem, worded.
+fn check_feature(
+    gates: &BTreeMap<String, BTreeSet<String>>,
+    krate: Crate,
+    feature: &str,
+    parts: &[String],
+    wherein: &str,
+) -> Vec<String> {
+    let names: Vec<String> = features(krate).into_iter().map(|f| f.name).collect();
+    let brings = core_features(krate, feature);
+    let mut problems = Vec::new();
+    for part in parts {
+        if let Some(implied) = part.strip_prefix("implies ") {
+            for other in spans(implied) {
+                if !names.iter().any(|n| n == other) {
+                    problems.push(format!(
+                        "{wherein}: `{feature}` implies `{other}`, which is no feature of {}",
+                        krate.manifest()
+                    ));
+                } else if !core_features(krate, other).is_subset(&brings) {
+                    problems.push(format!(
+                        "{wherein}: `{feature}` implies `{other}`, which {} does not say",
+                        krate.manifest()
+                    ));
+                }
+            }
+            continue;
+        }
+        if part == "`no_std`" {
+            if brings.contains("std") {
+                problems.push(format!(
+                    "{wherein}: `{feature}` is said `no_std`, and {} has it turn `std` on",
+                    krate.manifest()
+                ));
+            }
+            continue;
+        }
+        let named: Vec<String> = if part.contains('`') {
+            spans(part).into_iter().map(str::to_string).collect()
+        } else if let Some((_, path)) = PHRASES.iter().find(|(p, _)| *p == part) {
+            vec![path.to_string()]
+        } else {
+            problems.push(format!(
+                "{wherein}: `{feature}` (... {part} ...): the test cannot tell what \"{part}\" \
+                 names; name it in backticks or add it to PHRASES in tests/docs.rs"
+            ));
+            continue;
+        };
+        for path in named {
+            match needs(gates, krate, &path) {
+                None => problems.push(format!(
+                    "{wherein}: `{feature}` brings `{path}`, which is not in \
+                     tests/public-api.txt nor a module of profile-core"
+                )),
+                Some(n) if n.is_empty() => problems.push(format!(
+                    "{wherein}: `{feature}` is said to bring `{path}` ({part}), which needs no \
+                     feature"
+                )),
+                Some(n) if !n.is_subset(&brings) => problems.push(format!(
+                    "{wherein}: `{feature}` is said to bring `{path}` ({part}), which needs \
+                     {n:?}"
+                )),
+                Some(_) => {}
+            }
+        }
+    }
+    problems
+}
+
+/// Each list of features in the documents names every feature of its
+/// crate's manifest and no other, and what it says each brings needs that
+/// feature (`tests/public-api.txt`, the `cfg`s of `profile-core`'s
+/// modules); each feature of the manifests has a comment, whose paths in
+/// backticks need it too (but for those it says need no feature).
+#[test]
+fn feature_lists_say_what_the_features_bring() {
+    let gates = gates();
+    let mut problems = Vec::new();
+    for (file, anchor, krate) in FEATURE_LISTS {
+        let text = collapse(&fs::read_to_string(root().join(file)).unwrap());
+        let found: Vec<_> = text.match_indices(anchor).collect();
+        if found.len() != 1 {
+            problems.push(format!(
+                "{file}: \"{anchor}\" found {} times, not once: update FEATURE_LISTS in \
+                 tests/docs.rs",
+                found.len()
+            ));
+            continue;
+        }
+        let list = feature_list(&text[found[0].0 + anchor.len()..]);
+        let names: Vec<String> = features(*krate).into_iter().map(|f| f.name).collect();
+        let listed: Vec<&str> = list.iter().map(|(n, _)| n.as_str()).collect();
+        let wherein = format!("{file} (\"{anchor}\")");
+        for name in &names {
+            if !listed.contains(&name.as_str()) {
+                problems.push(format!(
+                    "{wherein}: no `{name}`, a feature of {}",
+                    krate.manifest()
+                ));
+            }
+        }
+        for (name, content) in &list {
+            if !names.contains(name) {
+                problems.push(format!(
+                    "{wherein}: `{name}` is no feature of {}",
+                    krate.manifest()
+                ));
+                continue;
+            }
+            problems.extend(check_feature(
+                &gates,
+                *krate,
+                name,
+                &parts(content),
+                &wherein,
+            ));
+        }
+    }
+    for krate in [Crate::Facade, Crate::Core] {
+        let names: Vec<String> = features(krate).into_iter().map(|f| f.name).collect();
+        for feature in features(krate) {
+            let wherein = format!("{} (`{}`'s comment)", krate.manifest(), feature.name);
+            if feature.comment.is_empty() {
+                problems.push(format!("{wherein}: none; say what the feature brings"));
+            }
+            for sentence in feature.comment.split(". ") {
+                let none = sentence.contains("needs no feature");
+                for span in spans(sentence) {
+                    if names.iter().any(|n| n == span) || span == "no_std" {
+                        continue;
+                    }
+                    match needs(&gates, krate, span) {
+                        None => problems.push(format!(
+                            "{wherein}: `{span}` is not in tests/public-api.txt nor a \
+                             module of profile-core"
+                        )),
+                        Some(n) if none && !n.is_empty() => problems.push(format!(
+                            "{wherein}: `{span}` is said to need no feature, and needs {n:?}"
+                        )),
+                        Some(n) if !none && n.is_empty() => {
+                            problems.push(format!("{wherein}: `{span}` needs no feature"))
+                        }
+                        Some(n) if !none && !n.is_subset(&core_features(krate, &feature.name)) => {
+                            problems.push(format!("{wherein}: `{span}` needs {n:?}"))
+                        }
+                        Some(_) => {}
+                    }
+                }
+            }
+        }
+    }
+    assert!(
+        problems.is_empty(),
+        "{} problem(s) with what the documents say the features bring:\n{}",
+        problems.len(),
+        problems.join("\n")
+    );
+}
+
+/// The features the text names: `` feature `x` ``, `` the `x` feature ``,
+/// `features = ["x", ...]` (of `stepper-profiles` or `profile-core`) and
+/// `--features x`, each with where it stands and the crate it is of when
+/// the text says (else `None`: either).
+fn feature_mentions(text: &str) -> Vec<(usize, String, Option<Crate>)> {
+    let mut out = Vec::new();
+    for (at, _) in text.match_indices("feature `") {
+        // Not "the `fugit` feature `player::Timed`".
+        if text[..at].ends_with("` ") {
+            continue;
+        }
+        let name = text[at + 9..].split('`').next().unwrap_or("");
+        out.push((at, name.to_string(), None));
+    }
+    for (at, _) in text.match_indices("` feature") {
+        if let Some(open) = text[..at].rfind('`') {
+            out.push((open, text[open + 1..at].to_string(), None));
+        }
+    }
+    for (at, _) in text.match_indices("features = [") {
+        let before = &text[..at];
+        let krate = before.rsplit_once(" = {").and_then(|(name, _)| {
+            match name
+                .rsplit(' ')
+                .next()
+                .unwrap_or("")
+                .trim_start_matches('`')
+            {
+                "stepper-profiles" => Some(Some(Crate::Facade)),
+                "profile-core" => Some(Some(Crate::Core)),
+                _ => None,
+            }
+        });
+        let Some(krate) = krate else { continue };
+        let list = text[at..].split(']').next().unwrap_or("");
+        for name in list.split('"').skip(1).step_by(2) {
+            out.push((at, name.to_string(), krate));
+        }
+    }
+    for (at, _) in text.match_indices("--features ") {
+        let name: String = text[at + 11..]
+            .chars()
+            .take_while(|c| c.is_ascii_alphanumeric() || *c == '_' || *c == '-')
+            .collect();
+        let krate = text[at.saturating_sub(40)..at]
+            .contains("-p profile-core")
+            .then_some(Crate::Core);
+        out.push((at, name, krate.or(Some(Crate::Facade))));
+    }
+    out
+}
+
+/// The parenthesised text around `at` (within its sentence), and the span
+/// in backticks just before it (a few words before, in the same clause):
+/// what a `(feature `x`)` or a `(no feature needed)` speaks of.
+fn group_around(text: &str, at: usize) -> Option<(&str, Option<&str>)> {
+    let sentence_start = text[..at].rfind(". ").map_or(0, |i| i + 2);
+    let mut depth = 0;
+    let open = text[sentence_start..at]
+        .char_indices()
+        .rev()
+        .find_map(|(i, c)| {
+            match c {
+                ')' => depth += 1,
+                '(' if depth == 0 => return Some(sentence_start + i),
+                '(' => depth -= 1,
+                _ => {}
+            }
+            None
+        })?;
+    let mut depth = 0;
+    let close = text[open..].char_indices().find_map(|(i, c)| {
+        match c {
+            '(' => depth += 1,
+            ')' => {
+                depth -= 1;
+                if depth == 0 {
+                    return Some(open + i);
+                }
+            }
+            _ => {}
+        }
+        None
+    })?;
+    let before = &text[sentence_start..open];
+    let mut pieces = before.rsplit('`');
+    let (between, last) = (pieces.next().unwrap_or(""), pieces.next());
+    let near = between.len() <= 40 && !between.contains([';', '(', ')']);
+    Some((&text[open + 1..close], last.filter(|_| near)))
+}
+
+/// What a parenthesis speaks of: the paths in backticks it holds that
+/// [`needs`] knows, or, when it holds none, the path just before it.
+fn spoken_of<'a>(
+    gates: &BTreeMap<String, BTreeSet<String>>,
+    group: &'a str,
+    before: Option<&'a str>,
+    feature: &str,
+) -> Vec<(&'a str, BTreeSet<String>)> {
+    let known = |span: &'a str| needs(gates, Crate::Facade, span).map(|n| (span, n));
+    let inside: Vec<_> = spans(group)
+        .into_iter()
+        .filter(|s| *s != feature)
+        .filter_map(known)
+        .collect();
+    if inside.is_empty() {
+        before.and_then(known).into_iter().collect()
+    } else {
+        inside
+    }
+}
+
+/// Every feature the documents and doc comments name is one of the
+/// manifests'; what a parenthesis naming a feature speaks of (the paths
+/// in it, and the path in backticks just before it) needs that feature,
+/// and what one saying "no feature" speaks of needs none.
+#[test]
+fn features_the_documents_name_exist_and_gate_what_they_say() {
+    let gates = gates();
+    let facade: Vec<String> = features(Crate::Facade)
+        .into_iter()
+        .map(|f| f.name)
+        .collect();
+    let core: Vec<String> = features(Crate::Core).into_iter().map(|f| f.name).collect();
+    let mut problems = Vec::new();
+    let mut count = 0;
+    for (file, text) in documents() {
+        for (at, name, krate) in feature_mentions(&text) {
+            count += 1;
+            let exists = match krate {
+                Some(Crate::Facade) => facade.contains(&name),
+                Some(Crate::Core) => core.contains(&name),
+                None => facade.contains(&name) || core.contains(&name),
+            };
+            let context = &text[text[..at].rfind(". ").map_or(0, |i| i + 2)..];
+            let context: String = context.chars().take(80).collect();
+            if !exists {
+                problems.push(format!(
+                    "{file}: \"{context}...\" names a feature `{name}`, which no manifest has"
+                ));
+                continue;
+            }
+            let Some((group, before)) = group_around(&text, at) else {
+                continue;
+            };
+            let brings = core_features(Crate::Core, &name);
+            for (span, n) in spoken_of(&gates, group, before, &name) {
+                if n.is_empty() || !n.is_subset(&brings) {
+                    problems.push(format!(
+                        "{file}: \"{context}...\": `{span}` is said to need `{name}`, and \
+                         needs {n:?}"
+                    ));
+                }
+            }
+        }
+        for (at, _) in text.match_indices("no feature") {
+            let Some((group, before)) = group_around(&text, at) else {
+                continue;
+            };
+            for (span, n) in spoken_of(&gates, group, before, "") {
+                if !n.is_empty() {
+                    problems.push(format!(
+                        "{file}: `{span}` is said to need no feature (\"{group}\"), and \
+                         needs {n:?}"
+                    ));
+                }
+            }
+        }
+    }
+    assert!(
+        count > 10,
+        "only {count} features named: the reader is broken"
+    );
+    assert!(
+        problems.is_empty(),
+        "{} problem(s) with the features the documents name:\n{}",
+        problems.len(),
+        problems.join("\n")
+    );
+}
+
+/// The readers of features: a list and its parts, the features a text
+/// names, what a parenthesis speaks of.
+#[test]
+fn the_feature_readers_read_features() {
+    let list = feature_list(
+        " `std` (owned tables, the runs' fitter), `golden` (`golden::check` for tests; \
+         implies `codegen`), and `fugit` (`a::B<C, D>`; `no_std`). Without features",
+    );
+    let names: Vec<&str> = list.iter().map(|(n, _)| n.as_str()).collect();
+    assert_eq!(names, ["std", "golden", "fugit"]);
+    assert_eq!(parts(&list[0].1), ["owned tables", "the runs' fitter"]);
+    assert_eq!(
+        parts(&list[1].1),
+        ["`golden::check` for tests", "implies `codegen`"]
+    );
+    assert_eq!(parts(&list[2].1), ["`a::B<C, D>`", "`no_std`"]);
+    let text = "with the `fugit` feature `player::Timed`, (feature `golden`) and \
+                `profile-core = { version = \"0.1\", features = [\"codegen\"] }`; \
+                `cargo test -p profile-core --features std`";
+    let named: Vec<(String, Option<Crate>)> = feature_mentions(text)
+        .into_iter()
+        .map(|(_, n, k)| (n, k))
+        .collect();
+    assert_eq!(
+        named,
+        [
+            ("golden".to_string(), None),
+            ("fugit".to_string(), None),
+            ("codegen".to_string(), Some(Crate::Core)),
+            ("std".to_string(), Some(Crate::Core)),
+        ]
+    );
+    let text = "`golden::check`: golden files (feature `golden`); x (`a`; y) (b)";
+    let at = text.find("feature").unwrap();
+    assert_eq!(
+        group_around(text, at),
+        Some(("feature `golden`", Some("golden::check")))
+    );
+    let gates = gates();
+    assert_eq!(
+        needs(&gates, Crate::Facade, "simulate::run(&m)"),
+        Some(BTreeSet::new())
+    );
+    assert_eq!(
+        needs(&gates, Crate::Facade, "fugit::TimerDurationU32<HZ>"),
+        Some(BTreeSet::from(["fugit".to_string()]))
+    );
+    assert_eq!(
+        needs(&gates, Crate::Core, "schema"),
+        Some(BTreeSet::from(["codegen".to_string(), "std".to_string()]))
+    );
+    assert_eq!(needs(&gates, Crate::Facade, "build::Profiles"), None);
 }
