@@ -542,18 +542,21 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     }
 
     /// The period of the next step, in ticks, or `None` when the move is done.
-    #[inline]
+    ///
+    /// [`Player::step`], the period returned: the run being played inline,
+    /// and past its end the plan's next run by a call, as the step takes
+    /// them. It costs what the step costs, within one instruction per step
+    /// on a Cortex-M0, M3 and M4F (`docs/performance.md`).
+    #[inline(always)]
     pub fn next_period(&mut self) -> Option<W> {
-        let mut period = None;
-        self.step(|p| period = Some(p));
-        period
+        self.next_played()
     }
 
     /// Plays the next step: hands its period to `write` (a step interrupt
     /// writes it to its timer's reload register) and returns `true`, or
-    /// returns `false` when the move is done. [`Player::next_period`] in the
-    /// form that costs least in an interrupt: each kind of run writes from
-    /// its own path.
+    /// returns `false` when the move is done. [`Player::next_period`] with
+    /// the period handed to `write`: each kind of run writes from its own
+    /// path.
     ///
     /// ```
     /// use profile_core::player::{Player, Ramp};

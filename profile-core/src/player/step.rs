@@ -1,6 +1,7 @@
-//! The step paths: the run being played, inline in the step interrupt,
-//! and past its end the plan's next run, in cold functions; the paths of
-//! a buffered register ([`Buffered`](super::Buffered)).
+//! The step paths ([`Player::step`]'s, and [`Player::next_period`]'s,
+//! which returns the period): the run being played, inline in the step
+//! interrupt, and past its end the plan's next run, in cold functions; the
+//! paths of a buffered register ([`Buffered`](super::Buffered)).
 
 use super::buffered::Pulsed;
 use super::plan::{Run, Source};
@@ -192,6 +193,79 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         }
     }
 
+    /// [`Player::next_period`]: the step path of [`Player::step`], the
+    /// period returned.
+    #[inline(always)]
+    pub(super) fn next_played(&mut self) -> Option<W> {
+        // The step's paths, each returning its period: written through a
+        // closure, as `step` writes, the period lay in a stack slot whose
+        // address the refill's call took (5 or 6 instructions more per
+        // step). The run being played is tried before the loop, so that
+        // the loop's blocks are not laid out between its arms and the
+        // caller's code; `inline(always)`, as `inline` alone left the loop
+        // a call. `refill` hands the player back, so that the loops keep
+        // no register across its call.
+        let mut this = self;
+        if L::COMPRESSED {
+            loop {
+                if let Some(ticks) = this.computed.next() {
+                    return Some(W::from_ticks(ticks));
+                }
+                this = this.refill_runs()?;
+            }
+        }
+        if let Some(p) = this.next_in_run() {
+            return Some(p);
+        }
+        loop {
+            // A compressed ramp's run, behind an empty `Down`.
+            if let Some(ticks) = this.computed.next() {
+                return Some(W::from_ticks(ticks));
+            }
+            this = this.refill()?;
+            if let Some(p) = this.next_in_run() {
+                return Some(p);
+            }
+        }
+    }
+
+    /// The next period of the run being played, `None` when it is played:
+    /// [`Player::play_run`] for [`Player::next_period`]. Each arm loads
+    /// the period before it moves the run on, so that no arm ends with the
+    /// load: three arms ending with one were merged into a load after
+    /// them, an instruction or two more per step than the step's own loads.
+    #[inline(always)]
+    pub(super) fn next_in_run(&mut self) -> Option<W> {
+        match &mut self.run {
+            Run::Down(periods) | Run::Ended(periods) => {
+                let mut rest = periods.clone();
+                if let Some(&p) = rest.next_back() {
+                    *periods = rest;
+                    return Some(p);
+                }
+            }
+            Run::Hold(p, n) => {
+                if *n > 0 {
+                    let p = *p;
+                    *n -= 1;
+                    // Emits nothing; keeps the count's store in this arm:
+                    // merged with the `Down` arm's store of its end, the
+                    // path is a branch longer on a Cortex-M4F.
+                    compiler_fence(Ordering::SeqCst);
+                    return Some(p);
+                }
+            }
+            Run::Up(periods) => {
+                let mut rest = periods.clone();
+                if let Some(&p) = rest.next() {
+                    *periods = rest;
+                    return Some(p);
+                }
+            }
+        }
+        None
+    }
+
     /// The step path of a player of compressed tables: its run first.
     #[inline(always)]
     pub(super) fn step_runs(&mut self, write: impl FnOnce(W)) -> bool {
@@ -327,3 +401,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         Some(Run::Down([].iter()))
     }
 }
+
+#[cfg(test)]
+#[path = "step_tests.rs"]
+mod tests;
