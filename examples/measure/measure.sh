@@ -18,7 +18,10 @@
 # the same phase of the same table plus, per follower, 5 on the M3 and
 # M4F (the goal) and 7 on the M0 (a bound against regressions above the
 # 6.27 measured, which is the least this step takes there: no `ldrd`/`strd`
-# and three free low registers; docs/performance.md counts it). Prints the planning calls
+# and three free low registers; docs/performance.md counts it); or when
+# `Player::next_period` takes more per step than `Player::step` + 1 in any
+# phase of the same move (the per-step table and the compressed ramp, each
+# step's period into the reload register). Prints the planning calls
 # (start, set_cruise, set_cruise_period, a retarget farther, one nearer
 # and one 300 steps past the stop, stop on a 1000-entry table and on a
 # 7192-step compressed ramp, plain and indexed), and fails when one takes
@@ -142,6 +145,20 @@ for core in "${cores[@]}"; do
                         bad = 1
                     }
                 }
+                # next_period: the step path of the same player, the
+                # period returned; within the mean of the step + 1, phase
+                # by phase, on the same move.
+                if (l ~ /^next_period, /) {
+                    step = l; sub(/^next_period, /, "", step)
+                    if (step ~ /^per-step table/) step = "player, " step
+                    if (!(step in mean)) {
+                        printf "FAIL %s: %s has no step row to compare with (%s)\n", core, l, step
+                        bad = 1
+                    } else if (mean[l] > mean[step] + 1 + 1e-6) {
+                        printf "FAIL %s: %s %.2f instructions per step, more than the step %.2f + 1\n", core, l, mean[l], mean[step]
+                        bad = 1
+                    }
+                }
                 # Buffered: the step path of the player it wraps.
                 limit = l ~ /^Buffered(,| axis,) per-step table/ ? 4 : l ~ /^Buffered Player::compressed/ ? 8 : -1
                 if (limit >= 0 && mean[l] > bare + limit) {
@@ -186,5 +203,5 @@ for core in "${cores[@]}"; do
             exit bad
         }' "$out/$core.rows" || status=1
 done
-[ "$status" = 0 ] && echo "ok: on every core the player's per-step mean is within the bare load + 4, the compressed player's within the bare load + 8 (Buffered the same), the step interrupt within 20 on the M3 and M4F, Player::fill takes at most 6 instructions per period of the per-step table, 12 of compressed runs, three Axes within the player + 2 x 5 (M0: 2 x 7), planning within 1000 on the table and on the indexed ramp and 18750 on the plain compressed ramp (M3, M4F), the step after a call on a compressed ramp within the compressed player's largest step"
+[ "$status" = 0 ] && echo "ok: on every core the player's per-step mean is within the bare load + 4, the compressed player's within the bare load + 8 (Buffered the same), the step interrupt within 20 on the M3 and M4F, Player::next_period within Player::step + 1, Player::fill takes at most 6 instructions per period of the per-step table, 12 of compressed runs, three Axes within the player + 2 x 5 (M0: 2 x 7), planning within 1000 on the table and on the indexed ramp and 18750 on the plain compressed ramp (M3, M4F), the step after a call on a compressed ramp within the compressed player's largest step"
 exit "$status"

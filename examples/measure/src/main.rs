@@ -81,6 +81,25 @@ pub fn player_runs_step(player: &mut Player<'_, u16, Compressed>, timer: &mut SY
     player.step(|period| timer.set_reload(u32::from(period)));
 }
 
+/// [`Player::next_period`] into the reload register: the same step as
+/// [`player_step`], its period returned as an `Option`.
+#[inline(never)]
+#[unsafe(no_mangle)]
+pub fn player_next_period(player: &mut Player<'_, u16>, timer: &mut SYST) {
+    if let Some(period) = player.next_period() {
+        timer.set_reload(u32::from(period));
+    }
+}
+
+/// The same for a player of compressed tables.
+#[inline(never)]
+#[unsafe(no_mangle)]
+pub fn player_runs_next_period(player: &mut Player<'_, u16, Compressed>, timer: &mut SYST) {
+    if let Some(period) = player.next_period() {
+        timer.set_reload(u32::from(period));
+    }
+}
+
 /// The axis's next step into the reload register: the player's, with the
 /// position kept.
 #[inline(never)]
@@ -570,6 +589,24 @@ fn main() -> ! {
         || player_runs_step(&mut player, timer),
     );
     check(player.is_done(), "compressed player");
+    // The same two moves by `next_period`: CI holds each phase within the
+    // step's + 1.
+    let mut player = Player::new(Ramp::steps(&sigmoid_exact::PERIODS));
+    player.start(2 * UP + CRUISE);
+    phases(
+        "next_period, per-step table (sigmoid_exact)",
+        (UP, CRUISE),
+        || player_next_period(&mut player, timer),
+    );
+    check(player.is_done(), "next_period");
+    let mut player = Player::compressed(&microstep_runs::RUNS);
+    player.start(2 * up + 1000);
+    phases(
+        "next_period, Player::compressed (microstep, compress = 1)",
+        (up, 1000),
+        || player_runs_next_period(&mut player, timer),
+    );
+    check(player.is_done(), "compressed next_period");
     player_move(
         "player, segments (exponential_segments)",
         Ramp::segments(&exponential_segments::SEGMENTS),
