@@ -115,11 +115,12 @@ fn a_profiles_file_reads_units_as_the_numbers_they_stand_for() {
 
 // A motor as its datasheet writes it, in the macro: the units as suffixes
 // (`3.4mH`, `68gcm2`) or as strings with the datasheet's symbols.
-static DATASHEET_UNITS: [u16; 405] = period_table!(
-    curve = linear, fmin = 300, fmax = 9000, accel = 100_000, timer_hz = 10_000_000,
+static DATASHEET_UNITS: [u16; 416] = period_table!(
+    curve = linear, fmin = 300, fmax = 5000, accel = 30_000, timer_hz = 10_000_000,
     step_angle = "1.8°", rotor_inertia = 68gcm2, load_inertia = "136 g·cm²", friction = 2Ncm,
     resistance = "0.5 Ω", inductance = 0.6mH, rated_current = 2800mA, holding_torque = 40 Ncm,
-    supply_voltage = 24V, safety = 1.5,
+    supply_voltage = 24V, driver_current = 2500mA, iron_loss = "3 N·cm", safety = 1.5,
+    damping_ratio = 0.1,
 );
 
 /// The motor and the table of a profiles file's only profile.
@@ -134,18 +135,18 @@ fn motor_and_table(file: &str) -> (profile_core::motor::Motor, Vec<u32>) {
 
 #[test]
 fn a_motor_is_read_in_its_datasheets_units() {
-    let ramp = "[profiles.p]\ncurve = \"linear\"\nfmin = 300\nfmax = 9000\naccel = 100_000\n\
-                timer_hz = 10_000_000\nmotor = \"m\"\nsafety = 1.5\n";
+    let ramp = "[profiles.p]\ncurve = \"linear\"\nfmin = 300\nfmax = 5000\naccel = 30_000\n\
+                timer_hz = 10_000_000\nmotor = \"m\"\nsafety = 1.5\ndamping_ratio = 0.1\n";
     let (units, _) = motor_and_table(&format!(
         "[motors.m]\nstep_angle = \"1.8°\"\nrotor_inertia = \"68 g·cm²\"\n\
          load_inertia = \"136gcm2\"\nfriction = \"2 N·cm\"\nresistance = \"500 mohm\"\n\
          inductance = \"600 µH\"\nrated_current = \"2.8 A\"\nholding_torque = \"400 mN·m\"\n\
-         supply_voltage = \"24 V\"\n{ramp}"
+         supply_voltage = \"24 V\"\ndriver_current = \"2500 mA\"\niron_loss = \"30 mN·m\"\n{ramp}"
     ));
     let (plain, table) = motor_and_table(&format!(
         "[motors.m]\nstep_angle = 1.8\nrotor_inertia = 6.8e-6\nload_inertia = 1.36e-5\n\
          friction = 0.02\nresistance = 0.5\ninductance = 0.6e-3\nrated_current = 2.8\n\
-         holding_torque = 0.40\nsupply_voltage = 24\n{ramp}"
+         holding_torque = 0.40\nsupply_voltage = 24\ndriver_current = 2.5\niron_loss = 0.03\n{ramp}"
     ));
     assert_eq!(units, plain);
     // The macro read its motor in units and checked the table against it:

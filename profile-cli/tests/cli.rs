@@ -404,10 +404,11 @@ fn report_gives_a_compact_layout_flash_against_one_entry_per_step() {
         .lines()
         .find(|l| l.starts_with("linear_exact "))
         .unwrap_or_else(|| panic!("{report}"));
-    assert_eq!(row.split_whitespace().nth(6), Some("7070.3"), "{row}");
+    assert_eq!(row.split_whitespace().nth(6), Some("7470.7"), "{row}");
     // The shipped motor gives its windings too: the curve they give, beside
-    // the typed one, up to the typed curve's last point (1200 rpm), where
-    // the 24 V supply still drives the full current.
+    // the typed one (the manual's chart, in half steps), up to the typed
+    // curve's last point (1500 rpm): as a sine, at the model's default
+    // losses.
     let pull_out = motors
         .split("`linear_exact`: the motor's pull-out torque, N·m\n")
         .nth(1)
@@ -420,9 +421,9 @@ fn report_gives_a_compact_layout_flash_against_one_entry_per_step() {
     assert_eq!(
         rows,
         [
-            ["32000.0", "24000.0", "16000.0", "8000.0", "0.0"],
-            ["0.2500", "0.2875", "0.3250", "0.3625", "0.4000"],
-            ["0.4000"; 5],
+            ["40000.0", "30000.0", "20000.0", "10000.0", "0.0"],
+            ["0.2350", "0.2680", "0.3440", "0.3965", "0.4000"],
+            ["0.3065", "0.3539", "0.3635", "0.3724", "0.4000"],
         ],
         "{pull_out}"
     );
@@ -555,7 +556,9 @@ fn report_shows_each_motor_as_the_check_reads_it_in_datasheet_units() {
                     rotor_inertia = 68 g·cm², load_inertia = 136 g·cm², resistance = 0.5 Ω, \
                     inductance = 0.6 mH, rated_current = 2.8 A, holding_torque = 0.4 N·m, \
                     supply_voltage = 12 V, detent_torque = 0 N·m, drive = sine, \
-                    friction = 0.02 N·m, damping = 0 N·m·s/rad, damping_ratio = 0, safety = 1";
+                    driver_current = 2.8 A, driver_current_is = rms, supply_utilization = 0.76, \
+                    iron_loss = 0.044 N·m, friction = 0.02 N·m, damping = 0 N·m·s/rad, \
+                    damping_ratio = 0, safety = 1";
     // In SI, and in the datasheet's units: the same figures.
     let in_units = WINDINGS_ONLY
         .replace("rotor_inertia = 6.8e-6", "rotor_inertia = \"68 g·cm²\"")

@@ -1,26 +1,42 @@
 //! The pull-out torque derived from a motor's windings against an
 //! independent computation: the two phases' currents integrated in time
-//! under a chopper that switches the full supply on each phase, the rotor
-//! turning at a steady speed and lagging the field by a fixed angle, the
-//! torque averaged over an electrical turn and maximised over the lag.
+//! under a chopper that switches the supply it puts across a winding on
+//! each phase, the rotor turning at a steady speed and lagging the field by
+//! a fixed angle, the torque averaged over an electrical turn, less the
+//! iron's drag, and maximised over the lag.
 //!
 //! The production path solves the steady state in the rotor's frame in
 //! closed form (phasors, the fundamental of the saturated voltage); this one
 //! shares none of it: it chops the real square-wave voltage, carries every
-//! harmonic of the current, and finds the pull-out torque by search.
+//! harmonic of the current, and finds the pull-out torque by search. The
+//! losses' definitions (the share of the supply, the iron's drag at 1 kHz
+//! growing as the frequency's 0.4th power) and the driver's current
+//! setting are read here from the `Windings`' documented figures.
+//!
+//! Published pull-out charts: `charts.rs`.
 
 use core::f64::consts::{PI, SQRT_2, TAU};
 
-use profile_core::motor::{Drive, Windings};
+use profile_core::motor::{CurrentSetting, Drive, Windings};
+
+/// The current the driver is set to, in A: the sine's amplitude for a sine
+/// drive (its RMS setting times `sqrt(2)`, or its peak setting), the level
+/// each phase is switched to for the stepped drives.
+fn set_current(w: &Windings) -> f64 {
+    let setting = w.driver_current.unwrap_or(w.rated_current);
+    match (w.drive, w.driver_current_is) {
+        (Drive::Sine, CurrentSetting::Rms) => SQRT_2 * setting,
+        _ => setting,
+    }
+}
 
 /// The currents the driver sets on phases A and B with the field at
-/// `field` (electrical radians): a sine and cosine of amplitude
-/// `sqrt(2) · rated_current`; in half steps the field points at the
-/// nearest of eight directions, each phase on (at `±rated_current`) where
-/// that direction has a component along it; in full steps at the nearest
-/// diagonal, both phases on.
+/// `field` (electrical radians): a sine and cosine of the set amplitude;
+/// in half steps the field points at the nearest of eight directions, each
+/// phase on (at the set level) where that direction has a component along
+/// it; in full steps at the nearest diagonal, both phases on.
 fn reference(w: &Windings, field: f64) -> (f64, f64) {
-    let i = w.rated_current;
+    let i = set_current(w);
     match w.drive {
         Drive::HalfStep => {
             let direction = (field / (PI / 4.0)).round() * (PI / 4.0);
@@ -28,16 +44,26 @@ fn reference(w: &Windings, field: f64) -> (f64, f64) {
             (on(direction.cos()), on(direction.sin()))
         }
         Drive::FullStep => (i * field.cos().signum(), i * field.sin().signum()),
-        _ => (SQRT_2 * i * field.cos(), SQRT_2 * i * field.sin()),
+        _ => (i * field.cos(), i * field.sin()),
     }
+}
+
+/// The iron's drag, in N·m, at an electrical frequency of `hz`: the figure
+/// at 1 kHz (0.11 of the holding torque when not given) times `(hz / 1
+/// kHz)^0.4`.
+fn iron_drag(w: &Windings, hz: f64) -> f64 {
+    let at_1khz = w.iron_loss.unwrap_or(0.11 * w.holding_torque);
+    at_1khz * (hz / 1000.0).powf(0.4)
 }
 
 /// Average torque, in N·m, of a motor turning at `omega` (mechanical rad/s)
 /// with the field `lag` electrical radians ahead of the rotor, the driver
-/// chopping each phase's current towards its reference with `±supply`.
+/// chopping each phase's current towards its reference with the share of
+/// the supply it puts across the winding, less the iron's drag.
 fn chopped_torque(w: &Windings, poles: f64, omega: f64, lag: f64) -> f64 {
-    let amp = SQRT_2 * w.rated_current;
-    let km = w.holding_torque / amp;
+    // Two phases on at the rated current give the holding torque.
+    let km = w.holding_torque / (SQRT_2 * w.rated_current);
+    let supply = w.supply_voltage * w.supply_utilization;
     let electrical = poles * omega;
     let turn = TAU / electrical;
     // 8000 steps per electrical turn; the current changes by at most
@@ -61,16 +87,8 @@ fn chopped_torque(w: &Windings, poles: f64, omega: f64, lag: f64) -> f64 {
     let turns = 8;
     for k in 0..turns * steps {
         let (sin, cos, ra, rb) = angles[k % steps];
-        let va = if ia < ra {
-            w.supply_voltage
-        } else {
-            -w.supply_voltage
-        };
-        let vb = if ib < rb {
-            w.supply_voltage
-        } else {
-            -w.supply_voltage
-        };
+        let va = if ia < ra { supply } else { -supply };
+        let vb = if ib < rb { supply } else { -supply };
         // Back-EMF of each phase; over one step the winding is an R-L
         // circuit under a constant voltage, solved exactly.
         let (ea, eb) = (-km * omega * sin, km * omega * cos);
@@ -81,7 +99,7 @@ fn chopped_torque(w: &Windings, poles: f64, omega: f64, lag: f64) -> f64 {
             sum += km * (ib * cos - ia * sin);
         }
     }
-    sum / steps as f64 - w.detent_torque
+    sum / steps as f64 - w.detent_torque - iron_drag(w, electrical / TAU)
 }
 
 /// The largest average torque over the lag: a scan, then a golden-section
@@ -121,7 +139,7 @@ fn omega(full_steps: f64) -> f64 {
     full_steps * 1.8f64.to_radians()
 }
 
-fn motors() -> [(&'static str, Windings); 3] {
+fn motors() -> [(&'static str, Windings); 5] {
     [
         (
             "NEMA 17, 2.8 A, 24 V",
@@ -134,6 +152,18 @@ fn motors() -> [(&'static str, Windings); 3] {
         (
             "NEMA 23, 4.2 A, 48 V",
             Windings::new(0.55, 2.6e-3, 4.2, 1.9, 48.0),
+        ),
+        (
+            "NEMA 23, 4.0 A, 36 V, 4.2 A peak",
+            Windings::new(0.65, 3.2e-3, 4.0, 2.4, 36.0)
+                .with_driver_current(4.2, CurrentSetting::Peak),
+        ),
+        (
+            "NEMA 17, 2.8 A, 24 V at 2 A, ideal",
+            Windings::new(0.7, 1.1e-3, 2.8, 0.40, 24.0)
+                .with_driver_current(2.0, CurrentSetting::Rms)
+                .with_supply_utilization(1.0)
+                .with_iron_loss(0.0),
         ),
     ]
 }
@@ -181,63 +211,20 @@ fn qsh4218() -> Windings {
     Windings::new(0.5, 0.6e-3, 2.8, 0.40, 24.0)
 }
 
-/// The one published point of a real motor's curve that is text, not a
-/// figure: TRINAMIC's "QMot QSH4218 Manual" (V1.10), Table 2.1 gives the
-/// QSH4218-47-28-040's windings (0.5 Ω ± 10 %, 0.6 mH ± 20 %, 2.8 A, holding
-/// torque 40 N·cm) and section 2 "0.25Nm torque at 1200 RPM with a 24V
-/// supply" (2.8 A RMS, half steps, section 5.4). The windings alone allow
-/// more: at 1200 rpm the full current needs a sine of 20.9 V amplitude on
-/// each phase, less than the 24 V supply, so both routes give the holding
-/// torque as a sine, 60 % above the measured 0.25 N·m; in half steps, as
-/// the manual measures, 0.322 N·m, 29 % above. What the motor loses there
-/// (iron losses, saturation, the inductance at current) is outside the
-/// model: a derived curve is what the windings allow, an upper bound.
-#[test]
-fn the_qsh4218_at_1200_rpm_against_its_manual() {
-    let w = qsh4218();
-    // 1200 rpm = 20 turns/s = 4000 full steps/s.
-    let full_steps = 4000.0;
-    let derived = w.pull_out(50.0, omega(full_steps));
-    let chopped = chopped_pull_out(&w, 50.0, omega(full_steps));
-    let published = 0.25;
-    println!(
-        "QSH4218-47-28-040, 24 V, 1200 rpm: derived {derived:.4} N·m, chopped {chopped:.4} N·m, \
-         manual {published} N·m ({:+.0} %)",
-        (derived / published - 1.0) * 100.0
-    );
-    // The voltage the full current needs at that speed, as a fundamental.
-    let amp = SQRT_2 * w.rated_current;
-    let km = w.holding_torque / amp;
-    let omega_m = omega(full_steps);
-    let x = 50.0 * omega_m * w.inductance;
-    let needed = (x * amp).hypot(w.resistance * amp + km * omega_m);
-    println!("the full current needs a sine of {needed:.1} V on a 24 V supply");
-    assert!((needed - 20.9).abs() < 0.05);
-    assert_eq!(derived, 0.40);
-    assert!((chopped - 0.40).abs() < 0.01 * 0.40);
-    let half = w.with_drive(Drive::HalfStep);
-    let derived = half.pull_out(50.0, omega(full_steps));
-    let chopped = chopped_pull_out(&half, 50.0, omega(full_steps));
-    println!(
-        "in half steps: derived {derived:.4} N·m, chopped {chopped:.4} N·m ({:+.0} %)",
-        (derived / published - 1.0) * 100.0
-    );
-    assert!((derived - 0.322).abs() < 0.0005, "{derived}");
-    assert!((chopped - derived).abs() < 0.01 * 0.40);
-}
-
 /// Where the back-EMF is large against the resistance, the speeds at which
 /// the chopper holds the current through only part of each turn span a wide
 /// band: on the QSH4218-47-28-040's windings (0.5 Ω, 0.6 mH, 2.8 A,
 /// 0.40 N·m, 24 V) from 5000 to beyond 10 000 full steps/s, and on a
 /// low-inductance winding whose short-circuit current `K_m / (N_r L)`
 /// (10.1 A) exceeds the set amplitude (3.96 A), which at speed brakes the
-/// rotor. The derived torque follows the chopped phases through both, and
-/// gives nothing where they give nothing.
+/// rotor (here behind an ideal chopper, the whole supply across the
+/// winding and no iron loss, so that the braking alone takes the torque).
+/// The derived torque follows the chopped phases through both, and gives
+/// nothing where they give nothing.
 #[test]
 fn where_the_back_emf_dominates_the_derived_torque_follows_as_well() {
     let qsh = qsh4218();
-    let mut brake = qsh;
+    let mut brake = qsh.with_supply_utilization(1.0).with_iron_loss(0.0);
     brake.inductance = 0.2e-3;
     for (name, w) in [("QSH4218-47-28-040", qsh), ("0.2 mH, braking", brake)] {
         let mut worst = 0.0f64;
@@ -262,62 +249,6 @@ fn where_the_back_emf_dominates_the_derived_torque_follows_as_well() {
     assert!(brake.pull_out(50.0, omega(16_000.0)) > 0.004);
     for full_steps in [17_000.0, 20_000.0, 40_000.0, 1e6] {
         assert_eq!(brake.pull_out(50.0, omega(full_steps)), 0.0);
-    }
-}
-
-/// StepperOnline's 23HE45-4204S (the 23HS45-4204S body with an encoder;
-/// StepperOnline lists 1.8°, 3.0 N·m at 4.2 A, 0.9 Ω ± 10 %, 3.8 mH ± 20 %)
-/// driven at `current` (RMS) from 36 V: the holding torque scales with the
-/// current.
-fn stepperonline_23he45(current: f64) -> Windings {
-    Windings::new(0.9, 3.8e-3, current, 3.0 * current / 4.2, 36.0)
-}
-
-/// A real motor's published pull-out chart against the derived torque.
-/// StepperOnline's chart "23HE45-4204S_Torque_Curve.pdf" (36 V, a DM556T
-/// driver at 4.1 A and at 3.1 A, 2000 microsteps per turn) is an image; its
-/// points here are those read from it in "Investigación: motor + driver
-/// para el módulo Omni", contrerassma-eng/3d-generator,
-/// projects/CONVEYONE-OMNI-ZPA/out/analisis/research_motores_drivers.md
-/// (commit 9a216907), Table 2a-1, which gives them as readings within
-/// ±5 %. At 300 rpm the drive still holds the current (3.1 A) or has only
-/// just lost it (4.1 A): there the derived torque is within 20 % of the
-/// chart. Above, the chart falls faster than the windings allow: what the
-/// motor loses there (iron losses rising with the frequency, the driver's
-/// own current control) is outside the model, and the derived torque is an
-/// upper bound, 25 % to 45 % above.
-#[test]
-fn the_23he45_against_its_published_chart() {
-    // (current in A, rpm, published N·m)
-    let chart = [
-        (4.1, 300.0, 2.40),
-        (4.1, 390.0, 2.01),
-        (4.1, 510.0, 1.63),
-        (4.1, 600.0, 1.30),
-        (3.1, 300.0, 2.15),
-        (3.1, 600.0, 1.31),
-    ];
-    for (current, rpm, published) in chart {
-        let w = stepperonline_23he45(current);
-        let omega = rpm / 60.0 * TAU;
-        let derived = w.pull_out(50.0, omega);
-        let chopped = chopped_pull_out(&w, 50.0, omega);
-        let off = derived / published - 1.0;
-        println!(
-            "23HE45-4204S, {current} A, 36 V, {rpm} rpm: derived {derived:.3} N·m, \
-             chopped {chopped:.3} N·m, chart {published} N·m ({:+.1} %)",
-            off * 100.0
-        );
-        // The derived torque is what the chopped phases give.
-        assert!((derived - chopped).abs() < 0.005 * w.holding_torque);
-        if rpm == 300.0 {
-            assert!(off.abs() < 0.20, "{current} A at {rpm} rpm: {off}");
-        } else {
-            assert!(
-                (0.20..0.45).contains(&off),
-                "{current} A at {rpm} rpm: {off}"
-            );
-        }
     }
 }
 
@@ -369,7 +300,8 @@ fn random_windings_agree_with_the_chopped_phases() {
             let full_steps = hi * factor;
             let (derived, chopped, off) = compare(&format!("random {n}"), &w, full_steps);
             let dt = TAU / (50.0 * omega(full_steps)) / 8000.0;
-            let ripple = w.supply_voltage * dt / w.inductance / (SQRT_2 * w.rated_current);
+            let supply = w.supply_voltage * w.supply_utilization;
+            let ripple = supply * dt / w.inductance / set_current(&w);
             let allowed = 0.01f64.max(1.5 * ripple);
             assert!(
                 (-0.005..allowed).contains(&off),
@@ -427,53 +359,4 @@ fn stepped_drives_agree_with_the_chopped_phases() {
         "stepped drives: at most {:.2} % of the holding torque apart",
         worst * 100.0
     );
-}
-
-/// StepperOnline's 23HS45-4204S (1.8°, 3.0 N·m at 4.2 A, 0.88 Ω, 3.4 mH),
-/// whose chart is titled "PULL OUT TORQUE(36V 4.2A HELF STEP)", axis 30
-/// to 420 rpm ("23HS45-4204S_Torque_Curve.pdf"). The chart is an image; its
-/// points here are read from it in two public transcriptions, which agree
-/// where both read it: 300 and 420 rpm at 2.07 and 1.84 N·m in
-/// contrerassma-eng/3d-generator,
-/// projects/CONVEYONE-OMNI-ZPA/out/analisis/research_motores_drivers.md
-/// (commit 9a216907, Table 2a-1, with 360 rpm at 1.97 N·m and the figures
-/// 0.88 Ω, 3.4 mH; readings within ±5 %), and 60, 150, 300 and 420 rpm in
-/// seankd3/machine-frame-lab, src/catalog/motion.ts (commit 4d5fab4f,
-/// "curves read by eye (±0.02 N·m)"). Half steps at 4.2 A: each phase on
-/// at 4.2 A or off.
-#[test]
-fn the_23hs45_against_its_half_step_chart() {
-    let w = Windings::new(0.88, 3.4e-3, 4.2, 3.0, 36.0).with_drive(Drive::HalfStep);
-    let sine = w.with_drive(Drive::Sine);
-    // (rpm, published N·m)
-    let chart = [
-        (60.0, 2.50),
-        (150.0, 2.31),
-        (300.0, 2.07),
-        (360.0, 1.97),
-        (420.0, 1.84),
-    ];
-    let mut within = 0;
-    for (rpm, published) in chart {
-        let omega = rpm / 60.0 * TAU;
-        let derived = w.pull_out(50.0, omega);
-        let chopped = chopped_pull_out(&w, 50.0, omega);
-        let as_sine = sine.pull_out(50.0, omega);
-        let off = derived / published - 1.0;
-        println!(
-            "23HS45-4204S, half steps, 4.2 A, 36 V, {rpm} rpm: derived {derived:.3} N·m, \
-             chopped {chopped:.3} N·m, chart {published} N·m ({:+.1} %); as a sine \
-             {as_sine:.3} N·m ({:+.1} %)",
-            off * 100.0,
-            (as_sine / published - 1.0) * 100.0
-        );
-        assert!((derived - chopped).abs() < 0.005 * w.holding_torque);
-        // Never below the chart, and above it by what the motor loses.
-        assert!((-0.02..0.25).contains(&off), "{rpm} rpm: {off}");
-        if off.abs() <= 0.20 {
-            within += 1;
-        }
-    }
-    // Within 20 % from 60 to 360 rpm; at 420 rpm 22 % above.
-    assert_eq!(within, 4);
 }

@@ -76,11 +76,15 @@ mod include;
 /// | `load_inertia` | the load's inertia at the shaft, kg·m² | `0` |
 /// | `torque_curve` | pull-out torque, up to 32 `(step frequency, N·m)` pairs with rising frequencies: `[(0, 0.40), (1000, 0.33), (4000, 0.12)]`; no torque beyond the last | required, unless the windings are given |
 /// | `resistance`, `inductance` | phase resistance (Ω) and inductance (H): with `rated_current`, `holding_torque` and `supply_voltage`, the pull-out curve is derived (`profile_core::motor::Windings`) | none |
-/// | `rated_current` | rated phase current, A (RMS, as a microstepping driver is set; the current each phase is switched to with `drive = half_step` or `full_step`) | none |
+/// | `rated_current` | the motor's rated phase current, A: its holding torque is measured at it, and the driver is set to it unless `driver_current` says otherwise | none |
 /// | `holding_torque` | holding torque at rated current, two phases on, N·m | none |
 /// | `supply_voltage` | the driver's supply, V | none |
 /// | `detent_torque` | the unpowered motor's detent torque, N·m, taken off the derived curve | `0` |
-/// | `drive` | the current the driver sets: `sine` (a microstepping driver, at any microstep setting), `half_step` (each phase on at `rated_current` or off, in turn one phase then both), `full_step` (both phases on) | `sine` |
+/// | `drive` | the current the driver sets: `sine` (a microstepping driver, at any microstep setting), `half_step` (each phase on at the driver's current or off, in turn one phase then both), `full_step` (both phases on) | `sine` |
+/// | `driver_current` | the driver's current setting, A: the sine's RMS or peak value, as `driver_current_is` says; the level each phase is switched to with `half_step` or `full_step`. Below the rating, the torque falls in proportion | `rated_current` |
+/// | `driver_current_is` | `rms` or `peak`, as the driver's manual gives its setting | `rms` |
+/// | `supply_utilization` | the share of the supply the chopper puts across a winding (its bridge's drops, its PWM's dead and off times), above 0 and at most 1 | `0.76` |
+/// | `iron_loss` | the iron's drag at an electrical frequency of 1 kHz (N·m), growing as the frequency's 0.4th power, taken off the derived torque | `0.11 · holding_torque` |
 /// | `friction` | constant load and friction torque, N·m | `0` |
 /// | `damping` | viscous damping on the rotor's speed, N·m·s/rad | `0` |
 /// | `damping_ratio` | electromagnetic damping ζ, on the rotor's speed relative to the field's (`simulate`), from 0 to 1 | `0` |

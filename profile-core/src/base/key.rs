@@ -79,6 +79,17 @@ impl Key {
     /// `drive`: the current's waveform the driver sets (`sine`,
     /// `half_step`, `full_step`).
     pub const DRIVE: Key = Key("drive");
+    /// `driver_current`: the driver's current setting, A.
+    pub const DRIVER_CURRENT: Key = Key("driver_current");
+    /// `driver_current_is`: whether the setting is the sine's `rms` or
+    /// `peak` value.
+    pub const DRIVER_CURRENT_IS: Key = Key("driver_current_is");
+    /// `supply_utilization`: the share of the supply the chopper puts
+    /// across a winding.
+    pub const SUPPLY_UTILIZATION: Key = Key("supply_utilization");
+    /// `iron_loss`: the iron's drag at an electrical frequency of 1 kHz,
+    /// N·m.
+    pub const IRON_LOSS: Key = Key("iron_loss");
 
     /// The keys every curve takes, after the curve's own, in documentation
     /// order (the motor's keys aside).
@@ -114,11 +125,16 @@ impl Key {
         Key::SUPPLY_VOLTAGE,
         Key::DETENT_TORQUE,
         Key::DRIVE,
+        Key::DRIVER_CURRENT,
+        Key::DRIVER_CURRENT_IS,
+        Key::SUPPLY_UTILIZATION,
+        Key::IRON_LOSS,
     ];
 
     /// The keys that describe a motor's windings, from which its pull-out
-    /// curve is derived ([`Windings`](crate::motor::Windings)): all but
-    /// `detent_torque` and `drive` are required together.
+    /// curve is derived ([`Windings`](crate::motor::Windings)) and the
+    /// driver behind them: the first five are required together, the rest
+    /// have defaults.
     pub const WINDINGS_KEYS: &'static [Key] = &[
         Key::RESISTANCE,
         Key::INDUCTANCE,
@@ -127,6 +143,10 @@ impl Key {
         Key::SUPPLY_VOLTAGE,
         Key::DETENT_TORQUE,
         Key::DRIVE,
+        Key::DRIVER_CURRENT,
+        Key::DRIVER_CURRENT_IS,
+        Key::SUPPLY_UTILIZATION,
+        Key::IRON_LOSS,
     ];
 
     /// The key as written by users.

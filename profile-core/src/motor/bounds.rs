@@ -64,7 +64,7 @@ pub(crate) const MOTOR: [Row<Motor>; 8] = [
 
 /// The windings' figures, in the order [`Windings::validate`] checks
 /// them.
-pub(crate) const WINDINGS: [Row<Windings>; 5] = [
+pub(crate) const WINDINGS: [Row<Windings>; 8] = [
     (Key::RESISTANCE, (1e-4, 1e5, "from 1e-4 to 1e5 Ω"), |w| {
         Some(w.resistance)
     }),
@@ -83,6 +83,19 @@ pub(crate) const WINDINGS: [Row<Windings>; 5] = [
     ),
     (Key::SUPPLY_VOLTAGE, (0.1, 1e5, "from 0.1 to 1e5 V"), |w| {
         Some(w.supply_voltage)
+    }),
+    (
+        Key::DRIVER_CURRENT,
+        (1e-4, 1000.0, "from 1e-4 to 1000 A"),
+        |w| w.driver_current,
+    ),
+    (
+        Key::SUPPLY_UTILIZATION,
+        (0.05, 1.0, "from 0.05 to 1"),
+        |w| Some(w.supply_utilization),
+    ),
+    (Key::IRON_LOSS, (0.0, 1e4, "from 0 to 10000 N·m"), |w| {
+        w.iron_loss
     }),
 ];
 

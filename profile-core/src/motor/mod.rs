@@ -45,7 +45,7 @@ pub use start::{
     END_FULL_STEPS, REMEDY_DAMPING_RATIO, Remedies, START_FULL_STEPS, START_MAX_STEPS,
     START_RESOLUTION, StartLimit,
 };
-pub use windings::{Drive, Windings};
+pub use windings::{CurrentSetting, Drive, Windings};
 
 use core::fmt;
 

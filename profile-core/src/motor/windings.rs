@@ -27,21 +27,37 @@
 //! [`Drive::FullStep`]) is solved the same way, stretch by stretch (the
 //! `stepped` module).
 //!
-//! Figures as datasheets give them:
+//! Figures as datasheets and driver manuals give them:
 //!
-//! - `rated_current` is the phase current a driver is set to, regulated as
-//!   an RMS value by a microstepping driver: the sine's amplitude is
-//!   `I = sqrt(2) · rated_current`, the current each phase carries with
-//!   two phases on at rated current in full steps.
-//! - `holding_torque` is measured at rated current with two phases on, the
-//!   amplitude of the static torque-angle curve: `K_m = holding_torque / I`.
-//! - The chopper's H-bridge puts `±supply_voltage` on a phase and switches
-//!   at once: its ripple, its decay mode, the drops in its transistors and
-//!   the supply's own resistance are not modelled.
+//! - `rated_current` is the motor's rated phase current, the one its
+//!   holding torque is measured at, two phases on: `K_m = holding_torque /
+//!   (sqrt(2) · rated_current)`, the amplitude of the static torque-angle
+//!   curve over the current's amplitude.
+//! - `driver_current` is what the driver is set to (`rated_current` when
+//!   not given), the sine's RMS or its peak as the driver's manual says
+//!   (`driver_current_is`, RMS when not given): the sine's amplitude is
+//!   `sqrt(2) · driver_current`, or `driver_current`. The stepped drives
+//!   switch each phase to `driver_current`. A driver set below the rating
+//!   gives proportionally less torque.
 //! - Back-EMF constant and torque constant are the same `K_m` in SI units,
 //!   as the model's energy balance requires (`e · i = T · ω`).
 //!
-//! Not modelled: iron losses, saturation, mid-band resonance.
+//! Two losses make the ideal chopper's torque what published charts show at
+//! speed; neither is on a datasheet, so each has a default taken from
+//! published pull-out charts (the tests keep them, with their sources), and
+//! a key to set it where a motor's own chart says better:
+//!
+//! - `supply_utilization`, the share of the supply the chopper puts across
+//!   a winding (default 0.76): the bridge's and the sense resistor's drops,
+//!   the dead time and the shortest off time of its PWM, the supply's own
+//!   sag. The chopper's ripple and decay mode are not modelled otherwise.
+//! - `iron_loss`, the drag of the iron's hysteresis and eddy currents at an
+//!   electrical frequency of 1 kHz, in N·m (default 0.11 of the holding
+//!   torque); it grows as the electrical frequency's 0.4th power, between
+//!   hysteresis (a constant drag) and eddy currents (a drag in proportion
+//!   to the frequency), and is taken off the torque.
+//!
+//! Not modelled: saturation, mid-band resonance.
 
 use core::f64::consts::SQRT_2;
 
@@ -89,6 +105,43 @@ impl Drive {
     }
 }
 
+/// How a driver's current setting is meant: its manual's table gives the
+/// sine's RMS and peak values for each setting.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum CurrentSetting {
+    /// The sine's RMS value: its amplitude is `sqrt(2)` times the setting.
+    #[default]
+    Rms,
+    /// The sine's amplitude.
+    Peak,
+}
+
+impl CurrentSetting {
+    /// Both, with their names as written in a profile.
+    pub const ALL: [(&'static str, CurrentSetting); 2] =
+        [("rms", CurrentSetting::Rms), ("peak", CurrentSetting::Peak)];
+
+    /// The name as written in a profile (`rms`, `peak`).
+    pub fn name(self) -> &'static str {
+        match self {
+            CurrentSetting::Rms => "rms",
+            CurrentSetting::Peak => "peak",
+        }
+    }
+}
+
+/// The share of the supply a chopper puts across a winding when a
+/// driver's is not known ([`Windings::supply_utilization`]).
+const SUPPLY_UTILIZATION: f64 = 0.76;
+
+/// The iron's drag at an electrical frequency of 1 kHz, as a share of the
+/// holding torque, when a motor's is not known ([`Windings::iron_loss`]).
+const IRON_LOSS_SHARE: f64 = 0.11;
+
+/// The power of the electrical frequency the iron's drag grows with.
+const IRON_LOSS_POWER: f64 = 0.4;
+
 /// A two-phase hybrid motor's windings and the chopper driver behind them,
 /// as a datasheet gives them: per phase, with the driver set to the rated
 /// current and fed from `supply_voltage`.
@@ -104,9 +157,9 @@ pub struct Windings {
     pub resistance: f64,
     /// Phase inductance, in H.
     pub inductance: f64,
-    /// Rated phase current, in A: RMS, as a microstepping driver is set,
-    /// for [`Drive::Sine`]; the current each phase is switched to, for the
-    /// stepped drives.
+    /// The motor's rated phase current, in A: the current its holding
+    /// torque is measured at, and the driver's setting unless
+    /// [`Windings::driver_current`] says otherwise.
     pub rated_current: f64,
     /// Holding torque at rated current, two phases on, in N·m.
     pub holding_torque: f64,
@@ -116,6 +169,25 @@ pub struct Windings {
     pub detent_torque: f64,
     /// The current's waveform the driver sets.
     pub drive: Drive,
+    /// The driver's current setting, in A: the sine's RMS or peak value
+    /// ([`Windings::driver_current_is`]) for [`Drive::Sine`], the current
+    /// each phase is switched to for the stepped drives. `None`: the
+    /// motor's `rated_current`.
+    pub driver_current: Option<f64>,
+    /// Whether [`Windings::driver_current`] is the sine's RMS or peak
+    /// value, as the driver's manual gives it (RMS by default; the stepped
+    /// drives take the setting as the level they switch to).
+    pub driver_current_is: CurrentSetting,
+    /// The share of the supply the chopper puts across a winding, above 0
+    /// and at most 1: 0.76 unless a driver is known better (the bridge's
+    /// drops, its PWM's dead and off times).
+    pub supply_utilization: f64,
+    /// The iron's drag at an electrical frequency of 1 kHz, in N·m,
+    /// growing as the frequency's 0.4th power. `None`: 0.11 of the
+    /// holding torque, as the budget motors whose published charts the
+    /// model was checked against have it (a motor of better iron loses
+    /// less: its own chart tells).
+    pub iron_loss: Option<f64>,
 }
 
 impl Windings {
@@ -151,6 +223,10 @@ impl Windings {
             supply_voltage,
             detent_torque: 0.0,
             drive: Drive::Sine,
+            driver_current: None,
+            driver_current_is: CurrentSetting::Rms,
+            supply_utilization: SUPPLY_UTILIZATION,
+            iron_loss: None,
         }
     }
 
@@ -166,6 +242,41 @@ impl Windings {
     #[must_use]
     pub const fn with_drive(mut self, drive: Drive) -> Self {
         self.drive = drive;
+        self
+    }
+
+    /// The same windings behind a driver set to `amps`, the sine's RMS or
+    /// peak value as `is` says (the level each phase is switched to, for
+    /// the stepped drives).
+    ///
+    /// ```
+    /// use profile_core::motor::{CurrentSetting, Windings};
+    ///
+    /// // A 4.2 A motor behind a driver set to 4.2 A peak: 3.0 A RMS.
+    /// let w = Windings::new(0.65, 3.2e-3, 4.0, 2.4, 36.0)
+    ///     .with_driver_current(4.2, CurrentSetting::Peak);
+    /// assert!((w.amplitude() - 4.2).abs() < 1e-12);
+    /// ```
+    #[must_use]
+    pub const fn with_driver_current(mut self, amps: f64, is: CurrentSetting) -> Self {
+        self.driver_current = Some(amps);
+        self.driver_current_is = is;
+        self
+    }
+
+    /// The same windings behind a chopper that puts `share` of its supply
+    /// across a winding (above 0, at most 1).
+    #[must_use]
+    pub const fn with_supply_utilization(mut self, share: f64) -> Self {
+        self.supply_utilization = share;
+        self
+    }
+
+    /// The same windings with the iron's drag at an electrical frequency
+    /// of 1 kHz, in N·m (0 or more).
+    #[must_use]
+    pub const fn with_iron_loss(mut self, nm: f64) -> Self {
+        self.iron_loss = Some(nm);
         self
     }
 
@@ -187,16 +298,38 @@ impl Windings {
         Ok(())
     }
 
-    /// The phase current's amplitude the driver sets, `sqrt(2) ·
-    /// rated_current`, in A.
-    pub fn amplitude(&self) -> f64 {
-        SQRT_2 * self.rated_current
+    /// The driver's current setting, in A: [`Windings::driver_current`],
+    /// or the motor's rated current.
+    pub fn setting(&self) -> f64 {
+        self.driver_current.unwrap_or(self.rated_current)
     }
 
-    /// The torque constant `K_m = holding_torque / amplitude`, in N·m/A
-    /// (and V·s/rad: the back-EMF constant).
+    /// The sine's amplitude the driver sets, in A: `sqrt(2)` times an RMS
+    /// setting, or the peak setting.
+    pub fn amplitude(&self) -> f64 {
+        match self.driver_current_is {
+            CurrentSetting::Rms => SQRT_2 * self.setting(),
+            CurrentSetting::Peak => self.setting(),
+        }
+    }
+
+    /// The torque constant `K_m = holding_torque / (sqrt(2) ·
+    /// rated_current)`, in N·m/A (and V·s/rad: the back-EMF constant).
     pub fn torque_constant(&self) -> f64 {
-        self.holding_torque / self.amplitude()
+        self.holding_torque / (SQRT_2 * self.rated_current)
+    }
+
+    /// The iron's drag at an electrical frequency of 1 kHz, in N·m:
+    /// [`Windings::iron_loss`], or its default share of the holding
+    /// torque.
+    pub fn iron_loss_at_1khz(&self) -> f64 {
+        self.iron_loss
+            .unwrap_or(IRON_LOSS_SHARE * self.holding_torque)
+    }
+
+    /// The iron's drag at an electrical frequency of `hz`, in N·m.
+    pub fn iron_drag(&self, hz: f64) -> f64 {
+        self.iron_loss_at_1khz() * libm::pow(libm::fabs(hz) / 1000.0, IRON_LOSS_POWER)
     }
 
     /// The pull-out torque at a steady mechanical speed `omega` (rad/s) of
@@ -216,14 +349,16 @@ impl Windings {
     /// [`Windings::pull_out`] for windings and arguments already checked.
     pub(crate) fn pull_out_of_valid(&self, poles: f64, omega: f64) -> f64 {
         let km = self.torque_constant();
-        let (r, volts) = (self.resistance, self.supply_voltage);
-        let x = poles * omega.abs() * self.inductance;
+        let r = self.resistance;
+        let volts = self.supply_voltage * self.supply_utilization;
+        let electrical = poles * omega.abs();
+        let x = electrical * self.inductance;
         let e = km * omega.abs();
         let stepped = |steps| SteppedPhase {
             r,
             x,
             e,
-            amp: self.rated_current,
+            amp: self.setting(),
             volts,
             steps,
         };
@@ -239,7 +374,8 @@ impl Windings {
             Drive::HalfStep => stepped(HALF_STEPS).largest_q(),
             Drive::FullStep => stepped(FULL_STEPS).largest_q(),
         };
-        (km * q - self.detent_torque).max(0.0)
+        let drag = self.iron_drag(electrical / core::f64::consts::TAU);
+        (km * q - self.detent_torque - drag).max(0.0)
     }
 }
 
@@ -334,190 +470,5 @@ impl Motor {
 }
 
 #[cfg(test)]
-mod tests {
-    use core::f64::consts::{FRAC_PI_4, PI};
-
-    use super::*;
-
-    fn nema17() -> Windings {
-        Windings::new(0.7, 1.1e-3, 2.8, 0.40, 24.0)
-    }
-
-    #[test]
-    fn at_rest_the_holding_torque_unless_the_supply_cannot_drive_the_current() {
-        assert_eq!(nema17().pull_out(50.0, 0.0), 0.40);
-        // 2 V over 0.7 Ω drives 2.86 A of the 3.96 A set: the current
-        // follows the sine up to 2.86 A and is clipped there. The mean
-        // torque is `K_m` times the clipped sine's fundamental, here summed
-        // over a half turn.
-        let weak = Windings {
-            supply_voltage: 2.0,
-            ..nema17()
-        };
-        let (amp, cap) = (SQRT_2 * 2.8, 2.0 / 0.7);
-        let n = 100_000;
-        let fundamental = (0..n)
-            .map(|k| {
-                let t = PI * (k as f64 + 0.5) / n as f64;
-                (amp * t.sin()).min(cap) * t.sin()
-            })
-            .sum::<f64>()
-            * 2.0
-            / n as f64;
-        let expected = 0.40 / amp * fundamental;
-        let at_rest = weak.pull_out(50.0, 0.0);
-        assert!(
-            (at_rest - expected).abs() < 1e-9,
-            "{at_rest} against {expected}"
-        );
-        // Slowly turning, the same.
-        let slowly = weak.pull_out(50.0, 1e-4);
-        assert!(
-            (slowly - at_rest).abs() < 1e-5,
-            "{slowly} against {at_rest}"
-        );
-        let detent = nema17().with_detent_torque(0.015);
-        assert!((detent.pull_out(50.0, 0.0) - 0.385).abs() < 1e-15);
-    }
-
-    #[test]
-    fn falls_with_speed_and_as_one_over_speed_at_the_top() {
-        let w = nema17();
-        let mut last = f64::INFINITY;
-        for k in 0..400 {
-            let t = w.pull_out(50.0, k as f64 * 2.0);
-            assert!(t <= last, "rises at {k}");
-            last = t;
-        }
-        // High up, `K_m (V - K_m R / (N_r L)) / (N_r L ω)`.
-        let (km, nl) = (w.torque_constant(), 50.0 * w.inductance);
-        let omega = 5000.0;
-        let asymptote = km * (24.0 / FRAC_PI_4 - km * w.resistance / nl) / (nl * omega);
-        let t = w.pull_out(50.0, omega);
-        assert!(
-            (t / asymptote - 1.0).abs() < 1e-3,
-            "{t} against {asymptote}"
-        );
-    }
-
-    #[test]
-    fn a_short_circuit_current_above_the_set_one_brakes_at_speed() {
-        // `K_m / (N_r L)` = 0.101 / 0.01 = 10.1 A, above the 3.96 A set:
-        // once the back-EMF drives more than the chopper is set to, the
-        // windings give nothing, and never more again.
-        let w = Windings {
-            resistance: 0.5,
-            inductance: 0.2e-3,
-            ..nema17()
-        };
-        assert!(w.torque_constant() / (50.0 * w.inductance) > w.amplitude());
-        let mut last = f64::INFINITY;
-        let mut zero_from = None;
-        for k in 0..10_000 {
-            let omega = k as f64 * 0.5;
-            let t = w.pull_out(50.0, omega);
-            assert!(t <= last, "rises to {t} at {omega} rad/s");
-            if t == 0.0 && zero_from.is_none() {
-                zero_from = Some(omega);
-            }
-            last = t;
-        }
-        let zero_from = zero_from.expect("falls to nothing");
-        // 508 rad/s: 16 170 full steps/s.
-        assert!((450.0..550.0).contains(&zero_from), "{zero_from}");
-    }
-
-    /// The largest supply taken, 1e5 V, and one beyond: finite limits, and
-    /// a motor refused starts at no rate.
-    #[test]
-    fn a_supply_beyond_reason_gives_finite_limits() {
-        let motor = Motor::new(1.8, 1, 5.4e-6)
-            .with_windings(Windings {
-                supply_voltage: 1e5,
-                ..nema17()
-            })
-            .with_load_inertia(2.0e-5)
-            .with_damping_ratio(0.1);
-        let top = motor.top_hz();
-        assert!(top.is_finite() && top > 1e5, "{top}");
-        let mut beyond = motor;
-        beyond.windings = Some(Windings {
-            supply_voltage: 1e300,
-            ..nema17()
-        });
-        assert!(beyond.top_hz().is_finite());
-        assert_eq!(beyond.start_limit(1e6).hz(), 0.0);
-        let start = motor.start_limit(top).hz();
-        assert!(start > 100.0 && start < 1e6, "{start}");
-        let unbounded = motor.start_limit(f64::INFINITY).hz();
-        assert!(
-            (unbounded / start - 1.0).abs() < 2e-3,
-            "{unbounded} against {start}"
-        );
-    }
-
-    /// Windings and motors `validate` refuses, and arguments the model has
-    /// no answer for, give no torque and no top frequency: not a figure
-    /// made of them (a resistance of -1 Ω gave 0.4 N·m up to 3.8 MHz).
-    #[test]
-    fn refused_figures_give_no_torque() {
-        let bad = [-1e300, -1.0, 0.0, 1e-300, 1e300, f64::NAN, f64::INFINITY];
-        for drive in [Drive::Sine, Drive::HalfStep, Drive::FullStep] {
-            for field in 0..6 {
-                for &value in &bad {
-                    let mut w = nema17().with_drive(drive);
-                    let slot = match field {
-                        0 => &mut w.resistance,
-                        1 => &mut w.inductance,
-                        2 => &mut w.rated_current,
-                        3 => &mut w.holding_torque,
-                        4 => &mut w.supply_voltage,
-                        _ => &mut w.detent_torque,
-                    };
-                    *slot = value;
-                    if w.validate().is_ok() {
-                        continue;
-                    }
-                    let motor = Motor::new(1.8, drive_steps(drive), 5.4e-6).with_windings(w);
-                    let case = (drive, field, value);
-                    assert_eq!(w.pull_out(50.0, 10.0), 0.0, "{case:?}");
-                    assert_eq!(motor.pull_out(100.0), 0.0, "{case:?}");
-                    assert_eq!(motor.available(100.0), 0.0, "{case:?}");
-                    assert_eq!(motor.derived_pull_out(100.0), None, "{case:?}");
-                    assert_eq!(motor.peak_torque(), 0.0, "{case:?}");
-                    assert_eq!(motor.top_hz(), 0.0, "{case:?}");
-                    assert_eq!(motor.stiffness(), 0.0, "{case:?}");
-                }
-            }
-        }
-        let good = nema17();
-        for (poles, omega) in [
-            (0.0, 10.0),
-            (-50.0, 10.0),
-            (f64::NAN, 10.0),
-            (50.0, f64::NAN),
-        ] {
-            assert_eq!(good.pull_out(poles, omega), 0.0, "{poles} {omega}");
-        }
-        assert!(good.pull_out(50.0, 10.0) > 0.3);
-        let motor = Motor::new(1.8, 8, 5.4e-6).with_windings(good);
-        assert!(motor.pull_out(100.0) > 0.3);
-        for hz in [f64::NAN, f64::INFINITY] {
-            assert_eq!(motor.pull_out(hz), 0.0);
-            assert_eq!(motor.derived_pull_out(hz), None);
-        }
-        let refused = Motor::new(f64::NAN, 8, 5.4e-6).with_windings(good);
-        assert_eq!((refused.pull_out(100.0), refused.top_hz()), (0.0, 0.0));
-        let curve = crate::motor::TorqueCurve::new(&[(0.0, 0.4), (1000.0, 0.3)]).unwrap();
-        let refused = Motor::new(1.8, 0, 5.4e-6).with_torque_curve(curve);
-        assert_eq!((refused.pull_out(100.0), refused.peak_torque()), (0.0, 0.0));
-    }
-
-    fn drive_steps(drive: Drive) -> u32 {
-        match drive {
-            Drive::Sine => 8,
-            Drive::HalfStep => 2,
-            Drive::FullStep => 1,
-        }
-    }
-}
+#[path = "windings_tests.rs"]
+mod tests;

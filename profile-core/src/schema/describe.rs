@@ -7,6 +7,7 @@ use super::{Arg, Diagnostic};
 use crate::base::error::Error;
 use crate::base::error::Num;
 use crate::base::key::Key;
+use crate::base::numbers::Significant;
 use crate::curves::Param;
 use crate::motor::{Motor, MotorError, StartLimit};
 use crate::table::spec::Spec;
@@ -73,6 +74,18 @@ pub fn describe_motor(motor: &Motor) -> Vec<(Key, String)> {
             show(Key::SUPPLY_VOLTAGE, w.supply_voltage),
             show(Key::DETENT_TORQUE, w.detent_torque),
             (Key::DRIVE, w.drive.name().to_string()),
+            show(Key::DRIVER_CURRENT, w.setting()),
+            (
+                Key::DRIVER_CURRENT_IS,
+                w.driver_current_is.name().to_string(),
+            ),
+            (
+                Key::SUPPLY_UTILIZATION,
+                Num(w.supply_utilization).to_string(),
+            ),
+            // The default, a share of the holding torque, to the figures
+            // a datasheet prints (0.044, not 0.044000000000000004).
+            show(Key::IRON_LOSS, six_digits(w.iron_loss_at_1khz())),
         ]);
     }
     out.extend([
@@ -149,4 +162,9 @@ pub fn locate<L: Clone>(error: &Error, args: &[Arg<L>], whole: &L) -> Diagnostic
         loc,
         message: error.to_string(),
     }
+}
+
+/// `v` to six significant digits, as messages print figures.
+fn six_digits(v: f64) -> f64 {
+    Significant(v).to_string().parse().unwrap_or(v)
 }

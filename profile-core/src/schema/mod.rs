@@ -179,11 +179,11 @@ pub fn unit(key: Key) -> &'static str {
         Key::MAX_START_HZ => "Hz",
         Key::STEP_ANGLE => "degrees",
         Key::ROTOR_INERTIA | Key::LOAD_INERTIA => "kg·m²",
-        Key::FRICTION | Key::HOLDING_TORQUE | Key::DETENT_TORQUE => "N·m",
+        Key::FRICTION | Key::HOLDING_TORQUE | Key::DETENT_TORQUE | Key::IRON_LOSS => "N·m",
         Key::DAMPING => "N·m·s/rad",
         Key::RESISTANCE => "Ω",
         Key::INDUCTANCE => "H",
-        Key::RATED_CURRENT => "A",
+        Key::RATED_CURRENT | Key::DRIVER_CURRENT => "A",
         Key::SUPPLY_VOLTAGE => "V",
         _ => CURVE_SCHEMAS
             .iter()

@@ -11,7 +11,9 @@ use crate::base::MAX_LEN;
 use crate::base::error::{Error, Num};
 use crate::base::key::Key;
 use crate::curves::Reader;
-use crate::motor::{Drive, MAX_CURVE_POINTS, MAX_MICROSTEPS, Motor, TorqueCurve, Windings};
+use crate::motor::{
+    CurrentSetting, Drive, MAX_CURVE_POINTS, MAX_MICROSTEPS, Motor, TorqueCurve, Windings,
+};
 
 /// 2^53: every integer up to it is exactly a `f64`.
 const EXACT_FLOAT_INT: f64 = 9_007_199_254_740_992.0;
@@ -376,6 +378,11 @@ fn windings<L: Clone>(c: &mut Collector<'_, L>) -> Option<Option<Windings>> {
     let supply_voltage = c.float(Key::SUPPLY_VOLTAGE);
     let detent_torque = c.float(Key::DETENT_TORQUE);
     let drive = c.name(Key::DRIVE, &Drive::ALL);
+    let driver_current = c.float(Key::DRIVER_CURRENT);
+    let driver_current_is = c.name(Key::DRIVER_CURRENT_IS, &CurrentSetting::ALL);
+    let supply_utilization = c.float(Key::SUPPLY_UTILIZATION);
+    let iron_loss = c.float(Key::IRON_LOSS);
+    let defaults = Windings::new(0.0, 0.0, 0.0, 0.0, 0.0);
     Some(Some(Windings {
         resistance: resistance?,
         inductance: inductance?,
@@ -384,5 +391,9 @@ fn windings<L: Clone>(c: &mut Collector<'_, L>) -> Option<Option<Windings>> {
         supply_voltage: supply_voltage?,
         detent_torque: detent_torque.unwrap_or(0.0),
         drive: drive.unwrap_or_default(),
+        driver_current,
+        driver_current_is: driver_current_is.unwrap_or_default(),
+        supply_utilization: supply_utilization.unwrap_or(defaults.supply_utilization),
+        iron_loss,
     }))
 }
