@@ -8,7 +8,10 @@
 //! call); the runs' refill, which reads a run, is called at a run's end, so
 //! that its registers are saved only then. The planner (`_init`, `_start`,
 //! `_stop`, `_set_cruise`, `_remaining`) is defined once, where the run
-//! expander is.
+//! expander is. A user leaves a player out with its macro (`PREFIX_NO_PLAYER`,
+//! `PREFIX_NO_PLAYER32`, `PREFIX_NO_RUNS_PLAYER`), which guards its API and
+//! its definitions alike.
+//!
 //! The C text is in `plan.rs` (shared), `steps.rs` and `runs.rs`, with
 //! `@T@` for the player's prefix, `@W@` for the period's type, `@S@` for the
 //! storage word and `@R@` for the read macro.
@@ -109,6 +112,8 @@ struct Fill {
     storage: String,
     /// The read macro.
     read: String,
+    /// The macro that leaves the player out: `RAMPS_NO_PLAYER`.
+    omit: String,
 }
 
 impl Fill {
@@ -119,6 +124,25 @@ impl Fill {
             .replace("@S@", &self.storage)
             .replace("@R@", &self.read)
     }
+
+    /// `templates` filled, unless the user defines the player's omit macro.
+    fn guarded(&self, templates: &[&str]) -> String {
+        let mut body = String::new();
+        for template in templates {
+            body.push_str(&self.apply(template));
+        }
+        let omit = &self.omit;
+        format!(
+            "#ifndef {omit}\n{}\n#endif /* {omit} */\n\n",
+            body.trim_end_matches('\n')
+        )
+    }
+}
+
+/// The macro that leaves out the player whose name follows `prefix_`:
+/// `RAMPS_NO_RUNS_PLAYER` for `ramps_runs_player`.
+fn omit(prefix: &str, player: &str) -> String {
+    format!("{}_NO_{}", prefix.to_uppercase(), player.to_uppercase())
 }
 
 /// The players of `kinds`, each with its templates: (fill, API, helpers,
@@ -130,6 +154,7 @@ fn players(names: &Names, style: &CStyle, kinds: Kinds) -> Vec<(Fill, [&'static 
     if kinds.u16 {
         let fill = Fill {
             name: format!("{prefix}_player"),
+            omit: omit(prefix, "player"),
             word: "uint16_t",
             storage: storage.clone(),
             read: names.read(),
@@ -139,6 +164,7 @@ fn players(names: &Names, style: &CStyle, kinds: Kinds) -> Vec<(Fill, [&'static 
     if kinds.u32 {
         let fill = Fill {
             name: format!("{prefix}_player32"),
+            omit: omit(prefix, "player32"),
             word: "uint32_t",
             storage: storage.clone(),
             read: names.read32(),
@@ -148,6 +174,7 @@ fn players(names: &Names, style: &CStyle, kinds: Kinds) -> Vec<(Fill, [&'static 
     if kinds.runs {
         let fill = Fill {
             name: format!("{prefix}_runs_player"),
+            omit: omit(prefix, "runs_player"),
             word: "uint16_t",
             storage,
             read: names.read(),
@@ -194,7 +221,12 @@ pub(super) fn api(names: &Names, style: &CStyle, kinds: Kinds) -> String {
          #endif\n\n",
     );
     for (fill, [api, _, _]) in players(names, style, kinds) {
-        out.push_str(&fill.apply(api));
+        out.push_str(&format!(
+            "/* To leave this player out, define {} where the header is included\n \
+             * and where its definitions are compiled. */\n",
+            fill.omit
+        ));
+        out.push_str(&fill.guarded(&[api]));
     }
     out
 }
@@ -204,9 +236,7 @@ pub(super) fn api(names: &Names, style: &CStyle, kinds: Kinds) -> String {
 pub(super) fn definitions(names: &Names, style: &CStyle, kinds: Kinds) -> String {
     let mut out = String::new();
     for (fill, [_, helpers, init]) in players(names, style, kinds) {
-        out.push_str(&fill.apply(helpers));
-        out.push_str(&fill.apply(plan::PLAN));
-        out.push_str(&fill.apply(init));
+        out.push_str(&fill.guarded(&[helpers, plan::PLAN, init]));
     }
     out
 }
