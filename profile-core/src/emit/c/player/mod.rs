@@ -12,9 +12,23 @@
 //! `PREFIX_NO_PLAYER32`, `PREFIX_NO_RUNS_PLAYER`), which guards its API and
 //! its definitions alike.
 //!
-//! The C text is in `plan.rs` (shared), `steps.rs` and `runs.rs`, with
-//! `@T@` for the player's prefix, `@W@` for the period's type, `@S@` for the
-//! storage word and `@R@` for the read macro.
+//! On SDCC's 8051 port the players fit a core whose internal RAM is 256
+//! bytes, of which 128 are addressable directly: every function is
+//! `__reentrant` (`STEPPER_PROFILES_REENTRANT`), so that SDCC spills its
+//! registers to the stack while it runs rather than to that RAM for good;
+//! the planner's locals are `static` (`STEPPER_PROFILES_LOCAL`, in external
+//! RAM with `--model-large`), so that the stack holds little more than the
+//! calls; nothing is inline (SDCC 4.2 miscompiles these functions inlined into
+//! reentrant ones); the step path multiplies by shifts and additions (SDCC's
+//! long multiplication is not reentrant), and the definitions turn off the
+//! optimisations that keep values in temporaries across a function (`#pragma
+//! nogcse`, `noinduction`, `noinvariant`). Every macro is the user's to
+//! define first.
+//!
+//! The C text is in `plan.rs` (shared), `steps.rs`, `runs.rs` and
+//! `cursor.rs` (positions along a table of runs), with `@T@` for the
+//! player's prefix, `@W@` for the period's type, `@S@` for the storage word
+//! and `@R@` for the read macro.
 
 use std::format;
 use std::string::String;
@@ -25,6 +39,7 @@ use crate::base::timer::Word;
 use crate::emit::Profile;
 use crate::table::computed::Generated;
 
+mod cursor;
 mod plan;
 mod runs;
 mod steps;
@@ -145,9 +160,33 @@ fn omit(prefix: &str, player: &str) -> String {
     format!("{}_NO_{}", prefix.to_uppercase(), player.to_uppercase())
 }
 
-/// The players of `kinds`, each with its templates: (fill, API, helpers,
-/// `_init`).
-fn players(names: &Names, style: &CStyle, kinds: Kinds) -> Vec<(Fill, [&'static str; 3])> {
+/// A player's templates: its API, for the header, and its definitions, in
+/// the order C defines them.
+struct Templates {
+    api: &'static str,
+    definitions: &'static [&'static str],
+}
+
+/// The per-step player's templates.
+const STEPS: Templates = Templates {
+    api: steps::API,
+    definitions: &[steps::DEFINITIONS, plan::PLAN, steps::INIT],
+};
+
+/// The runs player's templates.
+const RUNS: Templates = Templates {
+    api: runs::API,
+    definitions: &[
+        runs::REFILL,
+        cursor::CURSOR,
+        runs::DEFINITIONS,
+        plan::PLAN,
+        runs::INIT,
+    ],
+};
+
+/// The players of `kinds`, each with its templates.
+fn players(names: &Names, style: &CStyle, kinds: Kinds) -> Vec<(Fill, Templates)> {
     let prefix = &names.prefix;
     let storage = storage_word(style);
     let mut out = Vec::new();
@@ -159,7 +198,7 @@ fn players(names: &Names, style: &CStyle, kinds: Kinds) -> Vec<(Fill, [&'static 
             storage: storage.clone(),
             read: names.read(),
         };
-        out.push((fill, [steps::API, steps::DEFINITIONS, steps::INIT]));
+        out.push((fill, STEPS));
     }
     if kinds.u32 {
         let fill = Fill {
@@ -169,7 +208,7 @@ fn players(names: &Names, style: &CStyle, kinds: Kinds) -> Vec<(Fill, [&'static 
             storage: storage.clone(),
             read: names.read32(),
         };
-        out.push((fill, [steps::API, steps::DEFINITIONS, steps::INIT]));
+        out.push((fill, STEPS));
     }
     if kinds.runs {
         let fill = Fill {
@@ -179,7 +218,7 @@ fn players(names: &Names, style: &CStyle, kinds: Kinds) -> Vec<(Fill, [&'static 
             storage,
             read: names.read(),
         };
-        out.push((fill, [runs::API, runs::DEFINITIONS, runs::INIT]));
+        out.push((fill, RUNS));
     }
     out
 }
@@ -192,9 +231,13 @@ pub(super) fn api(names: &Names, style: &CStyle, kinds: Kinds) -> String {
     }
     let mut out = String::from(
         "/* A player's step path is inline: a step interrupt calling it calls no\n \
-         * function, and saves only the registers it uses. */\n\
+         * function, and saves only the registers it uses. Not on SDCC's 8051\n \
+         * port, whose version 4.2 inlines these functions into reentrant ones\n \
+         * wrong. */\n\
          #ifndef STEPPER_PROFILES_INLINE\n\
-         #if defined(__GNUC__)\n\
+         #if defined(__SDCC_mcs51)\n\
+         #define STEPPER_PROFILES_INLINE static\n\
+         #elif defined(__GNUC__)\n\
          #define STEPPER_PROFILES_INLINE static __inline__ __attribute__((__always_inline__))\n\
          #elif defined(__STDC_VERSION__) && __STDC_VERSION__ >= 199901L\n\
          #define STEPPER_PROFILES_INLINE static inline\n\
@@ -218,15 +261,34 @@ pub(super) fn api(names: &Names, style: &CStyle, kinds: Kinds) -> String {
          #else\n\
          #define STEPPER_PROFILES_NOINLINE\n\
          #endif\n\
+         #endif\n\
+         /* SDCC's 8051 port spills registers to internal RAM, of which an 8051\n \
+         * addresses 128 bytes directly. There every function of the players is\n \
+         * reentrant, its spills on the stack only while it runs, and the\n \
+         * planner keeps its locals in fixed places off the stack (external RAM\n \
+         * with --model-large): plan one move at a time. */\n\
+         #ifndef STEPPER_PROFILES_REENTRANT\n\
+         #if defined(__SDCC_mcs51)\n\
+         #define STEPPER_PROFILES_REENTRANT __reentrant\n\
+         #else\n\
+         #define STEPPER_PROFILES_REENTRANT\n\
+         #endif\n\
+         #endif\n\
+         #ifndef STEPPER_PROFILES_LOCAL\n\
+         #if defined(__SDCC_mcs51)\n\
+         #define STEPPER_PROFILES_LOCAL static\n\
+         #else\n\
+         #define STEPPER_PROFILES_LOCAL\n\
+         #endif\n\
          #endif\n\n",
     );
-    for (fill, [api, _, _]) in players(names, style, kinds) {
+    for (fill, templates) in players(names, style, kinds) {
         out.push_str(&format!(
             "/* To leave this player out, define {} where the header is included\n \
              * and where its definitions are compiled. */\n",
             fill.omit
         ));
-        out.push_str(&fill.guarded(&[api]));
+        out.push_str(&fill.guarded(&[templates.api]));
     }
     out
 }
@@ -234,9 +296,19 @@ pub(super) fn api(names: &Names, style: &CStyle, kinds: Kinds) -> String {
 /// The players' planners, defined once: in the single header's
 /// implementation section, or in the split source file.
 pub(super) fn definitions(names: &Names, style: &CStyle, kinds: Kinds) -> String {
-    let mut out = String::new();
-    for (fill, [_, helpers, init]) in players(names, style, kinds) {
-        out.push_str(&fill.guarded(&[helpers, plan::PLAN, init]));
+    let players = players(names, style, kinds);
+    if players.is_empty() {
+        return String::new();
     }
+    // SDCC's optimisations that keep values in temporaries across a
+    // function spill them to the 8051's internal RAM: off for the players.
+    let mut out = String::from(
+        "#if defined(__SDCC_mcs51)\n#pragma save\n#pragma nogcse\n#pragma noinduction\n\
+         #pragma noinvariant\n#endif\n\n",
+    );
+    for (fill, templates) in players {
+        out.push_str(&fill.guarded(templates.definitions));
+    }
+    out.push_str("#if defined(__SDCC_mcs51)\n#pragma restore\n#endif\n\n");
     out
 }

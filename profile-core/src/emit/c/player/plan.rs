@@ -1,13 +1,14 @@
 //! The move's plan in C, shared by every kind of table: `Player::start`,
 //! `stop` and `set_cruise` with the planner of `player::plan`, written
 //! against a few functions each kind defines (`_period_`, `_place_`,
-//! `_crossing_`, `_capped_walk_`, `_last_`, `_enter_`, `_first_`).
+//! `_settle_`, `_crossing_`, `_capped_walk_`, `_last_`, `_enter_`,
+//! `_first_`).
 //!
 //! `@T@` is the player's prefix (`ramps_player`).
 
 /// The planner's C89 definitions.
 pub(super) const PLAN: &str = r#"/* One step of the acceleration side towards the cruise position: 1, -1 or 0. */
-static signed char @T@_toward_(const @T@_t *p, uint32_t pos)
+static signed char @T@_toward_(const @T@_t *p, uint32_t pos) STEPPER_PROFILES_REENTRANT
 {
     return pos < p->cruise ? 1 : pos > p->cruise ? -1 : 0;
 }
@@ -16,9 +17,9 @@ static signed char @T@_toward_(const @T@_t *p, uint32_t pos)
  * out of reach of the deceleration table, then a walk, a cruise and the
  * deceleration within reach). */
 static void @T@_push_(@T@_t *p, unsigned char decel, uint32_t pos, signed char dir,
-    uint32_t count, uint32_t acc, signed char acc_dir)
+    uint32_t count, uint32_t acc, signed char acc_dir) STEPPER_PROFILES_REENTRANT
 {
-    @T@_stretch_t *s;
+    STEPPER_PROFILES_LOCAL @T@_stretch_t *s;
     if (p->len >= 8) {
         return;
     }
@@ -37,11 +38,13 @@ static void @T@_push_(@T@_t *p, unsigned char decel, uint32_t pos, signed char d
 
 /* The acceleration side walking from `pos` for `n` steps (towards the cruise
  * position, reaching it at most), then holding; where it ends. */
-static uint32_t @T@_walk_(@T@_t *p, uint32_t pos, uint32_t n)
+static uint32_t @T@_walk_(@T@_t *p, uint32_t pos, uint32_t n) STEPPER_PROFILES_REENTRANT
 {
-    uint32_t distance = pos > p->cruise ? pos - p->cruise : p->cruise - pos;
-    uint32_t walked = n < distance ? n : distance;
-    signed char dir = @T@_toward_(p, pos);
+    STEPPER_PROFILES_LOCAL uint32_t distance, walked;
+    STEPPER_PROFILES_LOCAL signed char dir;
+    distance = pos > p->cruise ? pos - p->cruise : p->cruise - pos;
+    walked = n < distance ? n : distance;
+    dir = @T@_toward_(p, pos);
     if (walked > 0) {
         @T@_push_(p, 0, pos, dir, walked, pos, dir);
     }
@@ -52,25 +55,16 @@ static uint32_t @T@_walk_(@T@_t *p, uint32_t pos, uint32_t n)
     return pos;
 }
 
-/* The last `r` steps, the deceleration table within reach: the acceleration
- * side plays until the deceleration table, read at the steps that remain, is
- * not faster; then the deceleration table plays to the end. */
-static void @T@_within_reach_(@T@_t *p, uint32_t pos, uint32_t r)
-{
-    uint32_t j = @T@_crossing_(p, pos, r), after;
-    pos = @T@_walk_(p, pos, j);
-    if (j < r) {
-        after = r - 1 - j;
-        @T@_push_(p, 1, after, -1, after + 1, pos, 0);
-    }
-}
-
 /* Plans `r` steps of a move that is not decelerating, the acceleration side
- * at `pos`: the stretches it is made of. */
-static void @T@_plan_(@T@_t *p, uint32_t pos, uint32_t r)
+ * at `pos`: the stretches it is made of. The last steps, the deceleration
+ * table within reach: the acceleration side plays until the deceleration
+ * table, read at the steps that remain, is not faster; then the deceleration
+ * table plays to the end. */
+static void @T@_plan_(@T@_t *p, uint32_t pos, uint32_t r) STEPPER_PROFILES_REENTRANT
 {
-    uint32_t l = p->decel_last, far, n, cap;
-    signed char acc_dir;
+    STEPPER_PROFILES_LOCAL uint32_t l, far, n, cap, j;
+    STEPPER_PROFILES_LOCAL signed char acc_dir;
+    l = p->decel_last;
     p->len = 0;
     while (r > 0 && r - 1 > l) {
         /* The deceleration table is out of reach for `far` more steps. */
@@ -102,20 +96,26 @@ static void @T@_plan_(@T@_t *p, uint32_t pos, uint32_t r)
         r -= n;
     }
     if (r > 0) {
-        @T@_within_reach_(p, pos, r);
+        j = @T@_crossing_(p, pos, r);
+        pos = @T@_walk_(p, pos, j);
+        if (j < r) {
+            n = r - 1 - j;
+            @T@_push_(p, 1, n, -1, n + 1, pos, 0);
+        }
     }
 }
 
 /* Steps of a stretch not yet handed to the step path. */
-static uint32_t @T@_count_(const @T@_stretch_t *s)
+static uint32_t @T@_count_(const @T@_stretch_t *s) STEPPER_PROFILES_REENTRANT
 {
     return ((uint32_t)s->count_hi << 16) | s->count_lo;
 }
 
 /* Hands `n` steps of stretch `s` to the step path: at most 255 at once. */
-static void @T@_take_(@T@_t *p, @T@_stretch_t *s, uint16_t n)
+static void @T@_take_(@T@_t *p, @T@_stretch_t *s, uint16_t n) STEPPER_PROFILES_REENTRANT
 {
-    uint32_t count = @T@_count_(s) - n;
+    STEPPER_PROFILES_LOCAL uint32_t count;
+    count = @T@_count_(s) - n;
     s->count_hi = (uint16_t)(count >> 16);
     s->count_lo = (uint16_t)count;
     p->left = (unsigned char)(n > 255 ? 255 : n);
@@ -123,9 +123,10 @@ static void @T@_take_(@T@_t *p, @T@_stretch_t *s, uint16_t n)
 }
 
 /* Follows the plan from its start: its first steps taken at once. */
-static void @T@_follow_(@T@_t *p, uint32_t before)
+static void @T@_follow_(@T@_t *p, uint32_t before) STEPPER_PROFILES_REENTRANT
 {
     p->before = before;
+    @T@_settle_(p);
     p->cur = p->plan;
     p->end = p->plan + p->len;
     p->left = 0;
@@ -139,10 +140,11 @@ static void @T@_follow_(@T@_t *p, uint32_t before)
     }
 }
 
-uint32_t @T@_remaining(const @T@_t *p)
+uint32_t @T@_remaining(const @T@_t *p) STEPPER_PROFILES_REENTRANT
 {
-    uint32_t n = (uint32_t)p->left + p->rest;
-    unsigned char i;
+    STEPPER_PROFILES_LOCAL uint32_t n;
+    STEPPER_PROFILES_LOCAL unsigned char i;
+    n = (uint32_t)p->left + p->rest;
     for (i = 0; i < p->len; i++) {
         n += @T@_count_(&p->plan[i]);
     }
@@ -150,7 +152,7 @@ uint32_t @T@_remaining(const @T@_t *p)
 }
 
 /* Steps of the stretch being played that have been played. */
-static uint32_t @T@_played_(const @T@_t *p)
+static uint32_t @T@_played_(const @T@_t *p) STEPPER_PROFILES_REENTRANT
 {
     return p->cur->total - @T@_count_(p->cur) - p->rest - p->left;
 }
@@ -158,9 +160,11 @@ static uint32_t @T@_played_(const @T@_t *p)
 /* Where the acceleration side stands after the steps played, and whether the
  * deceleration table has taken over. */
 static uint32_t @T@_acc_(const @T@_t *p, unsigned char *decelerating)
+    STEPPER_PROFILES_REENTRANT
 {
-    const @T@_stretch_t *s = p->cur;
-    uint32_t played;
+    STEPPER_PROFILES_LOCAL const @T@_stretch_t *s;
+    STEPPER_PROFILES_LOCAL uint32_t played;
+    s = p->cur;
     *decelerating = 0;
     if (s >= p->end) {
         return 0;
@@ -172,7 +176,7 @@ static uint32_t @T@_acc_(const @T@_t *p, unsigned char *decelerating)
 
 /* The period of the last step played, in ticks (0 at rest). Nothing of a plan
  * is played only right after it is made: then the period played before. */
-static uint32_t @T@_last_period_(const @T@_t *p)
+static uint32_t @T@_last_period_(const @T@_t *p) STEPPER_PROFILES_REENTRANT
 {
     if (p->cur >= p->end || @T@_played_(p) == 0) {
         return p->before;
@@ -185,9 +189,11 @@ static uint32_t @T@_last_period_(const @T@_t *p)
  * bisection for `k` steps below the top short by more than the table's
  * slack (a step's period is at most that above any period before it, so
  * every step above is short too), then a walk down from there. */
-static uint32_t @T@_entry_point_(const @T@_t *p, uint32_t current)
+static uint32_t @T@_entry_point_(const @T@_t *p, uint32_t current) STEPPER_PROFILES_REENTRANT
 {
-    uint32_t lo = 0, hi = p->decel_last + 1, mid, pos, t;
+    STEPPER_PROFILES_LOCAL uint32_t lo, hi, mid, pos, t;
+    lo = 0;
+    hi = p->decel_last + 1;
     while (lo < hi) {
         mid = lo + ((hi - lo) >> 1);
         t = @T@_period_(p, 1, p->decel_last - mid);
@@ -204,7 +210,7 @@ static uint32_t @T@_entry_point_(const @T@_t *p, uint32_t current)
     return pos;
 }
 
-void @T@_start(@T@_t *p, uint32_t steps)
+void @T@_start(@T@_t *p, uint32_t steps) STEPPER_PROFILES_REENTRANT
 {
     p->cruise = p->accel_last;
     p->len = 0;
@@ -214,10 +220,10 @@ void @T@_start(@T@_t *p, uint32_t steps)
     @T@_follow_(p, 0);
 }
 
-void @T@_set_cruise(@T@_t *p, uint32_t pos)
+void @T@_set_cruise(@T@_t *p, uint32_t pos) STEPPER_PROFILES_REENTRANT
 {
-    unsigned char decelerating;
-    uint32_t acc, remaining, last;
+    STEPPER_PROFILES_LOCAL unsigned char decelerating;
+    STEPPER_PROFILES_LOCAL uint32_t acc, remaining, last;
     p->cruise = pos < p->accel_last ? pos : p->accel_last;
     acc = @T@_acc_(p, &decelerating);
     remaining = @T@_remaining(p);
@@ -228,10 +234,11 @@ void @T@_set_cruise(@T@_t *p, uint32_t pos)
     }
 }
 
-void @T@_stop(@T@_t *p)
+void @T@_stop(@T@_t *p) STEPPER_PROFILES_REENTRANT
 {
-    unsigned char decelerating;
-    uint32_t remaining = @T@_remaining(p), current, needed, acc;
+    STEPPER_PROFILES_LOCAL unsigned char decelerating;
+    STEPPER_PROFILES_LOCAL uint32_t remaining, current, needed, acc;
+    remaining = @T@_remaining(p);
     if (remaining == 0) {
         return;
     }

@@ -1,5 +1,6 @@
 //! The C player of compressed tables (`NAME_RUNS`): its type, its inline
-//! step path, and what the shared planner asks of it.
+//! step path, and what the shared planner asks of it, on positions along a
+//! table of runs (`cursor.rs`).
 //!
 //! A run is played with the recurrence of `runs::Expand` (`x = frac +
 //! interval; period = x >> 16; frac = x & 0xFFFF; interval += add`), the
@@ -59,23 +60,23 @@ typedef struct {
 /* Plays from `accel` (`accel_runs` runs) up and `decel` (`decel_runs` runs)
  * down, both ordered slow to fast; at rest. */
 void @T@_init(@T@_t *p, const @S@uint16_t (*accel)[5], uint16_t accel_runs,
-    const @S@uint16_t (*decel)[5], uint16_t decel_runs);
+    const @S@uint16_t (*decel)[5], uint16_t decel_runs) STEPPER_PROFILES_REENTRANT;
 /* Starts a move of `steps` steps from rest, cruising at the acceleration
  * table's top. */
-void @T@_start(@T@_t *p, uint32_t steps);
+void @T@_start(@T@_t *p, uint32_t steps) STEPPER_PROFILES_REENTRANT;
 /* Decelerates along the deceleration table from the current speed to rest. */
-void @T@_stop(@T@_t *p);
+void @T@_stop(@T@_t *p) STEPPER_PROFILES_REENTRANT;
 /* Cruises at step `pos` of the acceleration table (clamped to it) instead of
  * its top, walking there one step per step. */
-void @T@_set_cruise(@T@_t *p, uint32_t pos);
+void @T@_set_cruise(@T@_t *p, uint32_t pos) STEPPER_PROFILES_REENTRANT;
 /* Steps left in the move. */
-uint32_t @T@_remaining(const @T@_t *p);
+uint32_t @T@_remaining(const @T@_t *p) STEPPER_PROFILES_REENTRANT;
 
 /* The next run of the plan to the step path (at most 255 steps of it at
  * once); 0 when the plan is played. Called by the step path at a run's end:
  * out of line, so that a step interrupt saves for the step path only the
  * registers the call may change. */
-unsigned char @T@_refill_(@T@_t *p);
+unsigned char @T@_refill_(@T@_t *p) STEPPER_PROFILES_REENTRANT;
 
 /* Plays the next step: writes its period, in ticks, to `*period` and returns
  * 1, or returns 0 once the move is done. A countdown and the run's additions
@@ -83,6 +84,7 @@ unsigned char @T@_refill_(@T@_t *p);
  * multiplication. At a run's end, and every 255 steps, a refill. The form a
  * step interrupt costs least with. */
 STEPPER_PROFILES_INLINE unsigned char @T@_step(@T@_t *p, uint16_t *period)
+    STEPPER_PROFILES_REENTRANT
 {
     uint32_t interval, x;
     unsigned char left = p->left;
@@ -102,7 +104,7 @@ STEPPER_PROFILES_INLINE unsigned char @T@_step(@T@_t *p, uint16_t *period)
 }
 
 /* The period of the next step, in ticks; 0 once the move is done. */
-STEPPER_PROFILES_INLINE uint16_t @T@_next(@T@_t *p)
+STEPPER_PROFILES_INLINE uint16_t @T@_next(@T@_t *p) STEPPER_PROFILES_REENTRANT
 {
     uint16_t period;
     return @T@_step(p, &period) ? period : 0;
@@ -110,11 +112,10 @@ STEPPER_PROFILES_INLINE uint16_t @T@_next(@T@_t *p)
 
 "#;
 
-/// The refill, positions along a table of runs, and the definitions the
-/// shared planner uses.
-pub(super) const DEFINITIONS: &str = r#"/* Two words of a run as one 32-bit value, high word first; one read per
+/// The refill, which the step path calls at a run's end.
+pub(super) const REFILL: &str = r#"/* Two words of a run as one 32-bit value, high word first; one read per
  * statement, whatever the read macro does. */
-STEPPER_PROFILES_INLINE uint32_t @T@_word32_(const @S@uint16_t *w)
+STEPPER_PROFILES_INLINE uint32_t @T@_word32_(const @S@uint16_t *w) STEPPER_PROFILES_REENTRANT
 {
     uint32_t high = @R@(w);
     return (high << 16) | @R@(w + 1);
@@ -122,6 +123,7 @@ STEPPER_PROFILES_INLINE uint32_t @T@_word32_(const @S@uint16_t *w)
 
 /* Hands the step path `n` steps, at most 255 at once; the rest later. */
 STEPPER_PROFILES_INLINE unsigned char @T@_pieces_(@T@_t *p, uint16_t n)
+    STEPPER_PROFILES_REENTRANT
 {
     p->left = (unsigned char)(n > 255 ? 255 : n);
     p->rest = (uint16_t)(n - p->left);
@@ -130,6 +132,7 @@ STEPPER_PROFILES_INLINE unsigned char @T@_pieces_(@T@_t *p, uint16_t n)
 
 /* At most `n` steps of stretch `s`, taken from its count. */
 STEPPER_PROFILES_INLINE uint16_t @T@_count_down_(@T@_stretch_t *s, uint16_t n)
+    STEPPER_PROFILES_REENTRANT
 {
     if (s->count_hi == 0 && n > s->count_lo) {
         n = s->count_lo;
@@ -144,6 +147,7 @@ STEPPER_PROFILES_INLINE uint16_t @T@_count_down_(@T@_stretch_t *s, uint16_t n)
 /* The step path enters the next stretch with steps, from the state planned
  * for it; 0 when the plan is played. */
 STEPPER_PROFILES_NOINLINE static unsigned char @T@_next_stretch_(@T@_t *p)
+    STEPPER_PROFILES_REENTRANT
 {
     @T@_stretch_t *s = p->cur;
     do {
@@ -160,9 +164,12 @@ STEPPER_PROFILES_NOINLINE static unsigned char @T@_next_stretch_(@T@_t *p)
 }
 
 /* The step path enters the run before its run, backwards: from its last
- * step, whose interval is interval + (count - 1) * add (by shifts and
- * additions), with -add. */
+ * step, whose interval is interval + (count - 1) * add, with -add. On SDCC's
+ * 8051 port the product is shifts and additions: its library multiplies
+ * longs through an operand in static memory, which the step interrupt would
+ * overwrite under a multiplication it interrupts. */
 STEPPER_PROFILES_NOINLINE static unsigned char @T@_backwards_(@T@_t *p)
+    STEPPER_PROFILES_REENTRANT
 {
     const @S@uint16_t *r = p->run;
     uint32_t interval, add;
@@ -176,13 +183,22 @@ STEPPER_PROFILES_NOINLINE static unsigned char @T@_backwards_(@T@_t *p)
     add = @T@_word32_(r + 3);
     p->add = 0 - add;
     m = (uint16_t)(n - 1u);
-    p->interval = interval + m * add;
+#if defined(__SDCC_mcs51)
+    for (; m != 0; m >>= 1, add <<= 1) {
+        if (m & 1u) {
+            interval += add;
+        }
+    }
+#else
+    interval += m * add;
+#endif
+    p->interval = interval;
     return @T@_pieces_(p, @T@_count_down_(p->cur, n));
 }
 
 /* The step path's refill. Most often the next run forwards: its five words
  * read, 16-bit counts. */
-unsigned char @T@_refill_(@T@_t *p)
+unsigned char @T@_refill_(@T@_t *p) STEPPER_PROFILES_REENTRANT
 {
     const @S@uint16_t *r;
     uint16_t n = p->rest;
@@ -213,191 +229,29 @@ unsigned char @T@_refill_(@T@_t *p)
     return 1;
 }
 
-/* A position along a table of runs: its run, its step in the run, the
- * remainder before it and its interval; its run's add and count, read once
- * (add 0 past the table). */
-typedef struct {
-    uint32_t pos;
-    uint32_t interval;
-    uint32_t add;
-    uint16_t entry;
-    uint16_t within;
-    uint16_t frac;
-    uint16_t count;
-    unsigned char in_table;
-} @T@_cursor_t;
+"#;
 
-/* Run `e` of a table, decoded; 0 past its end. */
-static unsigned char @T@_run_(const @T@_t *p, unsigned char decel, uint32_t e,
-    uint16_t *count, uint32_t *interval, uint32_t *add)
+/// Where a stretch starts and the definitions the shared planner uses,
+/// after the positions along a table of runs (`cursor.rs`).
+pub(super) const DEFINITIONS: &str = r#"/* Where a stretch starts, noted in its interval until the plan is made:
+ * `_settle_` finds the state it plays from then, so that the search for it
+ * runs below the planner's call, not below the planner's own calls. */
+static void @T@_place_(@T@_t *p, @T@_stretch_t *s, uint32_t pos) STEPPER_PROFILES_REENTRANT
 {
-    const @S@uint16_t *r;
-    if (e >= (decel ? p->decel_runs : p->accel_runs)) {
-        return 0;
-    }
-    r = (decel ? p->decel : p->accel)[e];
-    *count = @R@(r);
-    *interval = @T@_word32_(r + 1);
-    *add = @T@_word32_(r + 3);
-    return 1;
-}
-
-/* The remainder `n` steps of a run later: frac + n * interval +
- * n (n - 1) / 2 * add, of which only the low 16 bits count, so 16-bit
- * products (the triangle's halved factor chosen by parity). */
-static uint16_t @T@_ahead_(uint16_t frac, uint16_t interval, uint16_t add, uint16_t n)
-{
-    uint16_t triangle = (n & 1u) ? (uint16_t)((unsigned)n * (uint16_t)((n - 1u) >> 1))
-                                 : (uint16_t)((unsigned)(n >> 1) * (uint16_t)(n - 1u));
-    return (uint16_t)(frac + (unsigned)n * interval + (unsigned)triangle * add);
-}
-
-/* The cursor at step `pos` of a table; 0 past its end. The runs before it
- * move the remainder on: their counts and low words only. */
-static unsigned char @T@_at_(const @T@_t *p, unsigned char decel, uint32_t pos,
-    @T@_cursor_t *c)
-{
-    const @S@uint16_t (*table)[5] = decel ? p->decel : p->accel;
-    uint32_t e, runs = decel ? p->decel_runs : p->accel_runs, start = 0, interval, add;
-    uint16_t count, low, frac = 0x8000u;
-    for (e = 0; e < runs; e++) {
-        count = @R@(table[e]);
-        if (pos - start < count) {
-            @T@_run_(p, decel, e, &count, &interval, &add);
-            c->add = add;
-            c->count = count;
-            c->in_table = 1;
-            c->pos = pos;
-            c->entry = (uint16_t)e;
-            c->within = (uint16_t)(pos - start);
-            c->frac = @T@_ahead_(frac, (uint16_t)interval, (uint16_t)add, c->within);
-            c->interval = interval + (uint32_t)c->within * add;
-            return 1;
-        }
-        low = @R@(table[e] + 2);
-        frac = @T@_ahead_(frac, low, @R@(table[e] + 4), count);
-        start = start + count < start ? 0xFFFFFFFFul : start + count;
-        if (start > pos) {
-            return 0;
-        }
-    }
-    return 0;
-}
-
-/* The period under a cursor, in ticks. */
-static uint32_t @T@_cperiod_(const @T@_cursor_t *c)
-{
-    return (c->frac + c->interval) >> 16;
-}
-
-/* The cursor at step `pos`, or at step 0 of the first run with nothing
- * played (period 0) when there is no such step. */
-static void @T@_place_cursor_(const @T@_t *p, unsigned char decel, uint32_t pos,
-    @T@_cursor_t *c)
-{
-    uint32_t interval;
-    if (!@T@_at_(p, decel, pos, c)) {
-        c->pos = 0;
-        c->interval = 0;
-        c->entry = 0;
-        c->within = 0;
-        c->frac = 0;
-        c->in_table = @T@_run_(p, decel, 0, &c->count, &interval, &c->add);
-        if (!c->in_table) {
-            c->add = 0;
-        }
-    }
-}
-
-/* On to the first step of the next run that holds one, the remainder
- * carried. */
-static void @T@_next_run_(const @T@_t *p, unsigned char decel, @T@_cursor_t *c)
-{
-    uint16_t count;
-    uint32_t interval, add;
-    c->within = 0;
-    for (;;) {
-        c->entry++;
-        if (!@T@_run_(p, decel, c->entry, &count, &interval, &add)) {
-            c->add = 0;
-            c->in_table = 0;
-            break;
-        }
-        if (count > 0) {
-            c->interval = interval;
-            c->add = add;
-            c->count = count;
-            break;
-        }
-    }
-}
-
-/* One step towards the fast end, up to step `last`; 0 at `last`. */
-static unsigned char @T@_forward_(const @T@_t *p, unsigned char decel, @T@_cursor_t *c,
-    uint32_t last)
-{
-    if (c->pos >= last) {
-        return 0;
-    }
-    c->pos++;
-    c->within++;
-    c->frac = (uint16_t)(c->frac + c->interval);
-    c->interval += c->add;
-    if (c->in_table && c->within >= c->count) {
-        @T@_next_run_(p, decel, c);
-    }
-    return 1;
-}
-
-/* One step towards the slow end: within the run, or to the last step of the
- * previous run that holds one; 0 at step 0. */
-static unsigned char @T@_backward_(const @T@_t *p, unsigned char decel, @T@_cursor_t *c)
-{
-    uint16_t count;
-    uint32_t interval, add;
-    if (c->pos == 0) {
-        return 0;
-    }
-    c->pos--;
-    if (c->within > 0) {
-        c->within--;
-        c->interval -= c->add;
-        c->frac = (uint16_t)(c->frac - c->interval);
-        return 1;
-    }
-    while (c->entry > 0) {
-        c->entry--;
-        if (!@T@_run_(p, decel, c->entry, &count, &interval, &add)) {
-            break;
-        }
-        if (count > 0) {
-            c->within = (uint16_t)(count - 1u);
-            c->interval = interval + (uint32_t)c->within * add;
-            c->frac = (uint16_t)(c->frac - c->interval);
-            c->add = add;
-            c->count = count;
-            c->in_table = 1;
-            break;
-        }
-    }
-    return 1;
-}
-
-/* The period at step `pos` of a table, in ticks; 0 past its end. */
-static uint32_t @T@_period_(const @T@_t *p, unsigned char decel, uint32_t pos)
-{
-    @T@_cursor_t c;
-    return @T@_at_(p, decel, pos, &c) ? @T@_cperiod_(&c) : 0;
+    (void)p;
+    s->interval = pos;
 }
 
 /* The state a stretch starting at step `pos` plays its first run from: its
  * first step's remainder and interval forwards; backwards the complement of
  * the remainder after it and `-add`; held, its period with no remainder. */
-static void @T@_place_(@T@_t *p, @T@_stretch_t *s, uint32_t pos)
+static void @T@_locate_(@T@_t *p, @T@_stretch_t *s, uint32_t pos) STEPPER_PROFILES_REENTRANT
 {
-    @T@_cursor_t c;
-    uint32_t n;
-    @T@_place_cursor_(p, s->decel, pos, &c);
+    STEPPER_PROFILES_LOCAL @T@_cursor_t c;
+    STEPPER_PROFILES_LOCAL uint32_t n;
+    c.decel = s->decel;
+    c.pos = pos;
+    @T@_place_cursor_(p, &c);
     s->run = (s->decel ? p->decel : p->accel)[c.entry];
     if (s->dir > 0) {
         n = c.in_table ? c.count : s->total;
@@ -422,8 +276,17 @@ static void @T@_place_(@T@_t *p, @T@_stretch_t *s, uint32_t pos)
     s->first = n > 0xFFFFu ? 0xFFFFu : (uint16_t)n;
 }
 
+/* The state every stretch of the plan plays from, once the plan is made. */
+static void @T@_settle_(@T@_t *p) STEPPER_PROFILES_REENTRANT
+{
+    STEPPER_PROFILES_LOCAL unsigned char i;
+    for (i = 0; i < p->len; i++) {
+        @T@_locate_(p, &p->plan[i], p->plan[i].interval);
+    }
+}
+
 /* The step path enters stretch `s`, from the state planned for it. */
-static void @T@_enter_(@T@_t *p, const @T@_stretch_t *s)
+static void @T@_enter_(@T@_t *p, const @T@_stretch_t *s) STEPPER_PROFILES_REENTRANT
 {
     p->interval = s->interval;
     p->add = s->add;
@@ -432,14 +295,14 @@ static void @T@_enter_(@T@_t *p, const @T@_stretch_t *s)
 }
 
 /* Steps of stretch `s` the step path takes first. */
-static uint16_t @T@_first_(const @T@_stretch_t *s)
+static uint16_t @T@_first_(const @T@_stretch_t *s) STEPPER_PROFILES_REENTRANT
 {
     return s->first;
 }
 
 /* The period of the step played last, from the step path's state: the
  * interval before the last addition and the remainder after it. */
-static uint32_t @T@_last_(const @T@_t *p)
+static uint32_t @T@_last_(const @T@_t *p) STEPPER_PROFILES_REENTRANT
 {
     return (p->interval - p->add - p->frac + 0xFFFFul) >> 16;
 }
@@ -448,20 +311,25 @@ static uint32_t @T@_last_(const @T@_t *p)
  * the steps that remain, is not faster than the acceleration side walking
  * from `pos` towards the cruise position; `r` if none is. */
 static uint32_t @T@_crossing_(const @T@_t *p, uint32_t pos, uint32_t r)
+    STEPPER_PROFILES_REENTRANT
 {
-    @T@_cursor_t d, a;
-    uint32_t j;
-    @T@_place_cursor_(p, 1, r - 1, &d);
-    @T@_place_cursor_(p, 0, pos, &a);
+    STEPPER_PROFILES_LOCAL @T@_cursor_t d, a;
+    STEPPER_PROFILES_LOCAL uint32_t j;
+    d.decel = 1;
+    d.pos = r - 1;
+    @T@_place_cursor_(p, &d);
+    a.decel = 0;
+    a.pos = pos;
+    @T@_place_cursor_(p, &a);
     for (j = 0; j < r; j++) {
         if (@T@_cperiod_(&d) >= @T@_cperiod_(&a)) {
             return j;
         }
-        @T@_backward_(p, 1, &d);
+        @T@_backward_(p, &d);
         if (a.pos < p->cruise) {
-            @T@_forward_(p, 0, &a, p->accel_last);
+            @T@_forward_(p, &a, p->accel_last);
         } else if (a.pos > p->cruise) {
-            @T@_backward_(p, 0, &a);
+            @T@_backward_(p, &a);
         }
     }
     return r;
@@ -470,13 +338,17 @@ static uint32_t @T@_crossing_(const @T@_t *p, uint32_t pos, uint32_t r)
 /* Steps in a row, from `pos` walking down to the cruise position, whose
  * period is faster than the deceleration table's fastest (at least 1). */
 static uint32_t @T@_capped_walk_(const @T@_t *p, uint32_t pos, uint32_t far)
+    STEPPER_PROFILES_REENTRANT
 {
-    @T@_cursor_t c;
-    uint32_t n = 0;
-    @T@_place_cursor_(p, 0, pos, &c);
+    STEPPER_PROFILES_LOCAL @T@_cursor_t c;
+    STEPPER_PROFILES_LOCAL uint32_t n;
+    n = 0;
+    c.decel = 0;
+    c.pos = pos;
+    @T@_place_cursor_(p, &c);
     while (n < far && c.pos > p->cruise && @T@_cperiod_(&c) < p->decel_fastest) {
         n++;
-        @T@_backward_(p, 0, &c);
+        @T@_backward_(p, &c);
     }
     return n > 0 ? n : 1;
 }
@@ -487,23 +359,31 @@ static uint32_t @T@_capped_walk_(const @T@_t *p, uint32_t pos, uint32_t far)
 /// the deceleration table's fastest period (its whole expansion) and the
 /// first acceleration step faster than it.
 pub(super) const INIT: &str = r#"void @T@_init(@T@_t *p, const @S@uint16_t (*accel)[5], uint16_t accel_runs,
-    const @S@uint16_t (*decel)[5], uint16_t decel_runs)
+    const @S@uint16_t (*decel)[5], uint16_t decel_runs) STEPPER_PROFILES_REENTRANT
 {
-    @T@_cursor_t c;
-    uint32_t e, steps, interval, add, x, fastest = 0, slack = 0;
-    uint16_t count, k, frac = 0x8000u;
-    unsigned char seen = 0;
+    STEPPER_PROFILES_LOCAL @T@_cursor_t c;
+    STEPPER_PROFILES_LOCAL const @S@uint16_t *r;
+    STEPPER_PROFILES_LOCAL uint32_t steps, interval, add, x, fastest, slack;
+    STEPPER_PROFILES_LOCAL uint16_t e, count, k, frac;
+    STEPPER_PROFILES_LOCAL unsigned char seen;
+    fastest = 0;
+    slack = 0;
+    frac = 0x8000u;
+    seen = 0;
     p->accel = accel;
     p->decel = decel;
     p->accel_runs = accel_runs;
     p->decel_runs = decel_runs;
     for (steps = 0, e = 0; e < accel_runs; e++) {
-        @T@_run_(p, 0, e, &count, &interval, &add);
+        count = @R@(accel[e]);
         steps = steps + count < steps ? 0xFFFFFFFFul : steps + count;
     }
     p->accel_last = steps > 0 ? steps - 1 : 0;
     for (steps = 0, e = 0; e < decel_runs; e++) {
-        @T@_run_(p, 1, e, &count, &interval, &add);
+        r = decel[e];
+        count = @R@(r);
+        interval = @T@_word32_(r + 1);
+        add = @T@_word32_(r + 3);
         steps = steps + count < steps ? 0xFFFFFFFFul : steps + count;
         for (k = 0; k < count; k++) {
             x = frac + interval;
@@ -522,19 +402,27 @@ pub(super) const INIT: &str = r#"void @T@_init(@T@_t *p, const @S@uint16_t (*acc
     p->decel_fastest = fastest;
     p->decel_slack = slack;
     p->cap = 0xFFFFFFFFul;
-    if (@T@_at_(p, 0, 0, &c)) {
+    c.decel = 0;
+    c.pos = 0;
+    if (@T@_at_(p, &c)) {
         for (;;) {
             if (@T@_cperiod_(&c) < fastest) {
                 p->cap = c.pos;
                 break;
             }
-            if (!@T@_forward_(p, 0, &c, p->accel_last)) {
+            if (!@T@_forward_(p, &c, p->accel_last)) {
                 break;
             }
         }
     }
     p->cruise = p->accel_last;
-    p->empty = (unsigned char)(!@T@_at_(p, 0, 0, &c) || !@T@_at_(p, 1, 0, &c));
+    c.pos = 0;
+    p->empty = (unsigned char)!@T@_at_(p, &c);
+    c.decel = 1;
+    c.pos = 0;
+    if (!p->empty) {
+        p->empty = (unsigned char)!@T@_at_(p, &c);
+    }
     p->len = 0;
     @T@_follow_(p, 0);
 }

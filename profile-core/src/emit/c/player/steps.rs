@@ -46,21 +46,21 @@ typedef struct {
 /* Plays from `accel` (`accel_len` entries) up and `decel` (`decel_len`
  * entries) down, both ordered slow to fast; at rest. */
 void @T@_init(@T@_t *p, const @S@@W@ *accel, uint32_t accel_len,
-    const @S@@W@ *decel, uint32_t decel_len);
+    const @S@@W@ *decel, uint32_t decel_len) STEPPER_PROFILES_REENTRANT;
 /* Starts a move of `steps` steps from rest, cruising at the acceleration
  * table's top. */
-void @T@_start(@T@_t *p, uint32_t steps);
+void @T@_start(@T@_t *p, uint32_t steps) STEPPER_PROFILES_REENTRANT;
 /* Decelerates along the deceleration table from the current speed to rest. */
-void @T@_stop(@T@_t *p);
+void @T@_stop(@T@_t *p) STEPPER_PROFILES_REENTRANT;
 /* Cruises at entry `pos` of the acceleration table (clamped to it) instead of
  * its top, walking there one entry per step. */
-void @T@_set_cruise(@T@_t *p, uint32_t pos);
+void @T@_set_cruise(@T@_t *p, uint32_t pos) STEPPER_PROFILES_REENTRANT;
 /* Steps left in the move. */
-uint32_t @T@_remaining(const @T@_t *p);
+uint32_t @T@_remaining(const @T@_t *p) STEPPER_PROFILES_REENTRANT;
 
 /* The next steps of the plan to the step path (at most 255); 0 when the plan
  * is played. 16-bit arithmetic only. */
-STEPPER_PROFILES_INLINE unsigned char @T@_refill_(@T@_t *p)
+STEPPER_PROFILES_INLINE unsigned char @T@_refill_(@T@_t *p) STEPPER_PROFILES_REENTRANT
 {
     uint16_t n = p->rest;
     if (n == 0) {
@@ -97,6 +97,7 @@ STEPPER_PROFILES_INLINE unsigned char @T@_refill_(@T@_t *p)
  * the move changes stretch (a few times a move), a refill. The form a step
  * interrupt costs least with. */
 STEPPER_PROFILES_INLINE unsigned char @T@_step(@T@_t *p, @W@ *period)
+    STEPPER_PROFILES_REENTRANT
 {
     const @S@@W@ *at;
     unsigned char left = p->left;
@@ -114,7 +115,7 @@ STEPPER_PROFILES_INLINE unsigned char @T@_step(@T@_t *p, @W@ *period)
 }
 
 /* The period of the next step, in ticks; 0 once the move is done. */
-STEPPER_PROFILES_INLINE @W@ @T@_next(@T@_t *p)
+STEPPER_PROFILES_INLINE @W@ @T@_next(@T@_t *p) STEPPER_PROFILES_REENTRANT
 {
     @W@ period;
     return @T@_step(p, &period) ? period : 0;
@@ -125,6 +126,7 @@ STEPPER_PROFILES_INLINE @W@ @T@_next(@T@_t *p)
 /// The definitions the shared planner uses.
 pub(super) const DEFINITIONS: &str = r#"/* The period at step `pos` of a table, in ticks; 0 past its end. */
 static uint32_t @T@_period_(const @T@_t *p, unsigned char decel, uint32_t pos)
+    STEPPER_PROFILES_REENTRANT
 {
     if (decel) {
         return pos < p->decel_len ? (uint32_t)@R@(p->decel + pos) : 0;
@@ -135,26 +137,32 @@ static uint32_t @T@_period_(const @T@_t *p, unsigned char decel, uint32_t pos)
 /* Where a stretch starting at step `pos` reads first: just past it, so that
  * every pointer the step path makes stays within the table (a walk up never
  * reads the top entry; a move down ends just past entry 0). */
-static void @T@_place_(@T@_t *p, @T@_stretch_t *s, uint32_t pos)
+static void @T@_place_(@T@_t *p, @T@_stretch_t *s, uint32_t pos) STEPPER_PROFILES_REENTRANT
 {
     s->first = (s->decel ? p->decel : p->accel) + pos + 1;
 }
 
+/* Every stretch of the plan was placed as it was pushed. */
+static void @T@_settle_(@T@_t *p) STEPPER_PROFILES_REENTRANT
+{
+    (void)p;
+}
+
 /* The step path enters stretch `s`. */
-static void @T@_enter_(@T@_t *p, const @T@_stretch_t *s)
+static void @T@_enter_(@T@_t *p, const @T@_stretch_t *s) STEPPER_PROFILES_REENTRANT
 {
     p->next = s->first;
     p->step = s->dir;
 }
 
 /* Steps of stretch `s` the step path takes first. */
-static uint16_t @T@_first_(const @T@_stretch_t *s)
+static uint16_t @T@_first_(const @T@_stretch_t *s) STEPPER_PROFILES_REENTRANT
 {
     return s->count_hi > 0 ? 0xFFFFu : s->count_lo;
 }
 
 /* The period of the step played last, when one of the stretch has been. */
-static uint32_t @T@_last_(const @T@_t *p)
+static uint32_t @T@_last_(const @T@_t *p) STEPPER_PROFILES_REENTRANT
 {
     return @R@(p->next - p->step - 1);
 }
@@ -163,8 +171,10 @@ static uint32_t @T@_last_(const @T@_t *p)
  * the steps that remain, is not faster than the acceleration side walking
  * from `pos` towards the cruise position; `r` if none is. */
 static uint32_t @T@_crossing_(const @T@_t *p, uint32_t pos, uint32_t r)
+    STEPPER_PROFILES_REENTRANT
 {
-    uint32_t j, d = r - 1, down;
+    STEPPER_PROFILES_LOCAL uint32_t j, d, down;
+    d = r - 1;
     for (j = 0; j < r; j++) {
         if (d >= p->decel_len || pos >= p->accel_len) {
             break;
@@ -182,8 +192,10 @@ static uint32_t @T@_crossing_(const @T@_t *p, uint32_t pos, uint32_t r)
 /* Steps in a row, from `pos` walking down to the cruise position, whose
  * period is faster than the deceleration table's fastest (at least 1). */
 static uint32_t @T@_capped_walk_(const @T@_t *p, uint32_t pos, uint32_t far)
+    STEPPER_PROFILES_REENTRANT
 {
-    uint32_t n = 0;
+    STEPPER_PROFILES_LOCAL uint32_t n;
+    n = 0;
     while (n < far && pos > p->cruise && @T@_period_(p, 0, pos) < p->decel_fastest) {
         n++;
         pos--;
@@ -195,9 +207,11 @@ static uint32_t @T@_capped_walk_(const @T@_t *p, uint32_t pos, uint32_t far)
 
 /// `_init`, after the planner it starts.
 pub(super) const INIT: &str = r#"void @T@_init(@T@_t *p, const @S@@W@ *accel, uint32_t accel_len,
-    const @S@@W@ *decel, uint32_t decel_len)
+    const @S@@W@ *decel, uint32_t decel_len) STEPPER_PROFILES_REENTRANT
 {
-    uint32_t i, fastest = 0, slack = 0, v;
+    STEPPER_PROFILES_LOCAL uint32_t i, fastest, slack, v;
+    fastest = 0;
+    slack = 0;
     p->accel = accel;
     p->decel = decel;
     p->accel_len = accel_len;
