@@ -555,6 +555,11 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
         &self.player
     }
 
+    /// The lead's player, for [`Buffered`](super::Buffered)'s rest.
+    pub(super) fn player_mut(&mut self) -> &mut Player<'a, W, L> {
+        &mut self.player
+    }
+
     fn idle(&self) -> Result<(), Moving> {
         match self.player.remaining() {
             0 if self.then.is_none() => Ok(()),

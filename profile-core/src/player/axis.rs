@@ -345,8 +345,14 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
     #[cold]
     #[inline(never)]
     fn buffered_past_run(&mut self, mut write: impl FnMut(W)) -> bool {
-        let ahead = !self.player.is_ended();
-        self.player.step_past_run(&mut write) || self.then_step(write) || ahead
+        if self.player.is_ended() {
+            // No step ahead of the pin: a move that follows, or rest.
+            return self.player.step_past_run(&mut write)
+                || self.then_step(write)
+                || self.player.rest();
+        }
+        let _ = self.player.step_past_run(&mut write) || self.then_step(write);
+        true
     }
 
     /// The player, to play from.

@@ -14,8 +14,9 @@ mod sealed {
 }
 
 /// What [`Buffered`] plays: one period per call, as [`Player`] and [`Axis`]
-/// hand them out. ([`Axes`](super::Axes) hand out a period and a mask of the axes that
-/// step: `Buffered<Axes>` has its own calls, which hand on both.) Sealed:
+/// hand them out. ([`Axes`](super::Axes) hand out a period and a mask of
+/// the axes that step: `Buffered<Axes>` has its own calls, which hand on
+/// both.) Sealed:
 /// the two are all there is.
 pub trait Steps: sealed::Sealed {
     /// The table's word.
@@ -41,6 +42,13 @@ pub trait Steps: sealed::Sealed {
     /// since.
     #[doc(hidden)]
     fn ended(&self) -> bool;
+    /// The interrupt that ends the move's last interval has come (the
+    /// buffered step has returned `false`), or nothing has played yet.
+    #[doc(hidden)]
+    fn rested(&self) -> bool;
+    /// A move has begun (`false`).
+    #[doc(hidden)]
+    fn set_rested(&mut self, rested: bool);
 }
 
 impl<W: TableWord, L: Layout> sealed::Sealed for Player<'_, W, L> {}
@@ -61,8 +69,14 @@ impl<W: TableWord, L: Layout> Steps for Player<'_, W, L> {
     }
     #[inline]
     fn step_pulsed(&mut self, pulse: impl FnOnce(), write: impl FnMut(W)) -> bool {
-        self.play_pulsed(pulse, write)
-            .taken(|write| self.step_past_run(write))
+        match self.play_pulsed(pulse, write) {
+            Pulsed::Ended => self.rest(),
+            Pulsed::Played => true,
+            Pulsed::Empty(write) => {
+                self.step_past_run(write);
+                true
+            }
+        }
     }
     #[inline]
     fn step_buffered(&mut self, write: impl FnMut(W)) -> bool {
@@ -70,6 +84,12 @@ impl<W: TableWord, L: Layout> Steps for Player<'_, W, L> {
     }
     fn ended(&self) -> bool {
         self.is_ended()
+    }
+    fn rested(&self) -> bool {
+        self.is_rested()
+    }
+    fn set_rested(&mut self, rested: bool) {
+        Player::set_rested(self, rested);
     }
 }
 
@@ -88,9 +108,14 @@ impl<W: TableWord, L: Layout> Steps for Axis<'_, W, L> {
     }
     #[inline]
     fn step_pulsed(&mut self, pulse: impl FnOnce(), mut write: impl FnMut(W)) -> bool {
-        self.player_mut()
-            .play_pulsed(pulse, &mut write)
-            .taken(|write| self.step_past_run(write))
+        match Axis::player_mut(self).play_pulsed(pulse, &mut write) {
+            Pulsed::Ended => Axis::player_mut(self).rest(),
+            Pulsed::Played => true,
+            Pulsed::Empty(write) => {
+                self.step_past_run(write);
+                true
+            }
+        }
     }
     #[inline]
     fn step_buffered(&mut self, write: impl FnMut(W)) -> bool {
@@ -98,6 +123,12 @@ impl<W: TableWord, L: Layout> Steps for Axis<'_, W, L> {
     }
     fn ended(&self) -> bool {
         self.player().is_ended()
+    }
+    fn rested(&self) -> bool {
+        self.player().is_rested()
+    }
+    fn set_rested(&mut self, rested: bool) {
+        Axis::player_mut(self).set_rested(rested);
     }
 }
 
@@ -111,25 +142,8 @@ pub(crate) enum Pulsed<F> {
     Empty(F),
 }
 
-impl<F> Pulsed<F> {
-    /// `true` when a step is taken now; past the run, `past` plays on
-    /// with `write` (its result, whether it found a period, does not
-    /// change that a step is taken now).
-    #[inline(always)]
-    fn taken(self, past: impl FnOnce(F) -> bool) -> bool {
-        match self {
-            Pulsed::Ended => false,
-            Pulsed::Played => true,
-            Pulsed::Empty(write) => {
-                past(write);
-                true
-            }
-        }
-    }
-}
-
-/// A [`Player`], an [`Axis`] or [`Axes`](super::Axes) for a reload register that takes
-/// effect at the next wrap.
+/// A [`Player`], an [`Axis`] or [`Axes`](super::Axes) for a reload
+/// register that takes effect at the next wrap.
 ///
 /// Playing a move on a timer whose reload register takes effect at the next
 /// wrap: SysTick, an STM32 timer's `ARR` with preload on, an AVR timer's
@@ -212,18 +226,19 @@ impl<F> Pulsed<F> {
 /// while stepper.step(|period| loaded.push(period)) {}
 /// assert_eq!(loaded, [2000, 3000]);
 /// ```
+// The stepper first, so that its step path keeps its offsets (an M0 loads
+// a word at most 124 bytes from its base).
 #[derive(Clone, Debug)]
+#[repr(C)]
 pub struct Buffered<S> {
     inner: S,
-    /// For [`Axes`](super::Axes): the mask of the axes that step on the edge whose
-    /// period is in the reload register, its step not taken yet; 0 when
+    /// For [`Axes`](super::Axes): the mask of the axes that step on the
+    /// edge whose period is in the reload register, its step not taken
+    /// yet; 0 when
     /// there is none (never 0 else: the lead steps on every edge). A
     /// [`Player`] or an [`Axis`] says so itself: a step is ahead of the pin
     /// until its step returns `false`.
     ahead: u32,
-    /// At rest: the interrupt that ends the last interval has come (the
-    /// step has returned `false`), or no move has begun.
-    rested: bool,
 }
 
 /// Where the timer stands for a call that may start a move.
@@ -245,11 +260,7 @@ impl<S> Buffered<S> {
     /// since its step last returned `false` has the last of them in the
     /// register, its step not taken.)
     pub fn new(inner: S) -> Self {
-        Buffered {
-            inner,
-            ahead: 0,
-            rested: true,
-        }
+        Buffered { inner, ahead: 0 }
     }
 
     /// The player or axis: what it has handed out is one period ahead of
@@ -274,13 +285,15 @@ impl<S: Steps> Buffered<S> {
         // no step is ahead of the pin.
         let first = self.inner.next_period();
         let next = first.as_ref().and_then(|_| self.inner.next_period());
-        self.rested &= first.is_none();
+        if first.is_some() {
+            self.inner.set_rested(false);
+        }
         (first, next)
     }
 
     /// Where the timer stands.
     fn timer(&self) -> Timer {
-        match (self.inner.ended(), self.rested) {
+        match (self.inner.ended(), self.inner.rested()) {
             (false, _) => Timer::Playing,
             (true, false) => Timer::Last,
             (true, true) => Timer::Rest,
@@ -306,12 +319,9 @@ impl<S: Steps> Buffered<S> {
         // While the player has periods, one is always in the register; then
         // the period in the register, if any, is the last interval,
         // starting now: one kind of the run being played says which.
-        let taken = self.inner.step_buffered(write);
-        // (Folded away on the path that plays a run: it takes a step.)
-        if !taken {
-            self.rested = true;
-        }
-        taken
+        // The player comes to rest on its path past the run, where the
+        // move has ended.
+        self.inner.step_buffered(write)
     }
 
     /// From the timer's interrupt, at the end of an interval: when a step
@@ -323,11 +333,7 @@ impl<S: Steps> Buffered<S> {
     /// [`Buffered::step`] with the pin pulsed first.
     #[inline]
     pub fn pulse_and_step(&mut self, pulse: impl FnOnce(), write: impl FnMut(S::Word)) -> bool {
-        let taken = self.inner.step_pulsed(pulse, write);
-        if !taken {
-            self.rested = true;
-        }
-        taken
+        self.inner.step_pulsed(pulse, write)
     }
 
     /// Steps not yet taken (at most `u32::MAX`).

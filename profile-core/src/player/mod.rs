@@ -148,6 +148,11 @@ pub struct Player<'a, W, L = AnyLayout> {
     endless: bool,
     /// Steps the laps of a run have added to the move since it started.
     extended: u64,
+    /// For [`Buffered`]: the interrupt that ends the last interval has
+    /// come (the buffered step has returned `false`), or nothing has
+    /// played yet; set on the buffered step's path past its run, where
+    /// the move has ended, so that the run's own path does not pay for it.
+    rested: bool,
     layout: PhantomData<L>,
 }
 
@@ -290,6 +295,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             computed: RunState::default(),
             before: 0,
             plan: Plan::EMPTY,
+            rested: true,
             layout: PhantomData,
         }
     }

@@ -150,8 +150,32 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     #[cold]
     #[inline(never)]
     fn buffered_past_run<F: FnOnce(W)>(&mut self, write: F) -> bool {
-        let ahead = !self.is_ended();
-        self.step_past_run(write) || ahead
+        if self.is_ended() {
+            // No step ahead of the pin: the interval that ended was the
+            // move's last.
+            return self.step_past_run(write) || self.rest();
+        }
+        self.step_past_run(write);
+        true
+    }
+
+    /// The buffered step has found the move over: at rest. `false`.
+    #[cold]
+    pub(super) fn rest(&mut self) -> bool {
+        self.rested = true;
+        false
+    }
+
+    /// For [`Buffered`](super::Buffered): at rest, or nothing has played
+    /// ([`Player::rest`]).
+    pub(super) fn is_rested(&self) -> bool {
+        self.rested
+    }
+
+    /// For [`Buffered`](super::Buffered): a move has begun (`false`), or
+    /// the stepper is at rest (`true`).
+    pub(super) fn set_rested(&mut self, rested: bool) {
+        self.rested = rested;
     }
 
     /// The step past the end of the run being played, for

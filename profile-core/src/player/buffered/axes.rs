@@ -53,14 +53,14 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Buffered<Axes<'a, W, N, L>> {
         }
         start.directions = self.inner.move_to(target);
         let first = self.inner.next_step();
-        if self.rested {
+        if self.inner.player().is_rested() {
             // Load the first, start the counter, load the next.
             start.mask = first.map_or(0, |(_, mask)| mask);
             start.first = first.map(|(period, _)| period);
             let next = first.and_then(|_| self.inner.next_step());
             self.ahead = next.map_or(0, |(_, mask)| mask);
             start.next = next.map(|(period, _)| period);
-            self.rested = first.is_none();
+            self.inner.player_mut().set_rested(first.is_none());
         } else {
             // The last interval counting: the first edge follows it.
             self.ahead = first.map_or(0, |(_, mask)| mask);
@@ -102,7 +102,7 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Buffered<Axes<'a, W, N, L>> {
             *ahead = 0;
             // At rest once the interrupt that ends the last interval has
             // come: no edge was ahead.
-            self.rested = now == 0;
+            self.inner.player_mut().set_rested(now == 0);
         }
         now
     }
