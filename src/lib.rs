@@ -10,9 +10,10 @@
 
 // Tables, computed at compile time or at run time (no_std).
 pub use profile_core::{
-    AccelWindows, Arithmetic, CheckedSpec, Curve, Discretization, Error, Exponential,
-    ExponentialExtent, Figures, JerkLimited, Key, Linear, LinearExtent, MAX_FLEXIBLE, MAX_LEN,
-    Rounding, SegmentFigures, Sigmoid, Spec, TableWord, ThreeStage, Timer, Word,
+    AccelCurve, AccelWindows, Arithmetic, CheckedSpec, Curve, Discretization, Error, Exponential,
+    ExponentialExtent, Figures, JerkLimited, Key, Linear, LinearExtent, MAX_ACCEL_POINTS,
+    MAX_FLEXIBLE, MAX_LEN, MAX_MARGIN, Rounding, SegmentFigures, Sigmoid, Spec, TableWord,
+    ThreeStage, Timer, TorqueLimited, Word,
 };
 // Playing tables, compressed runs, the motor and its simulation (no_std).
 #[doc(inline)]

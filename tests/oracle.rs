@@ -29,8 +29,8 @@ use test_support as common;
 use common::lcg::Lcg;
 use common::oracle::{self, Model};
 use stepper_profiles::{
-    Curve, Discretization, Error, Exponential, ExponentialExtent, JerkLimited, Linear,
-    LinearExtent, MAX_LEN, Rounding, Sigmoid, Spec, ThreeStage, Timer, Word, runs,
+    AccelCurve, Curve, Discretization, Error, Exponential, ExponentialExtent, JerkLimited, Linear,
+    LinearExtent, MAX_LEN, Rounding, Sigmoid, Spec, ThreeStage, Timer, TorqueLimited, Word, runs,
 };
 
 /// What the oracle and production may differ by on an edge `e` ticks from
@@ -205,6 +205,38 @@ fn random_jerk_limited(rng: &mut Lcg) -> Spec {
         fmax,
         accel,
         jerk,
+    });
+    spec(curve, timer, rng, false)
+}
+
+/// A torque-limited ramp: an acceleration curve of 2 to 8 points over
+/// `fmin` to `fmax` (and sometimes beyond), falling or rising between
+/// them, scaled so that the ramp takes about a random step count.
+fn random_torque_limited(rng: &mut Lcg) -> Spec {
+    let (timer, fmin, fmax) = timer_and_range(rng, 1e3);
+    let n = 2 + (rng.next_unit() * 7.0) as usize;
+    let (lo, hi) = (
+        fmin * (1.0 - 0.5 * rng.next_unit()),
+        fmax * (1.0 + rng.next_unit()),
+    );
+    let mut freqs: Vec<f64> = (0..n.saturating_sub(2))
+        .map(|_| lo + (hi - lo) * rng.next_unit())
+        .collect();
+    freqs.push(lo);
+    freqs.push(hi);
+    freqs.sort_by(f64::total_cmp);
+    freqs.dedup();
+    // About `steps` steps at the mean acceleration.
+    let mean = (fmax - fmin) * (fmax + fmin) / (2.0 * steps(rng));
+    let points: Vec<(f64, f64)> = freqs
+        .iter()
+        .map(|&f| (f, mean * rng.log_uniform(0.05, 3.0)))
+        .collect();
+    let curve = Curve::TorqueLimited(TorqueLimited {
+        fmin,
+        fmax,
+        margin: 0.5,
+        accel: AccelCurve::new(&points).expect("at most 8 points"),
     });
     spec(curve, timer, rng, false)
 }
@@ -550,6 +582,11 @@ fn three_stage_tables_agree_with_the_oracle() {
 #[test]
 fn jerk_limited_tables_agree_with_the_oracle() {
     run("jerk_limited", 0x1e_4c, random_jerk_limited);
+}
+
+#[test]
+fn torque_limited_tables_agree_with_the_oracle() {
+    run("torque_limited", 0x70_2c, random_torque_limited);
 }
 
 /// Profiles at the edges of the domain that once gave wrong tables (an

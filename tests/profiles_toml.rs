@@ -295,6 +295,7 @@ fn every_profile_three_ways() {
         runs!(p, microstep_runs),
         steps!(p, three_stage),
         steps!(p, jerk_limited),
+        steps!(p, torque_limited),
     ];
     let in_file: Vec<&str> = profiles
         .profiles()

@@ -35,7 +35,7 @@ mod include;
 ///
 /// | key | value | default |
 /// | --- | --- | --- |
-/// | `curve` | `sigmoid`, `exponential`, `linear`, `three_stage`, `jerk_limited` | required |
+/// | `curve` | `sigmoid`, `exponential`, `linear`, `three_stage`, `jerk_limited`, `torque_limited` | required |
 /// | `timer_hz` | timer tick rate after the prescaler | required |
 /// | `word` | `u16`, `u32`: the reload register's width | `u16` |
 /// | `ticks_per_step` | `1`, or `2` when the timer toggles the pin (each entry a half period, played twice: step edges fall on every other tick, within one tick of the curve; the edge figures and `compress` are in timer ticks at the step edges) | `1` |
@@ -56,10 +56,11 @@ mod include;
 /// | `linear` | `fmin`, `fmax`, and `len` or `accel` (Hz/s) |
 /// | `three_stage` | `fmin`, `fmax`, `accel` (Hz/s), `f1`, `f2` (where the stages meet), `shape` (1/s) |
 /// | `jerk_limited` | `fmin`, `fmax`, `accel` (Hz/s), `jerk` (Hz/s²) |
+/// | `torque_limited` | `fmax`, `margin` (above 0, at most 0.99), optionally `fmin`; needs a motor (below): at every speed the acceleration is `margin` times the torque the motor has to spare there (its pull-out torque over `safety`, less friction and damping) over the inertia. Without `fmin`, the start is the fastest the start-from-rest check accepts |
 ///
 /// Where the length follows from the parameters (`tau`, `accel`,
-/// `three_stage`, `jerk_limited`), the table has as many entries as the ramp
-/// takes steps to reach `fmax`.
+/// `three_stage`, `jerk_limited`, `torque_limited`), the table has as many
+/// entries as the ramp takes steps to reach `fmax`.
 ///
 /// A motor, to check at compile time that it can follow the table (each
 /// step's torque against the pull-out curve; a ramp it cannot follow is a

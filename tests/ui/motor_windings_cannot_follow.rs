@@ -1,6 +1,6 @@
 use stepper_profiles::period_table;
 
-// A TRINAMIC QSH4218-47-28-040's windings on a 6 V supply: above 6000 full
+// A TRINAMIC QSH4218-47-28-040's windings on a 6 V supply: above 3400 full
 // steps/s the derived pull-out torque falls below what the ramp needs.
 static T: [u16; 64] = period_table!(
     curve = linear, fmin = 300, fmax = 9000, accel = 100_000, timer_hz = 10_000_000,

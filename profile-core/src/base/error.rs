@@ -229,6 +229,16 @@ pub enum Error {
         /// The buffer's element type.
         got: Word,
     },
+    /// A `torque_limited` ramp's acceleration curve does not cover
+    /// `fmin` to `fmax` with rising frequencies, or holds an acceleration
+    /// that is not above 0 (at `hz`).
+    AccelCurve {
+        /// The point's frequency, Hz.
+        hz: f64,
+        /// Its acceleration, Hz/s (NaN where the curve's frequencies are at
+        /// fault).
+        accel: f64,
+    },
     /// The pulse-time solver did not converge within its iteration bound.
     NoConvergence {
         /// The step whose time was being solved.
@@ -269,6 +279,7 @@ impl Error {
             | Error::CompressUnreachable { .. } => Some(Key::COMPRESS),
             Error::BufferLength { .. } | Error::WordMismatch { .. } => None,
             Error::NoConvergence { .. } => None,
+            Error::AccelCurve { .. } => Some(Key::FMAX),
         }
     }
 }
@@ -361,6 +372,19 @@ impl fmt::Display for Error {
             ),
             Error::WordMismatch { expected, got } => word_mismatch(f, expected, got),
             Error::NoConvergence { index, iterations } => no_convergence(f, index, iterations),
+            Error::AccelCurve { hz, accel } if accel.is_nan() => write!(
+                f,
+                "the acceleration curve must have rising frequencies from `fmin` or below to \
+                 `fmax` or above (its first point is at {} Hz)",
+                Num(hz)
+            ),
+            Error::AccelCurve { hz, accel } => write!(
+                f,
+                "the acceleration at {} Hz must be above 0 (got {} Hz/s): the motor has no \
+                 torque to spare there",
+                Num(hz),
+                Num(accel)
+            ),
         }
     }
 }

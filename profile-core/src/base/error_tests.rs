@@ -266,6 +266,20 @@ fn examples() -> Vec<(Error, &'static str)> {
             },
             "no run of 16-bit periods keeps pulse edge 12 within 0.5 ticks of the curve; raise `compress`",
         ),
+        (
+            Error::AccelCurve {
+                hz: 2500.0,
+                accel: -40.0,
+            },
+            "the acceleration at 2500 Hz must be above 0 (got -40 Hz/s): the motor has no torque to spare there",
+        ),
+        (
+            Error::AccelCurve {
+                hz: 300.0,
+                accel: f64::NAN,
+            },
+            "the acceleration curve must have rising frequencies from `fmin` or below to `fmax` or above (its first point is at 300 Hz)",
+        ),
     ]
 }
 
@@ -299,13 +313,14 @@ fn covered(e: &Error) -> usize {
         Error::CompressTooLarge { .. } => 25,
         Error::ReloadOffsetRange { .. } => 26,
         Error::ReloadOffset { .. } => 27,
+        Error::AccelCurve { .. } => 28,
     }
 }
 
 #[test]
 fn every_variant_has_a_pinned_message() {
     let examples = examples();
-    let mut seen = [false; 28];
+    let mut seen = [false; 29];
     for (error, message) in &examples {
         assert_eq!(error.to_string(), *message);
         seen[covered(error)] = true;

@@ -21,6 +21,7 @@ mod jerk_limited;
 mod linear;
 mod sigmoid;
 mod three_stage;
+mod torque_limited;
 
 pub(crate) use kind::{CurveKind, CurveSchema, IndexEntry, Length, Modes, Param, Reader};
 
@@ -71,6 +72,9 @@ macro_rules! curves {
         }
 
         /// A curve and its parameters.
+        // `no_std` and allocation-free: a torque-limited ramp's acceleration
+        // curve is held inline.
+        #[allow(clippy::large_enum_variant)]
         #[derive(Clone, Copy, Debug, PartialEq)]
         #[non_exhaustive]
         pub enum Curve {
@@ -102,6 +106,7 @@ macro_rules! curves {
         ];
 
         /// A checked curve's model in time.
+        #[allow(clippy::large_enum_variant)]
         pub(crate) enum TimeModel {
             $( $Curve(<$Curve as CurveKind>::Time), )+
         }
@@ -191,4 +196,6 @@ curves! {
     three_stage::ThreeStage,
     /// Jerk-limited S-curve.
     jerk_limited::JerkLimited,
+    /// The fastest ramp a motor allows, with a margin.
+    torque_limited::TorqueLimited,
 }

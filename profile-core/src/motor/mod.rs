@@ -33,6 +33,7 @@ pub(crate) mod bounds;
 mod builder;
 mod check;
 mod chopper;
+mod limited;
 // Public as `simulate`, at the crate root (one path per item); declared
 // here, beside the model it plays.
 #[doc(hidden)]
@@ -267,6 +268,16 @@ pub enum MotorError {
         /// The fastest start the loaded rotor follows, and how it was found.
         limit: StartLimit,
     },
+    /// A `torque_limited` ramp: at `hz` the motor has no torque to spare
+    /// for accelerating.
+    NoSpareTorque {
+        /// The step frequency, in Hz.
+        hz: f64,
+        /// The torque it gives there after the safety factor, in N·m.
+        available_nm: f64,
+        /// What the load, friction and damping take there, in N·m.
+        load_nm: f64,
+    },
 }
 
 impl MotorError {
@@ -281,6 +292,7 @@ impl MotorError {
             | MotorError::ShortMove { .. } => Key::MOTOR,
             MotorError::NotFinite { .. } => Key::ROTOR_INERTIA,
             MotorError::EmptyTable => Key::MOTOR,
+            MotorError::NoSpareTorque { .. } => Key::FMAX,
         }
     }
 }
@@ -360,6 +372,19 @@ impl fmt::Display for MotorError {
                 remedies,
             } => start::short_move(f, hz, (pulse, steps), remedies),
             MotorError::Start { hz, limit } => start::start(f, hz, limit),
+            MotorError::NoSpareTorque {
+                hz,
+                available_nm,
+                load_nm,
+            } => write!(
+                f,
+                "the motor has no torque to spare at {} Hz to accelerate a `torque_limited` \
+                 ramp: it gives {} N·m after the safety factor, and the load, friction and \
+                 damping take {} N·m; lower `fmax`",
+                Fixed(hz, 1),
+                Fixed(available_nm, 4),
+                Fixed(load_nm, 4)
+            ),
         }
     }
 }

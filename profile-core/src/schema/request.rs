@@ -13,8 +13,8 @@ use crate::base::error::Error;
 use crate::base::key::Key;
 use crate::base::modes::{Arithmetic, Discretization, Rounding};
 use crate::base::timer::{Timer, Word};
-use crate::curves::CurveSchema;
-use crate::motor::Motor;
+use crate::curves::{Curve, CurveSchema, TorqueLimited};
+use crate::motor::{Motor, MotorError};
 use crate::table::spec::Spec;
 
 /// What a list of arguments asks for, before the spec is checked.
@@ -83,8 +83,11 @@ pub fn read<L: Clone>(
             "`compress` and `segments` are two layouts of the table: give one".to_string(),
         );
     }
-    let curve = (schema.read)(&mut c);
+    let mut curve = (schema.read)(&mut c);
     let motor = motor(&mut c, &suggested);
+    if let (Some(Curve::TorqueLimited(ramp)), Some(timer)) = (&mut curve, timer) {
+        limited_by(&mut c, ramp, motor.as_ref(), timer);
+    }
     let (Some(curve), Some(timer), true, true) = (curve, timer, complete, c.diagnostics.is_empty())
     else {
         return Err(c.finish());
@@ -106,6 +109,83 @@ pub fn read<L: Clone>(
         },
         motor,
     })
+}
+
+/// A `torque_limited` ramp's start and acceleration, from its motor: an
+/// error at `curve` without one, at the motor's figure or `fmax` when the
+/// motor has no torque to spare. Without `fmin`, the start is the fastest
+/// the start-from-rest check accepts with the ramp's acceleration after
+/// it: the model's fastest constant start times `margin`, and four fifths
+/// of that as often as the check refuses the start (at most 20 times).
+fn limited_by<L: Clone>(
+    c: &mut Collector<'_, L>,
+    ramp: &mut TorqueLimited,
+    motor: Option<&Motor>,
+    timer: Timer,
+) {
+    let given = c.find(Key::FMIN).is_some();
+    let Some(motor) = motor else {
+        // Without a motor read (none given, or one in error, reported).
+        if !c.diagnostics.is_empty() {
+            return;
+        }
+        let message = "`curve = torque_limited` takes its acceleration from the motor's torque: \
+                       describe the motor (`motor = NAME`, or its keys)"
+            .to_string();
+        match c.find(Key::CURVE) {
+            Some((i, _)) => c.at_arg(i, false, message),
+            None => c.at_whole(message),
+        }
+        return;
+    };
+    let mut fmin = given.then_some(ramp.fmin);
+    if fmin.is_none() {
+        // The model's fastest constant start, times `margin`, as a user
+        // would write it.
+        let start = motor.start_limit(ramp.fmax).hz() * ramp.margin;
+        fmin = Some(three_digits_down(start));
+    }
+    for _ in 0..START_TRIES {
+        let limited = match motor.torque_limited(fmin, ramp.fmax, ramp.margin) {
+            Ok(limited) => limited,
+            Err(e) => {
+                let d = super::locate_motor(&e, c.args, c.whole);
+                c.diagnostics.push((usize::MAX, d));
+                return;
+            }
+        };
+        *ramp = limited;
+        if given || !starts_too_fast(motor, limited, timer) {
+            return;
+        }
+        fmin = Some(three_digits_down(limited.fmin * 0.8));
+    }
+}
+
+/// `hz` rounded down to three significant digits, as a user would write a
+/// start frequency (2614.7 Hz is 2610 Hz).
+fn three_digits_down(hz: f64) -> f64 {
+    if !(hz.is_finite() && hz > 0.0) {
+        return hz;
+    }
+    let unit = libm::pow(10.0, libm::floor(libm::log10(hz)) - 2.0);
+    libm::floor(hz / unit) * unit
+}
+
+/// Times the start of a `torque_limited` ramp without `fmin` is lowered.
+const START_TRIES: u32 = 20;
+
+/// Whether the motor check refuses `ramp`'s start from rest (any other
+/// problem is the check's to report, with the table).
+fn starts_too_fast(motor: &Motor, ramp: TorqueLimited, timer: Timer) -> bool {
+    let spec = Spec::new(Curve::TorqueLimited(ramp), timer);
+    let Ok(table) = spec.table() else {
+        return false;
+    };
+    matches!(
+        motor.check(&spec, &table.periods),
+        Err(MotorError::PullIn { .. } | MotorError::ShortMove { .. } | MotorError::Start { .. })
+    )
 }
 
 /// What is wrong with one argument's value on its own (its kind, its unit,

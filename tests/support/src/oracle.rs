@@ -91,7 +91,13 @@ pub struct Model {
     pub t_ramp: f64,
     /// The frequency held after the ramp, in Hz.
     pub fmax: f64,
+    /// For a ramp solved in frequency rather than time: its steps until
+    /// `fmax`, and its edges.
+    in_frequency: Option<(f64, EdgesFn)>,
 }
+
+/// The times of a ramp's edges `1..=n`.
+type EdgesFn = Box<dyn Fn(usize) -> Vec<f64>>;
 
 impl Model {
     /// A model from its frequency on `[0, t_ramp)` and its joints.
@@ -108,6 +114,7 @@ impl Model {
             joints,
             t_ramp,
             fmax,
+            in_frequency: None,
         }
     }
 
@@ -145,7 +152,10 @@ impl Model {
 
     /// Steps until the ramp reaches `fmax`: `N(t_ramp)`.
     pub fn ramp_steps(&self) -> f64 {
-        self.integral(0.0, self.t_ramp)
+        match &self.in_frequency {
+            Some((steps, _)) => *steps,
+            None => self.integral(0.0, self.t_ramp),
+        }
     }
 
     /// `N(t)`: the steps taken by time `t`.
@@ -165,6 +175,9 @@ impl Model {
 
     /// The times of pulse edges `1..=n`, in s: `t(k)` with `N(t(k)) = k`.
     pub fn edges(&self, n: usize) -> Vec<f64> {
+        if let Some((_, edges)) = &self.in_frequency {
+            return edges(n);
+        }
         let mut out = Vec::with_capacity(n);
         let (mut t, mut residual) = (0.0f64, 0.0f64);
         for _ in 0..n {
@@ -401,6 +414,156 @@ pub fn jerk_limited(f0: f64, fmax: f64, accel: f64, jerk: f64) -> Model {
     )
 }
 
+/// The fastest ramp a motor allows: `df/dt = a(f)`, the acceleration `a`
+/// straight between its points `(f, a)`. Solved here the other way round
+/// from production's closed form in time: the time to reach `f` is the
+/// integral `∫ df / a(f)` (adaptive quadrature), and `f(t)` inverts it by
+/// Newton's method on `f` (its derivative `a`), safeguarded by bisection.
+pub fn torque_limited(fmin: f64, fmax: f64, points: &[(f64, f64)]) -> Model {
+    // The frequencies where `a` changes slope, from `fmin` to `fmax`.
+    let mut at: Vec<f64> = vec![fmin];
+    at.extend(points.iter().map(|p| p.0).filter(|&f| f > fmin && f < fmax));
+    at.push(fmax);
+    let points = points.to_vec();
+    let at_for_steps = at.clone();
+    let inverse = move |f: f64| -> f64 {
+        let i = points.partition_point(|p| p.0 <= f);
+        let a = if i == 0 {
+            points[0].1
+        } else if i == points.len() {
+            points[i - 1].1
+        } else {
+            let ((f0, a0), (f1, a1)) = (points[i - 1], points[i]);
+            a0 + (a1 - a0) * ((f - f0) / (f1 - f0))
+        };
+        1.0 / a
+    };
+    let inverse_for_steps = inverse.clone();
+    // When each of those frequencies is reached.
+    let mut times = vec![0.0];
+    for w in at.windows(2) {
+        let last = times[times.len() - 1];
+        times.push(last + adaptive(&inverse, w[0], w[1], 0));
+    }
+    let t_ramp = times[times.len() - 1];
+    let joints = times[1..times.len() - 1].to_vec();
+    let f = move |t: f64| -> f64 {
+        let i = times.partition_point(|&x| x <= t).clamp(1, times.len() - 1);
+        let (from, to, t0) = (at[i - 1], at[i], times[i - 1]);
+        // Newton on the time from the stretch's start to `f`.
+        let (mut lo, mut hi) = (from, to);
+        let mut f = (from + (t - t0) / inverse(from)).clamp(lo, hi);
+        for _ in 0..100 {
+            let g = t0 + adaptive(&inverse, from, f, 0) - t;
+            if g == 0.0 {
+                break;
+            }
+            if g < 0.0 {
+                lo = f;
+            } else {
+                hi = f;
+            }
+            let newton = f - g / inverse(f);
+            let next = if newton > lo && newton < hi {
+                newton
+            } else {
+                0.5 * (lo + hi)
+            };
+            let done =
+                (next - f).abs() <= 2.0 * f64::EPSILON * f || hi - lo <= 2.0 * f64::EPSILON * f;
+            f = next;
+            if done {
+                break;
+            }
+        }
+        f
+    };
+    let mut model = Model::new(f, joints, t_ramp, fmax);
+    model.in_frequency = Some(in_frequency(at_for_steps, inverse_for_steps, t_ramp, fmax));
+    model
+}
+
+/// A ramp whose acceleration `1 / inverse(f)` is smooth between the
+/// frequencies `at` (from its start to its end): its steps until the end,
+/// `∫ f / a df`, and its edges. Edge `k` is at the frequency `f_k` where
+/// `N_i + ∫ f / a df` from the start `f_i` of its stretch reaches `k`
+/// (Newton's method on `f`, whose derivative is `f / a`), at the time
+/// `t_i + ∫ df / a` from there: every integral is taken from a stretch's
+/// start, so no running sum grows with `k`. Past the end, the end
+/// frequency held.
+fn in_frequency(
+    at: Vec<f64>,
+    inverse: impl Fn(f64) -> f64 + Clone + 'static,
+    t_ramp: f64,
+    fmax: f64,
+) -> (f64, EdgesFn) {
+    let steps_over = {
+        let inverse = inverse.clone();
+        move |from: f64, to: f64| adaptive(&|f| f * inverse(f), from, to, 0)
+    };
+    // Steps and time at each stretch's start.
+    let mut starts = vec![(0.0f64, 0.0f64)];
+    for w in at.windows(2) {
+        let (n, t) = starts[starts.len() - 1];
+        starts.push((
+            n + steps_over(w[0], w[1]),
+            t + adaptive(&|x| inverse(x), w[0], w[1], 0),
+        ));
+    }
+    let total = starts[starts.len() - 1].0;
+    let edges = move |n: usize| {
+        let mut out = Vec::with_capacity(n);
+        let mut f = at[0];
+        for k in 1..=n {
+            let k = k as f64;
+            // The stretch that holds edge `k`, if the ramp does.
+            let Some(i) = (0..at.len() - 1).find(|&i| starts[i + 1].0 > k) else {
+                out.push(t_ramp + (k - total) / fmax);
+                continue;
+            };
+            let (from, (n_i, t_i)) = (at[i], starts[i]);
+            let need = k - n_i;
+            let (mut lo, mut hi) = (from.max(f.min(at[i + 1])), at[i + 1]);
+            if lo < from || lo > hi {
+                lo = from;
+            }
+            let mut next = 0.5 * (lo + hi);
+            for _ in 0..200 {
+                let g = steps_over(from, next) - need;
+                if g == 0.0 {
+                    break;
+                }
+                if g < 0.0 {
+                    lo = next;
+                } else {
+                    hi = next;
+                }
+                // d/df ∫ f / a = f / a.
+                let newton = next - g / (next * inverse(next));
+                let x = if newton > lo && newton < hi {
+                    newton
+                } else {
+                    0.5 * (lo + hi)
+                };
+                let done = (x - next).abs() <= 2.0 * f64::EPSILON * next
+                    || hi - lo <= 2.0 * f64::EPSILON * next;
+                next = x;
+                if done {
+                    break;
+                }
+            }
+            f = next;
+            // `f_k` holds the edge to an ulp of a frequency, which where
+            // the ramp is slow is far more than an ulp of its time: the
+            // steps it misses by, over `f`, are the time it misses by.
+            let missed = steps_over(from, next) - need;
+            out.push(t_i + adaptive(&|x| inverse(x), from, next, 0) - missed / next);
+        }
+        out
+    };
+    (total, Box::new(edges))
+}
+
 /// Entries of a table whose ramp takes `steps` steps (a real number): `None`
 /// when `steps` is so near a whole number that rounding decides.
 pub fn entries(steps: f64) -> Option<u64> {
@@ -438,6 +601,7 @@ pub fn model(curve: &Curve) -> Model {
         ),
         Curve::ThreeStage(z) => three_stage(z.fmin, z.fmax, z.accel, z.f1, z.f2, z.shape),
         Curve::JerkLimited(j) => jerk_limited(j.fmin, j.fmax, j.accel, j.jerk),
+        Curve::TorqueLimited(t) => torque_limited(t.fmin, t.fmax, t.accel.points()),
         _ => unreachable!("every curve has a model"),
     }
 }

@@ -1,0 +1,236 @@
+//! `curve = torque_limited`: the fastest ramp a motor allows, with a
+//! margin. The macro, a profiles file and the library give the same table;
+//! it passes the motor check by construction; and a rotor simulated here,
+//! by an integrator of its own (not `simulate`), follows it without losing
+//! a step, and loses steps once the margin is gone and the load is raised.
+
+use profile_core::motor::{Motor, TorqueCurve};
+use profile_core::player::{Player, Ramp};
+use profile_core::profiles::Profiles;
+use stepper_profiles::{Curve, Generated, Spec, Timer, period_table};
+
+/// The shipped QSH4218-47-28-040 in 1/8 steps (profiles.toml): its
+/// manual's pull-out chart, twice its rotor's inertia as load, 0.02 N·m of
+/// friction, undamped, no safety factor.
+const CHART: [(f64, f64); 11] = [
+    (0.0, 0.40),
+    (4000.0, 0.404),
+    (8000.0, 0.404),
+    (12000.0, 0.389),
+    (16000.0, 0.375),
+    (20000.0, 0.344),
+    (24000.0, 0.308),
+    (28000.0, 0.281),
+    (32000.0, 0.255),
+    (36000.0, 0.245),
+    (40000.0, 0.235),
+];
+
+fn qsh4218(load: f64) -> Motor {
+    Motor::new(1.8, 8, 6.8e-6)
+        .with_torque_curve(TorqueCurve::new(&CHART).unwrap())
+        .with_load_inertia(load)
+        .with_friction(0.02)
+}
+
+static FASTEST: [u16; 683] = period_table!(
+    curve = torque_limited,
+    fmax = 40_000,
+    margin = 0.35,
+    timer_hz = 10_000_000,
+    step_angle = 1.8,
+    microsteps = 8,
+    rotor_inertia = 68gcm2,
+    load_inertia = 136gcm2,
+    friction = 0.02,
+    torque_curve = [
+        (0, 0.40),
+        (4000, 0.404),
+        (8000, 0.404),
+        (12000, 0.389),
+        (16000, 0.375),
+        (20000, 0.344),
+        (24000, 0.308),
+        (28000, 0.281),
+        (32000, 0.255),
+        (36000, 0.245),
+        (40000, 0.235)
+    ],
+);
+
+const FILE: &str = r#"
+[motors.qsh]
+step_angle = 1.8
+microsteps = 8
+rotor_inertia = 6.8e-6
+load_inertia = 1.36e-5
+friction = 0.02
+torque_curve = [[0, 0.40], [4000, 0.404], [8000, 0.404], [12000, 0.389], [16000, 0.375],
+    [20000, 0.344], [24000, 0.308], [28000, 0.281], [32000, 0.255], [36000, 0.245],
+    [40000, 0.235]]
+
+[profiles.fastest]
+curve = "torque_limited"
+fmax = 40_000
+margin = 0.35
+timer_hz = 10_000_000
+motor = "qsh"
+"#;
+
+/// The file's profile: its spec and table.
+fn from_file() -> (Spec, Vec<u32>) {
+    let profiles = Profiles::parse("profiles.toml", FILE).unwrap_or_else(|e| panic!("{e}"));
+    match &profiles.profiles()[0].table {
+        Generated::Steps(t) => (t.spec, t.periods.clone()),
+        _ => panic!("a per-step table"),
+    }
+}
+
+#[test]
+fn the_macro_the_file_and_the_library_give_the_same_table() {
+    let (spec, periods) = from_file();
+    let from_macro: Vec<u32> = FASTEST.iter().map(|&p| u32::from(p)).collect();
+    assert_eq!(from_macro, periods);
+    // Without `fmin` the start is the fastest the start check accepts,
+    // written to three digits: the library gives the same ramp from it.
+    let Curve::TorqueLimited(ramp) = spec.curve else {
+        panic!("{spec:?}")
+    };
+    assert_eq!(ramp.fmin, 2720.0);
+    let motor = qsh4218(1.36e-5);
+    let library = motor.torque_limited(Some(2720.0), 40_000.0, 0.35).unwrap();
+    assert_eq!(library, ramp);
+    let table = Spec::new(Curve::TorqueLimited(library), Timer::new(10_000_000))
+        .table()
+        .unwrap();
+    assert_eq!(table.periods, periods);
+    // A start above the one the check accepts is refused, as any ramp's.
+    let too_fast = format!("{FILE}fmin = 7000\n");
+    let error = Profiles::parse("profiles.toml", &too_fast).unwrap_err();
+    assert!(
+        error
+            .to_string()
+            .contains("the motor cannot start on this ramp"),
+        "{error}"
+    );
+}
+
+/// At every edge the ramp spends `margin` of the torque the motor has to
+/// spare: the check passes with the rest left, `1 - margin` of the spare
+/// torque where the motor has least (at the top), less the rounding of the
+/// periods.
+#[test]
+fn it_passes_the_check_with_the_rest_of_the_torque_to_spare() {
+    let (spec, periods) = from_file();
+    let motor = qsh4218(1.36e-5);
+    let figures = motor.check(&spec, &periods).unwrap();
+    let spare_at_top = 0.235 - 0.02;
+    let left = (1.0 - 0.35) * spare_at_top;
+    assert!(
+        figures.min_margin_nm > 0.9 * left,
+        "{figures:?}: at least about {left} N·m left"
+    );
+    // The ramp reaches 1500 rpm in 29 ms (`tests/fastest.rs` sets it
+    // beside the steepest linear, three-stage and jerk-limited ramps that
+    // keep as much torque to spare).
+    let seconds = periods.iter().map(|&p| f64::from(p)).sum::<f64>() / 1e7;
+    assert!((0.028..0.030).contains(&seconds), "{seconds}");
+}
+
+/// A rotor on its own integrator: `J θ'' = T(f) sin(N_r (θ_field - θ)) -
+/// friction - damping θ'`, the field a microstep further at each edge, the
+/// torque's amplitude the pull-out torque at the step rate of the interval
+/// being played (the sinusoid whose peak the chart measures), classical
+/// fourth-order Runge-Kutta in steps of a fortieth of the shortest period.
+/// Returns the full steps the rotor ends behind the field (or ahead,
+/// negative) after the move and a held settling time.
+fn steps_lost(motor: &Motor, periods: &[u32], timer_hz: f64) -> i64 {
+    let poles = 50.0;
+    let field_step = (1.8f64).to_radians() / 8.0;
+    let inertia = motor.rotor_inertia + motor.load_inertia;
+    let shortest = f64::from(*periods.iter().min().unwrap()) / timer_hz;
+    let dt = shortest / 40.0;
+    let (mut theta, mut omega, mut field) = (0.0f64, 0.0f64, 0.0f64);
+    let accel = |theta: f64, omega: f64, field: f64, amplitude: f64| {
+        let electromagnetic = amplitude * (poles * (field - theta)).sin();
+        // Friction opposes motion; at rest it holds up to its value.
+        let friction = if omega.abs() > 1e-9 {
+            motor.friction * omega.signum()
+        } else if electromagnetic.abs() > motor.friction {
+            motor.friction * electromagnetic.signum()
+        } else {
+            electromagnetic
+        };
+        (electromagnetic - friction - motor.damping * omega) / inertia
+    };
+    let play = |duration: f64, hz: f64, theta: &mut f64, omega: &mut f64, field: f64| {
+        let amplitude = motor.pull_out(hz);
+        let n = (duration / dt).ceil() as usize;
+        let h = duration / n as f64;
+        for _ in 0..n {
+            let (t0, w0) = (*theta, *omega);
+            let k1 = (w0, accel(t0, w0, field, amplitude));
+            let k2 = (
+                w0 + 0.5 * h * k1.1,
+                accel(t0 + 0.5 * h * k1.0, w0 + 0.5 * h * k1.1, field, amplitude),
+            );
+            let k3 = (
+                w0 + 0.5 * h * k2.1,
+                accel(t0 + 0.5 * h * k2.0, w0 + 0.5 * h * k2.1, field, amplitude),
+            );
+            let k4 = (
+                w0 + h * k3.1,
+                accel(t0 + h * k3.0, w0 + h * k3.1, field, amplitude),
+            );
+            *theta = t0 + h / 6.0 * (k1.0 + 2.0 * k2.0 + 2.0 * k3.0 + k4.0);
+            *omega = w0 + h / 6.0 * (k1.1 + 2.0 * k2.1 + 2.0 * k3.1 + k4.1);
+        }
+    };
+    for &p in periods {
+        // The step now: the field moves on, then the interval plays.
+        field += field_step;
+        let duration = f64::from(p) / timer_hz;
+        play(duration, 1.0 / duration, &mut theta, &mut omega, field);
+    }
+    // Held at the last position: the rotor settles (friction damps it).
+    for _ in 0..200 {
+        play(1e-3, 0.0, &mut theta, &mut omega, field);
+    }
+    // Electrical turns behind, each four full steps.
+    let turns = (poles * (field - theta) / std::f64::consts::TAU).round();
+    4 * turns as i64
+}
+
+/// The move the player makes of a table: up, 200 steps at the top, down.
+fn move_of(periods: &[u32]) -> Vec<u32> {
+    let mut player = Player::new(Ramp::steps(periods));
+    player.start(2 * periods.len() as u32 + 200);
+    std::iter::from_fn(|| player.next_period()).collect()
+}
+
+#[test]
+fn the_rotor_follows_it_and_slips_without_the_margin_under_more_load() {
+    let (_, periods) = from_file();
+    let motor = qsh4218(1.36e-5);
+    let lost = steps_lost(&motor, &move_of(&periods), 1e7);
+    println!("margin 0.35, its own load: {lost} full steps lost");
+    assert_eq!(lost, 0);
+    // The margin carries half as much load again...
+    let heavier = qsh4218(1.36e-5 * 1.5);
+    let lost = steps_lost(&heavier, &move_of(&periods), 1e7);
+    println!("margin 0.35, 1.5 times the load: {lost} full steps lost");
+    assert_eq!(lost, 0);
+    // ...where the same ramp with all the spare torque spent slips.
+    let greedy = motor.torque_limited(Some(2720.0), 40_000.0, 0.99).unwrap();
+    let table = Spec::new(Curve::TorqueLimited(greedy), Timer::new(10_000_000))
+        .table()
+        .unwrap();
+    let moved = move_of(&table.periods);
+    let lost = steps_lost(&heavier, &moved, 1e7);
+    println!("margin 0.99, 1.5 times the load: {lost} full steps lost");
+    assert!(lost != 0, "{lost}");
+    // (With its own load it slips too: the undamped rotor swings about its
+    // lag, and at 99 % of the torque nothing is left for the swing.)
+    let lost = steps_lost(&motor, &moved, 1e7);
+    println!("margin 0.99, its own load: {lost} full steps lost");
+}
