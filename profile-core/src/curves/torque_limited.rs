@@ -290,7 +290,10 @@ impl CurveKind for TorqueLimited {
             let slowest = points
                 .iter()
                 .copied()
-                .fold((self.fmax, f64::INFINITY), |a, p| if p.1 < a.1 { p } else { a });
+                .fold(
+                    (self.fmax, f64::INFINITY),
+                    |a, p| if p.1 < a.1 { p } else { a },
+                );
             return Err(Error::AccelCurve {
                 hz: slowest.0,
                 accel: slowest.1,
