@@ -56,7 +56,7 @@ mod include;
 /// | `linear` | `fmin`, `fmax`, and `len` or `accel` (Hz/s) |
 /// | `three_stage` | `fmin`, `fmax`, `accel` (Hz/s), `f1`, `f2` (where the stages meet), `shape` (1/s) |
 /// | `jerk_limited` | `fmin`, `fmax`, `accel` (Hz/s), `jerk` (Hz/s²) |
-/// | `torque_limited` | `fmax`, `margin` (above 0, at most 0.99), optionally `fmin`; needs a motor (below): at every speed the acceleration is `margin` times the torque the motor has to spare there (its pull-out torque over `safety`, less friction and damping) over the inertia. Without `fmin`, the start is the fastest the start-from-rest check accepts |
+/// | `torque_limited` | `fmax`, `margin` (above 0, at most 0.99), optionally `fmin`; needs a motor (below): at every speed the acceleration is what `margin` times the motor's pull-out torque (over `safety`) leaves after friction and damping, over the inertia, so that the ramp passes the motor check with `safety / margin`. Without `fmin`, the start is the fastest that check accepts |
 ///
 /// Where the length follows from the parameters (`tau`, `accel`,
 /// `three_stage`, `jerk_limited`, `torque_limited`), the table has as many

@@ -9,13 +9,13 @@ use crate::base::math::{exp_excess_ratio, exp_fraction};
 use crate::base::solve::TimeCurve;
 
 impl Key {
-    /// `margin`: the share of the motor's spare torque a `torque_limited`
-    /// ramp spends on accelerating, above 0 and at most 0.99.
+    /// `margin`: the share of the motor's pull-out torque (after `safety`)
+    /// a `torque_limited` ramp plans on, above 0 and at most 0.99.
     pub const MARGIN: Key = Key("margin");
 }
 
-/// The largest `margin`: a ramp that spends all the torque the motor has to
-/// spare leaves the check nothing for the rounding of its periods.
+/// The largest `margin`: a motor's torque with nothing kept back (its
+/// safety factor aside).
 pub const MAX_MARGIN: f64 = 0.99;
 
 /// The most points an [`AccelCurve`] holds: a torque curve's 32 and the
@@ -80,12 +80,15 @@ impl AccelCurve {
 
 /// The fastest ramp a motor allows, with a margin: from `fmin` to `fmax`
 /// the step frequency rises at `df/dt = a(f)`, the acceleration
-/// [`AccelCurve`] gives at each frequency. From a motor,
-/// `a(f) = margin · (pull-out torque(f) / safety - friction - damping · θ ·
+/// [`AccelCurve`] gives at each frequency. From a motor
+/// ([`Motor::torque_limited`](crate::motor::Motor::torque_limited)),
+/// `a(f) = (margin · pull-out torque(f) / safety - friction - damping · θ ·
 /// f) / (J · θ)`, `θ` the angle of a table step and `J` the rotor's and the
-/// load's inertia: at every speed the share `margin` of the torque the
-/// motor has to spare (the same sums the motor check makes), so the ramp
-/// passes the check by construction with `1 - margin` of that torque left.
+/// load's inertia (3 % of the torque left for the check's reading of the
+/// acceleration off rounded periods): at every speed all the torque the motor gives at `margin`
+/// times its own (the same sums the motor check makes), so the ramp passes
+/// the check of the motor with `safety / margin` by construction, and no
+/// ramp that passes it is faster at any speed.
 ///
 /// Between two points of the acceleration curve, `a` is a straight line in
 /// `f`, `a(f) = a_0 + s (f - f_0)`, and the ramp is solved in closed form:
@@ -98,7 +101,7 @@ pub struct TorqueLimited {
     pub fmin: f64,
     /// End frequency, in Hz.
     pub fmax: f64,
-    /// The share of the spare torque spent on accelerating, above 0 and at
+    /// The share of the pull-out torque the ramp plans on, above 0 and at
     /// most [`MAX_MARGIN`] (as given; `accel` is already made with it).
     pub margin: f64,
     /// The acceleration at each frequency, covering `fmin` to `fmax`.

@@ -273,7 +273,8 @@ pub enum MotorError {
     NoSpareTorque {
         /// The step frequency, in Hz.
         hz: f64,
-        /// The torque it gives there after the safety factor, in N·m.
+        /// The torque the ramp plans on there (its margin's share of the
+        /// torque after the safety factor), in N·m.
         available_nm: f64,
         /// What the load, friction and damping take there, in N·m.
         load_nm: f64,
@@ -379,8 +380,9 @@ impl fmt::Display for MotorError {
             } => write!(
                 f,
                 "the motor has no torque to spare at {} Hz to accelerate a `torque_limited` \
-                 ramp: it gives {} N·m after the safety factor, and the load, friction and \
-                 damping take {} N·m; lower `fmax`",
+                 ramp: the ramp plans on {} N·m of its torque there (`margin` of it, after the \
+                 safety factor), and the load, friction and damping take {} N·m; lower `fmax` \
+                 or raise `margin`",
                 Fixed(hz, 1),
                 Fixed(available_nm, 4),
                 Fixed(load_nm, 4)
