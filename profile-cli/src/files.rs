@@ -69,7 +69,13 @@ fn write_torque_plot(p: &Profile, path: &Path) -> Result<(), Box<dyn std::error:
         &p.table.step_periods(),
         |step, hz, needed, available| edges.push((step, hz, needed, available)),
     )?;
-    plots::torque(path, &p.name, &edges, &pull_out_curves(motor, &edges))
+    let mut curves = pull_out_curves(motor, &edges);
+    if let profile_core::Curve::TorqueLimited(ramp) = p.table.spec().curve {
+        // What the fastest ramp plans on: `margin` of the available torque.
+        let planned = edges.iter().map(|e| (e.1, ramp.margin * e.3)).collect();
+        curves.push(("planned: margin × pull-out / safety", planned));
+    }
+    plots::torque(path, &p.name, &edges, &curves)
 }
 
 /// The pull-out curves to plot: the typed one, and the one the windings

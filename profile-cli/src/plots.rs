@@ -370,7 +370,11 @@ pub fn torque(
     let areas = root.split_evenly((2, 1));
     let needed = RGBColor(0xd6, 0x27, 0x28);
     let available = RGBColor(0x1f, 0x77, 0xb4);
-    let pull_out = [RGBColor(0x80, 0x80, 0x80), RGBColor(0x2c, 0xa0, 0x2c)];
+    let pull_out = [
+        RGBColor(0x80, 0x80, 0x80),
+        RGBColor(0x2c, 0xa0, 0x2c),
+        RGBColor(0x94, 0x67, 0xbd),
+    ];
     let line = |label: &str, color, points: Vec<(f64, f64)>| Line {
         label: label.to_string(),
         color,

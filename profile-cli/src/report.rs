@@ -6,11 +6,13 @@ use std::fmt::Write as _;
 
 use profile_core::__private::emit::start_note;
 use profile_core::__private::schema::{describe, describe_motor};
+use profile_core::motor::MotorError;
 use profile_core::motor::{Drive, Motor};
 use profile_core::player::{Player, Ramp};
 use profile_core::profiles::{Profile, Profiles};
 use profile_core::simulate::{self, SimOptions, SimResult};
 use profile_core::{Compact, Generated};
+use profile_core::{Curve, Linear, LinearExtent};
 use profile_core::{Discretization, Error, Rounding, Spec};
 
 /// The whole report of `profiles`, read from `path`.
@@ -322,6 +324,7 @@ fn print_motors(out: &mut String, profiles: &[Profile]) {
         );
     }
     print_pull_out(out, &bound);
+    print_fastest(out, &bound);
     let _ = writeln!(
         out,
         "\nmargin: the smallest torque to spare over the ramp, at that step and step \
@@ -388,4 +391,99 @@ fn print_pull_out(out: &mut String, bound: &[&Profile]) {
             let _ = writeln!(out, "{label:<width$}{figures}");
         }
     }
+}
+
+/// For each `torque_limited` profile: the torque at its top with the
+/// margin, and the time it saves against the steepest constant
+/// acceleration from the same start that passes the same check.
+fn print_fastest(out: &mut String, bound: &[&Profile]) {
+    for p in bound {
+        let (Some(motor), Curve::TorqueLimited(ramp)) = (&p.motor, p.table.spec().curve) else {
+            continue;
+        };
+        let spec = p.table.spec();
+        let ticks: u64 = p.table.step_periods().iter().map(|&t| u64::from(t)).sum();
+        let time = ticks as f64 / spec.timer.frequency_scale();
+        let (fmin, fmax, margin) = (ramp.fmin, ramp.fmax, ramp.margin);
+        let available = motor.available(fmax);
+        let _ = writeln!(
+            out,
+            "\n`{}`: the fastest ramp the motor allows, planned on {} of its torque (every \
+             edge passes the check with `safety` {:.3} / {} = {:.3})",
+            p.name,
+            margin,
+            motor.safety,
+            margin,
+            motor.safety / margin
+        );
+        let _ = writeln!(
+            out,
+            "  at its top, {fmax:.1} Hz: available {available:.4} N·m, planned {:.4} N·m \
+             (`margin` of it), friction and damping {:.4} N·m",
+            margin * available,
+            motor.friction + motor.damping * motor.step_radians() * fmax
+        );
+        match steepest_linear(motor, spec, fmin, fmax, margin) {
+            Some((accel, linear)) => {
+                let _ = writeln!(
+                    out,
+                    "  to {fmax:.1} Hz in {:.2} ms; the steepest constant acceleration from \
+                     {fmin:.1} Hz that passes the same check, {accel:.4e} Hz/s, takes {:.2} \
+                     ms: {:.1} % saved",
+                    time * 1e3,
+                    linear * 1e3,
+                    (1.0 - time / linear) * 100.0
+                );
+            }
+            None => {
+                let _ = writeln!(
+                    out,
+                    "  to {fmax:.1} Hz in {:.2} ms; no constant acceleration from {fmin:.1} Hz \
+                     passes the same check",
+                    time * 1e3
+                );
+            }
+        }
+    }
+}
+
+/// The steepest linear ramp from `fmin` to `fmax` on `spec`'s timer that
+/// the motor's check passes with every edge at `safety / margin`: its
+/// acceleration, Hz/s, and its time, s (bisection on the acceleration's
+/// logarithm, 40 halvings, from 1 Hz/s to 1e12 Hz/s).
+fn steepest_linear(
+    motor: &Motor,
+    spec: &Spec,
+    fmin: f64,
+    fmax: f64,
+    margin: f64,
+) -> Option<(f64, f64)> {
+    let strict = motor.with_safety(motor.safety / margin);
+    let time = |accel: f64| -> Option<f64> {
+        let mut linear = *spec;
+        linear.curve = Curve::Linear(Linear {
+            fmin,
+            fmax,
+            extent: LinearExtent::Accel(accel),
+        });
+        let table = linear.table().ok()?;
+        motor.check(&linear, &table.periods).ok()?;
+        if let Err(MotorError::Torque { .. }) = strict.check(&linear, &table.periods) {
+            return None;
+        }
+        let ticks: u64 = table.periods.iter().map(|&t| u64::from(t)).sum();
+        Some(ticks as f64 / spec.timer.frequency_scale())
+    };
+    // The slowest that fits a table.
+    let (mut lo, mut hi) = ((fmax - fmin) * (fmax + fmin) / 65_536.0, 1e12f64);
+    time(lo)?;
+    for _ in 0..40 {
+        let mid = (lo * hi).sqrt();
+        if time(mid).is_some() {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    time(lo).map(|t| (lo, t))
 }

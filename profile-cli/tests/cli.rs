@@ -678,3 +678,46 @@ fn a_closed_standard_error_loses_the_message_but_not_the_exit_status() {
     assert!(child.wait().unwrap().success());
     assert!(dir.join("plots").is_dir());
 }
+
+/// The shipped `torque_limited` profile: the report gives its time to the
+/// top against the steepest constant acceleration that passes the same
+/// check, and that acceleration's time agrees with (fmax - fmin) / accel
+/// to within a step at the top.
+#[test]
+fn report_gives_the_time_the_fastest_ramp_saves() {
+    let out = run(
+        &work_dir("report_fastest"),
+        &["report", shipped().to_str().unwrap()],
+    );
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let report = text(&out.stdout);
+    let section = after(
+        &report,
+        "`torque_limited`: the fastest ramp the motor allows, planned on 0.7 of its torque",
+    );
+    let lines: Vec<&str> = section.lines().take(3).collect();
+    let numbers = |line: &str| -> Vec<f64> {
+        line.split(|c: char| !(c.is_ascii_digit() || c == '.' || c == 'e'))
+            .filter_map(|w| w.trim_matches('.').parse().ok())
+            .collect()
+    };
+    // "  at its top, 40000.0 Hz: available A N·m, planned P N·m ..."
+    let top = numbers(lines[1]);
+    assert_eq!(top[0], 40_000.0, "{}", lines[1]);
+    assert!((top[1] * 0.7 - top[2]).abs() < 1e-4, "{}", lines[1]);
+    // "  to 40000.0 Hz in T ms; ... from F Hz ..., A Hz/s, takes L ms: S % saved"
+    let times = numbers(lines[2]);
+    let (time, fmin, accel, linear, saved) = (times[1], times[2], times[3], times[4], times[5]);
+    let expected = (40_000.0 - fmin) / accel * 1e3;
+    assert!(
+        (linear - expected).abs() < 1e3 / 40_000.0 + 0.01,
+        "{linear} ms against {expected} ms: {}",
+        lines[2]
+    );
+    assert!(time < linear, "{}", lines[2]);
+    assert!(
+        (saved - (1.0 - time / linear) * 100.0).abs() < 0.1,
+        "{}",
+        lines[2]
+    );
+}
