@@ -63,6 +63,11 @@ enum Command {
     },
     /// Write the C: every table and its figures, as one header or, with
     /// `--split`, a header of `extern` declarations and one source file
+    ///
+    /// The header carries a move player for each kind of table it holds;
+    /// define `NAME_NO_PLAYER`, `NAME_NO_PLAYER32` or `NAME_NO_RUNS_PLAYER`
+    /// (NAME the `--prefix` in capitals) before including it to leave one
+    /// out.
     Header {
         /// The profiles file
         file: PathBuf,
