@@ -11,7 +11,10 @@
 //! is made as steep as that check allows (its acceleration scaled by
 //! bisection, for a few shapes of each curve, the shortest kept): constant
 //! acceleration (`linear`), Zeng's three stages (`three_stage`) and the
-//! jerk-limited S-curve (`jerk_limited`). The times to the top are printed:
+//! jerk-limited S-curve (`jerk_limited`). Beside them, the floor: the time
+//! of a ramp at the check's limit at every speed, unrounded, and how much
+//! shorter than the best other shape that floor is, the most any ramp
+//! within the check could save. The times to the top are printed:
 //!
 //! ```text
 //! cargo test --release --test fastest -- --nocapture
@@ -137,11 +140,37 @@ fn steepest(
     passes(lo)
 }
 
+/// The floor: the time from `fmin` to `fmax` of a ramp that accelerates
+/// at every step frequency exactly as hard as the check allows (the
+/// needed torque equal to the available, the motor's safety over the
+/// margin), `dt = df / a(f)` integrated by Simpson's rule on 4096
+/// intervals from the motor's torque alone. No rounded periods and no
+/// torque held back: a ramp whose acceleration stays within the check's
+/// at every speed takes at least this long.
+fn floor(motor: &Motor, fmin: f64, fmax: f64) -> f64 {
+    let strict = motor.with_safety(motor.safety / MARGIN);
+    let theta = motor.step_radians();
+    let inertia = motor.rotor_inertia + motor.load_inertia;
+    let per_accel = |f: f64| {
+        let spare = strict.available(f) - motor.friction - motor.damping * theta * f;
+        assert!(spare > 0.0, "no torque to spare at {f} Hz");
+        inertia * theta / spare
+    };
+    let n = 4096;
+    let h = (fmax - fmin) / f64::from(n);
+    let mut sum = per_accel(fmin) + per_accel(fmax);
+    for k in 1..n {
+        let weight = if k % 2 == 1 { 4.0 } else { 2.0 };
+        sum += weight * per_accel(fmin + h * f64::from(k));
+    }
+    sum * h / 3.0
+}
+
 #[test]
 fn the_fastest_ramp_against_the_steepest_of_each_shape() {
     println!(
-        "{:<42} {:>9} {:>9} {:>9} {:>9} {:>9}",
-        "motor", "torque_l", "linear", "3-stage", "jerk_lim", "shorter"
+        "{:<42} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9}",
+        "motor", "torque_l", "linear", "3-stage", "jerk_lim", "shorter", "floor", "at most"
     );
     for case in cases() {
         let motor = &case.motor;
@@ -222,17 +251,33 @@ fn the_fastest_ramp_against_the_steepest_of_each_shape() {
             .copied()
             .fold(f64::INFINITY, f64::min);
         let shorter = 1.0 - time / best;
+        let least = floor(motor, fmin, fmax);
         let ms = |t: Option<f64>| t.map_or("-".to_string(), |t| format!("{:.1} ms", t * 1e3));
         println!(
-            "{:<42} {:>9} {:>9} {:>9} {:>9} {:>8.1} %",
+            "{:<42} {:>9} {:>9} {:>9} {:>9} {:>8.1} % {:>9} {:>7.1} %",
             case.name,
             ms(Some(time)),
             ms(linear),
             ms(three),
             ms(jerk),
-            shorter * 100.0
+            shorter * 100.0,
+            ms(Some(least)),
+            (1.0 - least / best) * 100.0
         );
         assert!(shorter > 0.0, "{}: not shorter than the best", case.name);
+        // Within 5 % of the floor, and no ramp below it.
+        assert!(
+            time >= least && time < least * 1.05,
+            "{}: {time} s against {least} s",
+            case.name
+        );
+        for other in others.iter().flatten() {
+            assert!(
+                *other >= least,
+                "{}: {other} s against {least} s",
+                case.name
+            );
+        }
     }
 }
 

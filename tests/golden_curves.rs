@@ -9,7 +9,10 @@
 //!   arithmetic (`len = 201, discretization = index, rounding = truncate,
 //!   arithmetic = integer`) and in the default mode (`len = 200`);
 //! - Zeng's three-stage curve (seed 002), 100 Hz to 1200 Hz at 1 MHz;
-//! - a jerk-limited ramp, 200 Hz to 5000 Hz at 10 MHz.
+//! - a jerk-limited ramp, 200 Hz to 5000 Hz at 10 MHz;
+//! - (pinned by `tests/torque_limited.rs`) the fastest ramp the shipped
+//!   QSH4218-47-28-040 allows by its chart, with half its torque to spare,
+//!   to 40 000 Hz at 10 MHz.
 //!
 //! The format is `stepper_profiles::golden`'s, as in `tests/golden.rs`:
 //! `# key = value` lines (the parameters, then the table's figures), then one

@@ -4,6 +4,7 @@
 //! by an integrator of its own (not `simulate`), follows it without losing
 //! a step, and loses steps once the margin is gone and the load is raised.
 
+use profile_core::__private::golden;
 use profile_core::motor::{Motor, MotorError, TorqueCurve};
 use profile_core::player::{Player, Ramp};
 use profile_core::profiles::Profiles;
@@ -86,6 +87,26 @@ fn from_file() -> (Spec, Vec<u32>) {
     match &profiles.profiles()[0].table {
         Generated::Steps(t) => (t.spec, t.periods.clone()),
         _ => panic!("a per-step table"),
+    }
+}
+
+/// The table, pinned in `tests/golden/curves/torque_limited.txt` (the
+/// format and the blessing of `tests/golden_curves.rs`:
+/// `UPDATE_GOLDEN=1 cargo test --test torque_limited`).
+#[test]
+fn the_table_matches_its_golden_file() {
+    let profiles = Profiles::parse("profiles.toml", FILE).unwrap_or_else(|e| panic!("{e}"));
+    let path: std::path::PathBuf = [
+        env!("CARGO_MANIFEST_DIR"),
+        "tests",
+        "golden",
+        "curves",
+        "torque_limited.txt",
+    ]
+    .iter()
+    .collect();
+    if let Err(problem) = golden::compare(path, &profiles.profiles()[0].table) {
+        panic!("{problem}");
     }
 }
 
