@@ -20,6 +20,8 @@
 //! cargo test --release --test fastest -- --nocapture
 //! ```
 
+use test_support::motors::QSH4218_CHART;
+
 use profile_core::motor::{CurrentSetting, Drive, Motor, MotorError, TorqueCurve, Windings};
 use stepper_profiles::{
     Curve, JerkLimited, Linear, LinearExtent, Spec, ThreeStage, Timer, TorqueLimited,
@@ -39,24 +41,11 @@ struct Case {
 fn cases() -> Vec<Case> {
     // TRINAMIC's QSH4218-47-28-040 by its manual's chart (profiles.toml),
     // in 1/8 steps, up to the chart's end, 1500 rpm.
-    let chart = [
-        (0.0, 0.40),
-        (4000.0, 0.404),
-        (8000.0, 0.404),
-        (12000.0, 0.389),
-        (16000.0, 0.375),
-        (20000.0, 0.344),
-        (24000.0, 0.308),
-        (28000.0, 0.281),
-        (32000.0, 0.255),
-        (36000.0, 0.245),
-        (40000.0, 0.235),
-    ];
     let qsh = Motor::new(1.8, 8, 6.8e-6)
         .with_load_inertia(1.36e-5)
         .with_friction(0.02)
         .with_damping_ratio(0.1);
-    let qsh_chart = qsh.with_torque_curve(TorqueCurve::new(&chart).unwrap());
+    let qsh_chart = qsh.with_torque_curve(TorqueCurve::new(&QSH4218_CHART).unwrap());
     // The same by its windings, 24 V, to 2500 rpm.
     let qsh_windings = qsh.with_windings(Windings::new(0.5, 0.6e-3, 2.8, 0.40, 24.0));
     // StepperOnline's 23HS32-4004S by its windings, on a DM542T at 4.2 A

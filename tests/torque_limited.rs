@@ -4,30 +4,17 @@
 //! by an integrator of its own (not `simulate`), follows it without losing
 //! a step, and loses steps once the margin is gone and the load is raised.
 
+use test_support::motors::QSH4218_CHART as CHART;
+
 use profile_core::__private::golden;
 use profile_core::motor::{Motor, MotorError, TorqueCurve};
 use profile_core::player::{Player, Ramp};
 use profile_core::profiles::Profiles;
 use stepper_profiles::{Curve, Generated, Spec, Timer, period_table};
 
-/// The shipped QSH4218-47-28-040 in 1/8 steps (profiles.toml): its
-/// manual's pull-out chart, twice its rotor's inertia as load, 0.02 N·m of
-/// friction, undamped, no safety factor.
-const CHART: [(f64, f64); 11] = [
-    (0.0, 0.40),
-    (4000.0, 0.404),
-    (8000.0, 0.404),
-    (12000.0, 0.389),
-    (16000.0, 0.375),
-    (20000.0, 0.344),
-    (24000.0, 0.308),
-    (28000.0, 0.281),
-    (32000.0, 0.255),
-    (36000.0, 0.245),
-    (40000.0, 0.235),
-];
-
-/// The start a profile without `fmin` takes on it.
+/// The start a profile without `fmin` takes on the shipped
+/// QSH4218-47-28-040 in 1/8 steps (its chart, twice its rotor's inertia as
+/// load, 0.02 N·m of friction, undamped, no safety factor).
 const FMIN: f64 = 4870.0;
 
 fn qsh4218(load: f64) -> Motor {

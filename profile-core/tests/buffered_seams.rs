@@ -306,66 +306,130 @@ fn at_rest_turns<const N: usize>(edges: &[Edge<N>], slowest: u16) -> Result<(), 
     Ok(())
 }
 
-/// The plain axis with the same calls after the same periods handed out.
-fn plain_axis(table: &[u16], from: i64, made: &[Made<i64>]) -> Result<Vec<Edge<1>>, TestCaseError> {
-    let mut axis = Axis::new(Player::new(Ramp::steps(table)), from);
+/// What the plain (unbuffered) steppers do that the replay needs.
+trait Plain<const N: usize> {
+    type Target;
+    /// The next step: its period and the mask of the axes that take it.
+    fn next(&mut self) -> Option<(u16, u32)>;
+    /// Makes the call `op`, `last` the target sent last.
+    fn apply(&mut self, op: &Op<Self::Target>, last: &Self::Target);
+    fn directions(&self) -> [Direction; N];
+    fn position(&self) -> [i64; N];
+}
+
+impl Plain<1> for Axis<'_, u16> {
+    type Target = i64;
+    fn next(&mut self) -> Option<(u16, u32)> {
+        let mut period = 0;
+        self.step(|p| period = p).then_some((period, 1))
+    }
+    fn apply(&mut self, op: &Op<i64>, last: &i64) {
+        match op {
+            Op::MoveTo(t) => {
+                self.move_to(*t);
+            }
+            Op::Again => {
+                self.move_to(*last);
+            }
+            Op::Run(forward) => {
+                self.run(direction(*forward));
+            }
+            Op::Stop => self.stop(),
+            Op::Cruise(pos) => self.set_cruise(*pos),
+            Op::CruisePeriod(p) => self.set_cruise_period(*p),
+            Op::Wait => {}
+        }
+    }
+    fn directions(&self) -> [Direction; 1] {
+        [self.direction()]
+    }
+    fn position(&self) -> [i64; 1] {
+        [Axis::position(self)]
+    }
+}
+
+impl<const N: usize> Plain<N> for Axes<'_, u16, N> {
+    type Target = [i64; N];
+    fn next(&mut self) -> Option<(u16, u32)> {
+        self.next_step()
+    }
+    fn apply(&mut self, op: &Op<[i64; N]>, last: &[i64; N]) {
+        match op {
+            Op::MoveTo(t) => {
+                self.move_to(*t);
+            }
+            Op::Again => {
+                self.move_to(*last);
+            }
+            Op::Run(_) => unreachable!("axes do not run"),
+            Op::Stop => self.stop(),
+            Op::Cruise(pos) => self.set_cruise(*pos),
+            Op::CruisePeriod(p) => self.set_cruise_period(*p),
+            Op::Wait => {}
+        }
+    }
+    fn directions(&self) -> [Direction; N] {
+        Axes::directions(self)
+    }
+    fn position(&self) -> [i64; N] {
+        Axes::position(self)
+    }
+}
+
+/// The plain stepper `plain`, from `from`, with the same calls after the
+/// same periods handed out: the edges it takes.
+fn replay<const N: usize, P: Plain<N>>(
+    mut plain: P,
+    from: P::Target,
+    made: &[Made<P::Target>],
+) -> Result<Vec<Edge<N>>, TestCaseError>
+where
+    P::Target: Clone,
+{
     let mut edges = vec![];
     let mut before: Option<u16> = None;
     let mut handed = 0usize;
     let mut last = from;
-    let step = |axis: &mut Axis<'_, u16>, edges: &mut Vec<Edge<1>>, before: &mut Option<u16>| {
-        let mut period = 0;
-        let stepped = axis.step(|p| period = p);
-        if stepped {
+    let mut step = |plain: &mut P, edges: &mut Vec<Edge<N>>| match plain.next() {
+        Some((period, mask)) => {
             edges.push((
                 before.map(u64::from),
-                1,
-                [axis.direction()],
-                [axis.position()],
+                mask,
+                plain.directions(),
+                plain.position(),
             ));
-            *before = Some(period);
-        } else {
-            *before = None;
+            before = Some(period);
+            true
         }
-        stepped
+        None => {
+            before = None;
+            false
+        }
     };
     for (at, rest, op) in made {
         while handed < *at {
-            prop_assert!(
-                step(&mut axis, &mut edges, &mut before),
-                "ended before {at} periods"
-            );
+            prop_assert!(step(&mut plain, &mut edges), "ended before {at} periods");
             handed += 1;
         }
         if *rest {
-            prop_assert!(
-                !step(&mut axis, &mut edges, &mut before),
-                "at rest after {at} periods"
-            );
+            prop_assert!(!step(&mut plain, &mut edges), "at rest after {at} periods");
         }
-        match op {
-            Op::MoveTo(t) => {
-                last = *t;
-                axis.move_to(*t);
-            }
-            Op::Again => {
-                axis.move_to(last);
-            }
-            Op::Run(forward) => {
-                axis.run(direction(*forward));
-            }
-            Op::Stop => axis.stop(),
-            Op::Cruise(pos) => axis.set_cruise(*pos),
-            Op::CruisePeriod(p) => axis.set_cruise_period(*p),
-            Op::Wait => {}
+        plain.apply(op, &last);
+        if let Op::MoveTo(t) = op {
+            last = t.clone();
         }
     }
     let mut n = 0;
-    while step(&mut axis, &mut edges, &mut before) {
+    while step(&mut plain, &mut edges) {
         n += 1;
         prop_assert!(n < 200_000, "a move without end");
     }
     Ok(edges)
+}
+
+/// The plain axis with the same calls after the same periods handed out.
+fn plain_axis(table: &[u16], from: i64, made: &[Made<i64>]) -> Result<Vec<Edge<1>>, TestCaseError> {
+    replay(Axis::new(Player::new(Ramp::steps(table)), from), from, made)
 }
 
 /// The plain axes with the same calls after the same periods handed out.
@@ -374,64 +438,7 @@ fn plain_axes<const N: usize>(
     from: [i64; N],
     made: &[Made<[i64; N]>],
 ) -> Result<Vec<Edge<N>>, TestCaseError> {
-    let mut axes = Axes::new(Player::new(Ramp::steps(table)), from);
-    let mut edges = vec![];
-    let mut before: Option<u16> = None;
-    let mut handed = 0usize;
-    let mut last = from;
-    let step = |axes: &mut Axes<'_, u16, N>, edges: &mut Vec<Edge<N>>, before: &mut Option<u16>| {
-        match axes.next_step() {
-            Some((period, mask)) => {
-                edges.push((
-                    before.map(u64::from),
-                    mask,
-                    axes.directions(),
-                    axes.position(),
-                ));
-                *before = Some(period);
-                true
-            }
-            None => {
-                *before = None;
-                false
-            }
-        }
-    };
-    for (at, rest, op) in made {
-        while handed < *at {
-            prop_assert!(
-                step(&mut axes, &mut edges, &mut before),
-                "ended before {at} periods"
-            );
-            handed += 1;
-        }
-        if *rest {
-            prop_assert!(
-                !step(&mut axes, &mut edges, &mut before),
-                "at rest after {at} periods"
-            );
-        }
-        match op {
-            Op::MoveTo(t) => {
-                last = *t;
-                axes.move_to(*t);
-            }
-            Op::Again => {
-                axes.move_to(last);
-            }
-            Op::Run(_) => unreachable!("axes do not run"),
-            Op::Stop => axes.stop(),
-            Op::Cruise(pos) => axes.set_cruise(*pos),
-            Op::CruisePeriod(p) => axes.set_cruise_period(*p),
-            Op::Wait => {}
-        }
-    }
-    let mut n = 0;
-    while step(&mut axes, &mut edges, &mut before) {
-        n += 1;
-        prop_assert!(n < 200_000, "a move without end");
-    }
-    Ok(edges)
+    replay(Axes::new(Player::new(Ramp::steps(table)), from), from, made)
 }
 
 /// The target the last calls leave, if they leave one: the last target

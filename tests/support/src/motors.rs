@@ -1,6 +1,7 @@
 //! The NEMA 17 of the motor tests: a 1.8° motor, 0.40 N·m holding torque,
 //! rotor inertia 5.4e-6 kg·m², friction 0.02 N·m, its pull-out curve in full
-//! steps per second scaled to the table's steps.
+//! steps per second scaled to the table's steps; and the chart of the
+//! shipped QSH4218-47-28-040.
 
 use profile_core::motor::{Motor, TorqueCurve};
 
@@ -26,3 +27,20 @@ pub fn nema17(microsteps: u32, load: f64) -> Motor {
         .with_load_inertia(load)
         .with_friction(0.02)
 }
+
+/// TRINAMIC's QSH4218-47-28-040 by its manual's pull-out chart, as the
+/// shipped `profiles.toml` gives it: N·m against steps per second in 1/8
+/// steps, up to 1500 rpm.
+pub const QSH4218_CHART: [(f64, f64); 11] = [
+    (0.0, 0.40),
+    (4000.0, 0.404),
+    (8000.0, 0.404),
+    (12000.0, 0.389),
+    (16000.0, 0.375),
+    (20000.0, 0.344),
+    (24000.0, 0.308),
+    (28000.0, 0.281),
+    (32000.0, 0.255),
+    (36000.0, 0.245),
+    (40000.0, 0.235),
+];
