@@ -1,6 +1,6 @@
 //! How much sooner the fastest ramp a motor allows (`torque_limited`)
 //! reaches its top speed than the steepest ramp of each other shape that
-//! passes the same motor check, on four motors.
+//! passes the same motor check, on five motors and drives.
 //!
 //! The check is the motor's own, and at `margin = 0.5` at every edge: the
 //! torque of the motor with its safety factor over the margin, so that
@@ -65,6 +65,16 @@ fn cases() -> Vec<Case> {
         .with_load_inertia(1.4e-3)
         .with_friction(0.15)
         .with_damping_ratio(0.1);
+    // Its 23HE45-4204S body on a DM556T at 4.1 A RMS from 36 V, in 1/10
+    // steps, to 600 rpm: the sine-driven chart of the same windings.
+    let dm556t = Motor::new(1.8, 10, 6.8e-5)
+        .with_windings(
+            Windings::new(0.88, 3.4e-3, 4.2, 3.0, 36.0)
+                .with_driver_current(4.1, CurrentSetting::Rms),
+        )
+        .with_load_inertia(1.4e-3)
+        .with_friction(0.15)
+        .with_damping_ratio(0.1);
     vec![
         Case {
             name: "QSH4218-47-28-040, windings, to 2500 rpm",
@@ -80,6 +90,11 @@ fn cases() -> Vec<Case> {
             name: "23HS45-4204S, half steps, to 600 rpm",
             motor: half,
             fmax: 600.0 / 60.0 * 400.0,
+        },
+        Case {
+            name: "23HE45-4204S, DM556T 4.1 A, to 600 rpm",
+            motor: dm556t,
+            fmax: 600.0 / 60.0 * 2000.0,
         },
         Case {
             name: "QSH4218-47-28-040, chart, to 1500 rpm",
@@ -161,6 +176,7 @@ fn the_fastest_ramp_against_the_steepest_of_each_shape() {
         "{:<42} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9}",
         "motor", "torque_l", "linear", "3-stage", "jerk_lim", "shorter", "floor", "at most"
     );
+    let mut quarter_shorter = 0;
     for case in cases() {
         let motor = &case.motor;
         let fmax = case.fmax;
@@ -168,7 +184,9 @@ fn the_fastest_ramp_against_the_steepest_of_each_shape() {
         let mut fmin = motor.start_limit(fmax).hz() * MARGIN;
         let mut ramp = None;
         for _ in 0..20 {
-            let r = motor.torque_limited(Some(fmin), fmax, MARGIN).unwrap();
+            let r = motor
+                .torque_limited(Some(fmin), fmax, MARGIN, Timer::new(TIMER_HZ))
+                .unwrap();
             if judged(motor, Curve::TorqueLimited(r)).is_some() {
                 ramp = Some(r);
                 break;
@@ -254,9 +272,12 @@ fn the_fastest_ramp_against_the_steepest_of_each_shape() {
             (1.0 - least / best) * 100.0
         );
         assert!(shorter > 0.0, "{}: not shorter than the best", case.name);
-        // Within 5 % of the floor, and no ramp below it.
+        if shorter >= 0.25 {
+            quarter_shorter += 1;
+        }
+        // Within 3 % of the floor, and no ramp below it.
         assert!(
-            time >= least && time < least * 1.05,
+            time >= least && time < least * 1.03,
             "{}: {time} s against {least} s",
             case.name
         );
@@ -268,6 +289,12 @@ fn the_fastest_ramp_against_the_steepest_of_each_shape() {
             );
         }
     }
+    // At least a quarter shorter than the best of the others on three
+    // motors (where the floor allows it).
+    assert!(
+        quarter_shorter >= 3,
+        "{quarter_shorter} rows a quarter shorter"
+    );
 }
 
 /// A ramp with a larger `margin` plans on more of the torque: it is
@@ -275,11 +302,11 @@ fn the_fastest_ramp_against_the_steepest_of_each_shape() {
 /// over it.
 #[test]
 fn a_larger_margin_is_shorter_and_leaves_less_to_spare() {
-    let case = &cases()[3];
+    let case = &cases()[4];
     let figures = |margin: f64| {
         let ramp: TorqueLimited = case
             .motor
-            .torque_limited(Some(1000.0), case.fmax, margin)
+            .torque_limited(Some(1000.0), case.fmax, margin, Timer::new(TIMER_HZ))
             .unwrap();
         let spec = Spec::new(Curve::TorqueLimited(ramp), Timer::new(TIMER_HZ));
         let table = spec.table().unwrap();

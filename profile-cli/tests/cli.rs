@@ -693,7 +693,7 @@ fn report_gives_the_time_the_fastest_ramp_saves() {
     let report = text(&out.stdout);
     let section = after(
         &report,
-        "`torque_limited`: the fastest ramp the motor allows, planned on 0.7 of its torque",
+        "`torque_limited`: the fastest ramp the motor allows, planned on 0.65 of its torque",
     );
     let lines: Vec<&str> = section.lines().take(3).collect();
     let numbers = |line: &str| -> Vec<f64> {
@@ -704,7 +704,7 @@ fn report_gives_the_time_the_fastest_ramp_saves() {
     // "  at its top, 40000.0 Hz: available A N·m, planned P N·m ..."
     let top = numbers(lines[1]);
     assert_eq!(top[0], 40_000.0, "{}", lines[1]);
-    assert!((top[1] * 0.7 - top[2]).abs() < 1e-4, "{}", lines[1]);
+    assert!((top[1] * 0.65 - top[2]).abs() < 1e-4, "{}", lines[1]);
     // "  to 40000.0 Hz in T ms; ... from F Hz ..., A Hz/s, takes L ms: S % saved"
     let times = numbers(lines[2]);
     let (time, fmin, accel, linear, saved) = (times[1], times[2], times[3], times[4], times[5]);

@@ -82,13 +82,15 @@ impl AccelCurve {
 /// the step frequency rises at `df/dt = a(f)`, the acceleration
 /// [`AccelCurve`] gives at each frequency. From a motor
 /// ([`Motor::torque_limited`](crate::motor::Motor::torque_limited)),
-/// `a(f) = (margin · pull-out torque(f) / safety - friction - damping · θ ·
-/// f) / (J · θ)`, `θ` the angle of a table step and `J` the rotor's and the
-/// load's inertia (3 % of the torque left for the check's reading of the
-/// acceleration off rounded periods): at every speed all the torque the motor gives at `margin`
-/// times its own (the same sums the motor check makes), so the ramp passes
-/// the check of the motor with `safety / margin` by construction, and no
-/// ramp that passes it is faster at any speed.
+/// `a(f) = (s · margin · pull-out torque(f') / safety - friction - damping
+/// · θ · f') / (J · θ)`, `θ` the angle of a table step, `J` the rotor's and
+/// the load's inertia, `f'` one step's gain of speed ahead of `f` (where
+/// the check judges the step) and `s` the largest share of the torque,
+/// from 1 down to 0.8, with which the table on its timer passes: at every
+/// speed all the torque the motor gives at `margin` times its own (the
+/// same sums the motor check makes), so the table passes the check of the
+/// motor with `safety / margin`, and no ramp that passes it is faster at
+/// any speed.
 ///
 /// Between two points of the acceleration curve, `a` is a straight line in
 /// `f`, `a(f) = a_0 + s (f - f_0)`, and the ramp is solved in closed form:

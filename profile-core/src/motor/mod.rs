@@ -33,6 +33,7 @@ pub(crate) mod bounds;
 mod builder;
 mod check;
 mod chopper;
+#[cfg(feature = "std")]
 mod limited;
 // Public as `simulate`, at the crate root (one path per item); declared
 // here, beside the model it plays.
@@ -268,6 +269,21 @@ pub enum MotorError {
         /// The fastest start the loaded rotor follows, and how it was found.
         limit: StartLimit,
     },
+    /// A `torque_limited` ramp whose table, on 0.8 of the torque its
+    /// `margin` allows, still needs more than that at an edge, read off
+    /// its rounded periods: too few ticks a period for the torque there is
+    /// to spare there.
+    MarginUnkept {
+        /// The step (index of the table entry after the edge).
+        step: u32,
+        /// The step frequency there, in Hz.
+        hz: f64,
+        /// The torque the edge needs, in N·m.
+        needed_nm: f64,
+        /// The torque `margin` allows there (the pull-out torque times
+        /// `margin`, over the safety factor), in N·m.
+        available_nm: f64,
+    },
     /// A `torque_limited` ramp: at `hz` the motor has no torque to spare
     /// for accelerating.
     NoSpareTorque {
@@ -293,7 +309,7 @@ impl MotorError {
             | MotorError::ShortMove { .. } => Key::MOTOR,
             MotorError::NotFinite { .. } => Key::ROTOR_INERTIA,
             MotorError::EmptyTable => Key::MOTOR,
-            MotorError::NoSpareTorque { .. } => Key::FMAX,
+            MotorError::NoSpareTorque { .. } | MotorError::MarginUnkept { .. } => Key::FMAX,
         }
     }
 }
@@ -373,21 +389,45 @@ impl fmt::Display for MotorError {
                 remedies,
             } => start::short_move(f, hz, (pulse, steps), remedies),
             MotorError::Start { hz, limit } => start::start(f, hz, limit),
-            MotorError::NoSpareTorque {
-                hz,
-                available_nm,
-                load_nm,
-            } => write!(
-                f,
-                "the motor has no torque to spare at {} Hz to accelerate a `torque_limited` \
-                 ramp: the ramp plans on {} N·m of its torque there (`margin` of it, after the \
-                 safety factor), and the load, friction and damping take {} N·m; lower `fmax` \
-                 or raise `margin`",
-                Fixed(hz, 1),
-                Fixed(available_nm, 4),
-                Fixed(load_nm, 4)
-            ),
+            MotorError::MarginUnkept { .. } | MotorError::NoSpareTorque { .. } => limited(f, self),
         }
+    }
+}
+
+/// The messages of a `torque_limited` ramp the motor cannot give:
+/// [`MotorError::MarginUnkept`] and [`MotorError::NoSpareTorque`].
+fn limited(f: &mut fmt::Formatter<'_>, e: &MotorError) -> fmt::Result {
+    match *e {
+        MotorError::MarginUnkept {
+            step,
+            hz,
+            needed_nm,
+            available_nm,
+        } => write!(
+            f,
+            "a `torque_limited` ramp cannot keep its `margin` on this timer: at step {step} \
+             ({} Hz) its periods, rounded to whole ticks, read as needing {} N·m where \
+             `margin` of the torque is {} N·m, even planned on 0.8 of it; raise \
+             `timer_hz`, lower `fmax` or raise `margin`",
+            Fixed(hz, 1),
+            Fixed(needed_nm, 4),
+            Fixed(available_nm, 4)
+        ),
+        MotorError::NoSpareTorque {
+            hz,
+            available_nm,
+            load_nm,
+        } => write!(
+            f,
+            "the motor has no torque to spare at {} Hz to accelerate a `torque_limited` \
+             ramp: the ramp plans on {} N·m of its torque there (`margin` of it, after the \
+             safety factor), and the load, friction and damping take {} N·m; lower `fmax` \
+             or raise `margin`",
+            Fixed(hz, 1),
+            Fixed(available_nm, 4),
+            Fixed(load_nm, 4)
+        ),
+        _ => Ok(()),
     }
 }
 

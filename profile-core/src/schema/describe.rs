@@ -121,7 +121,7 @@ pub fn locate_motor<L: Clone>(error: &MotorError, args: &[Arg<L>], whole: &L) ->
         | MotorError::PullIn { .. }
         | MotorError::ShortMove { .. } => Key::FMIN,
         MotorError::Start { .. } => Key::MAX_START_HZ,
-        MotorError::NoSpareTorque { .. } => Key::FMAX,
+        MotorError::NoSpareTorque { .. } | MotorError::MarginUnkept { .. } => Key::FMAX,
         MotorError::Torque {
             from_windings: Some(_),
             ..

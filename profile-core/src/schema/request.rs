@@ -116,7 +116,8 @@ pub fn read<L: Clone>(
 /// motor has no torque to spare. Without `fmin`, the start is the fastest
 /// the start-from-rest check accepts with the ramp's acceleration after
 /// it: the model's fastest constant start times `margin`, and four fifths
-/// of that as often as the check refuses the start (at most 20 times).
+/// of that as often as the check refuses the start or the margin cannot be
+/// kept on it (at most 20 times).
 fn limited_by<L: Clone>(
     c: &mut Collector<'_, L>,
     ramp: &mut TorqueLimited,
@@ -145,9 +146,16 @@ fn limited_by<L: Clone>(
         let start = motor.start_limit(ramp.fmax).hz() * ramp.margin;
         fmin = Some(three_digits_down(start));
     }
-    for _ in 0..START_TRIES {
-        let limited = match motor.torque_limited(fmin, ramp.fmax, ramp.margin) {
+    for tried in 0..START_TRIES {
+        let limited = match motor.torque_limited(fmin, ramp.fmax, ramp.margin, timer) {
             Ok(limited) => limited,
+            // A slower start the margin cannot be kept on is passed over:
+            // a slower one yet may keep it, or the last start that kept it
+            // is the motor check's to report.
+            Err(_) if tried > 0 => {
+                fmin = fmin.map(|hz| three_digits_down(hz * 0.8));
+                continue;
+            }
             Err(e) => {
                 let d = super::locate_motor(&e, c.args, c.whole);
                 c.diagnostics.push((usize::MAX, d));
