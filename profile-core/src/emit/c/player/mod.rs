@@ -25,10 +25,40 @@
 //! nogcse`, `noinduction`, `noinvariant`). Every macro is the user's to
 //! define first.
 //!
-//! The C text is in `plan.rs` (shared), `steps.rs`, `runs.rs` and
-//! `cursor.rs` (positions along a table of runs), with `@T@` for the
-//! player's prefix, `@W@` for the period's type, `@S@` for the storage word
-//! and `@R@` for the read macro.
+//! The C is in C files beside this one, read with `include_str!` and
+//! compiled on their own as C89 by the tests (`tests/c_templates.rs`):
+//!
+//! - `portability.h`: the macros above, each the user's to define first.
+//! - `steps.h`, `steps.c`, `steps_init.c`: the player of per-step tables
+//!   (`NAME_PERIODS`, `uint16_t` or `uint32_t`): its type, its inline step
+//!   path and its declarations; the definitions the shared planner uses;
+//!   `_init`, after the planner it starts.
+//! - `runs.h`, `runs_refill.c`, `cursor.c`, `runs.c`, `runs_init.c`: the
+//!   player of compressed tables (`NAME_RUNS`): its type, step path and
+//!   declarations; the refill the step path calls at a run's end; positions
+//!   along a table of runs (a cursor at a step, found by reading the runs
+//!   from the first, then moved a step at a time either way, the remainder
+//!   carried as the step path carries it); where a stretch starts and the
+//!   definitions the planner uses; `_init` (the tables' lengths in steps,
+//!   the deceleration table's fastest period, the first acceleration step
+//!   faster than it). A run is played with the recurrence of
+//!   `runs::Expand` (`x = frac + interval; period = x >> 16; frac = x &
+//!   0xFFFF; interval += add`), the remainder `frac` in 16 bits, as the Rust
+//!   player plays it: forwards from a run's first step, backwards from its
+//!   last with the remainder's complement and `-add` (the reflected edges'
+//!   ceiling differences). The remainder carries from run to run either
+//!   way, so that entering the next run forwards reads its words, and
+//!   entering the previous run backwards reads its words and computes its
+//!   last step's interval (one multiplication per run).
+//! - `plan.c`: the move's plan, shared by both: `Player::start`, `stop` and
+//!   `set_cruise` with the planner of `player::plan`, written against a few
+//!   functions each kind defines (`_period_`, `_place_`, `_settle_`,
+//!   `_crossing_`, `_capped_walk_`, `_last_`, `_enter_`, `_first_`).
+//!
+//! In them, `tpl` stands for the player's prefix (`ramps_player`),
+//! `TPL_WORD` for the period's type, `TPL_STORAGE ` for the storage word
+//! and a space (or nothing) and `TPL_READ` for the macro that reads one
+//! word of a table: names C compiles as they are, each replaced whole.
 
 use std::format;
 use std::string::String;
@@ -39,10 +69,19 @@ use crate::base::timer::Word;
 use crate::emit::Profile;
 use crate::table::computed::Generated;
 
-mod cursor;
-mod plan;
-mod runs;
-mod steps;
+/// The C the players are made of, as the files beside this one hold it.
+mod c {
+    pub(super) const PORTABILITY: &str = include_str!("portability.h");
+    pub(super) const STEPS_API: &str = include_str!("steps.h");
+    pub(super) const STEPS: &str = include_str!("steps.c");
+    pub(super) const STEPS_INIT: &str = include_str!("steps_init.c");
+    pub(super) const PLAN: &str = include_str!("plan.c");
+    pub(super) const RUNS_API: &str = include_str!("runs.h");
+    pub(super) const RUNS_REFILL: &str = include_str!("runs_refill.c");
+    pub(super) const CURSOR: &str = include_str!("cursor.c");
+    pub(super) const RUNS: &str = include_str!("runs.c");
+    pub(super) const RUNS_INIT: &str = include_str!("runs_init.c");
+}
 
 /// Which players a header holds: one per kind of table among its profiles.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -134,10 +173,10 @@ struct Fill {
 impl Fill {
     fn apply(&self, template: &str) -> String {
         template
-            .replace("@T@", &self.name)
-            .replace("@W@", self.word)
-            .replace("@S@", &self.storage)
-            .replace("@R@", &self.read)
+            .replace("TPL_WORD", self.word)
+            .replace("TPL_STORAGE ", &self.storage)
+            .replace("TPL_READ", &self.read)
+            .replace("tpl", &self.name)
     }
 
     /// `templates` filled, unless the user defines the player's omit macro.
@@ -169,20 +208,14 @@ struct Templates {
 
 /// The per-step player's templates.
 const STEPS: Templates = Templates {
-    api: steps::API,
-    definitions: &[steps::DEFINITIONS, plan::PLAN, steps::INIT],
+    api: c::STEPS_API,
+    definitions: &[c::STEPS, c::PLAN, c::STEPS_INIT],
 };
 
 /// The runs player's templates.
 const RUNS: Templates = Templates {
-    api: runs::API,
-    definitions: &[
-        runs::REFILL,
-        cursor::CURSOR,
-        runs::DEFINITIONS,
-        plan::PLAN,
-        runs::INIT,
-    ],
+    api: c::RUNS_API,
+    definitions: &[c::RUNS_REFILL, c::CURSOR, c::RUNS, c::PLAN, c::RUNS_INIT],
 };
 
 /// The players of `kinds`, each with its templates.
@@ -229,59 +262,8 @@ pub(super) fn api(names: &Names, style: &CStyle, kinds: Kinds) -> String {
     if !kinds.any() {
         return String::new();
     }
-    let mut out = String::from(
-        "/* A player's step path is inline: a step interrupt calling it calls no\n \
-         * function, and saves only the registers it uses. Not on SDCC's 8051\n \
-         * port, whose version 4.2 inlines these functions into reentrant ones\n \
-         * wrong. */\n\
-         #ifndef STEPPER_PROFILES_INLINE\n\
-         #if defined(__SDCC_mcs51)\n\
-         #define STEPPER_PROFILES_INLINE static\n\
-         #elif defined(__GNUC__)\n\
-         #define STEPPER_PROFILES_INLINE static __inline__ __attribute__((__always_inline__))\n\
-         #elif defined(__STDC_VERSION__) && __STDC_VERSION__ >= 199901L\n\
-         #define STEPPER_PROFILES_INLINE static inline\n\
-         #else\n\
-         #define STEPPER_PROFILES_INLINE static\n\
-         #endif\n\
-         #endif\n\
-         /* A refill is the exception: laid out off the step path where the\n \
-         * compiler can be told so. */\n\
-         #ifndef STEPPER_PROFILES_UNLIKELY\n\
-         #if defined(__GNUC__)\n\
-         #define STEPPER_PROFILES_UNLIKELY(x) __builtin_expect(!!(x), 0)\n\
-         #else\n\
-         #define STEPPER_PROFILES_UNLIKELY(x) (x)\n\
-         #endif\n\
-         #endif\n\
-         /* What only the rarest refills need stays out of their way. */\n\
-         #ifndef STEPPER_PROFILES_NOINLINE\n\
-         #if defined(__GNUC__)\n\
-         #define STEPPER_PROFILES_NOINLINE __attribute__((__noinline__))\n\
-         #else\n\
-         #define STEPPER_PROFILES_NOINLINE\n\
-         #endif\n\
-         #endif\n\
-         /* SDCC's 8051 port spills registers to internal RAM, of which an 8051\n \
-         * addresses 128 bytes directly. There every function of the players is\n \
-         * reentrant, its spills on the stack only while it runs, and the\n \
-         * planner keeps its locals in fixed places off the stack (external RAM\n \
-         * with --model-large): plan one move at a time. */\n\
-         #ifndef STEPPER_PROFILES_REENTRANT\n\
-         #if defined(__SDCC_mcs51)\n\
-         #define STEPPER_PROFILES_REENTRANT __reentrant\n\
-         #else\n\
-         #define STEPPER_PROFILES_REENTRANT\n\
-         #endif\n\
-         #endif\n\
-         #ifndef STEPPER_PROFILES_LOCAL\n\
-         #if defined(__SDCC_mcs51)\n\
-         #define STEPPER_PROFILES_LOCAL static\n\
-         #else\n\
-         #define STEPPER_PROFILES_LOCAL\n\
-         #endif\n\
-         #endif\n\n",
-    );
+    let mut out = String::from(c::PORTABILITY);
+    out.push('\n');
     for (fill, templates) in players(names, style, kinds) {
         out.push_str(&format!(
             "/* To leave this player out, define {} where the header is included\n \

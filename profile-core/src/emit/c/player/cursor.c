@@ -1,13 +1,4 @@
-//! Positions along a compressed table in C, for the planner of the runs
-//! player (`runs.rs`): a cursor at a step of a table of runs, found by
-//! reading the runs from the first, then moved a step at a time either way;
-//! the remainder carried as the step path carries it.
-//!
-//! `@T@` is the player's prefix (`ramps_runs_player`), `@S@` the storage word
-//! and a space (or nothing), `@R@` the macro that reads one word of a table.
-
-/// The cursor's type and functions, and the period at a step of a table.
-pub(super) const CURSOR: &str = r#"/* A position along a table of runs (the deceleration table when `decel`):
+/* A position along a table of runs (the deceleration table when `decel`):
  * its run, its step in the run, the remainder before it and its interval;
  * its run's add and count, read once (add 0 past the table). */
 typedef struct {
@@ -20,10 +11,10 @@ typedef struct {
     uint16_t count;
     unsigned char in_table;
     unsigned char decel;
-} @T@_cursor_t;
+} tpl_cursor_t;
 
 /* The words of run `e` of the cursor's table; 0 past its end. */
-static const @S@uint16_t *@T@_run_(const @T@_t *p, const @T@_cursor_t *c, uint16_t e)
+static const TPL_STORAGE uint16_t *tpl_run_(const tpl_t *p, const tpl_cursor_t *c, uint16_t e)
     STEPPER_PROFILES_REENTRANT
 {
     if (e >= (c->decel ? p->decel_runs : p->accel_runs)) {
@@ -35,7 +26,7 @@ static const @S@uint16_t *@T@_run_(const @T@_t *p, const @T@_cursor_t *c, uint16
 /* The remainder `n` steps of a run later: frac + n * interval +
  * n (n - 1) / 2 * add, of which only the low 16 bits count, so 16-bit
  * products (the triangle's halved factor chosen by parity). */
-static uint16_t @T@_ahead_(uint16_t frac, uint16_t interval, uint16_t add, uint16_t n)
+static uint16_t tpl_ahead_(uint16_t frac, uint16_t interval, uint16_t add, uint16_t n)
     STEPPER_PROFILES_REENTRANT
 {
     uint16_t triangle = (n & 1u) ? (uint16_t)((unsigned)n * (uint16_t)((n - 1u) >> 1))
@@ -45,29 +36,29 @@ static uint16_t @T@_ahead_(uint16_t frac, uint16_t interval, uint16_t add, uint1
 
 /* The cursor at step `c->pos` of its table; 0 past its end. The runs before
  * it move the remainder on: their counts and low words only. */
-static unsigned char @T@_at_(const @T@_t *p, @T@_cursor_t *c) STEPPER_PROFILES_REENTRANT
+static unsigned char tpl_at_(const tpl_t *p, tpl_cursor_t *c) STEPPER_PROFILES_REENTRANT
 {
-    STEPPER_PROFILES_LOCAL const @S@uint16_t *r;
+    STEPPER_PROFILES_LOCAL const TPL_STORAGE uint16_t *r;
     STEPPER_PROFILES_LOCAL uint32_t start;
     STEPPER_PROFILES_LOCAL uint16_t e, count, low, frac;
     start = 0;
     frac = 0x8000u;
-    for (e = 0; (r = @T@_run_(p, c, e)) != 0; e++) {
-        count = @R@(r);
+    for (e = 0; (r = tpl_run_(p, c, e)) != 0; e++) {
+        count = TPL_READ(r);
         if (c->pos - start < count) {
             c->count = count;
-            c->interval = @T@_word32_(r + 1);
-            c->add = @T@_word32_(r + 3);
+            c->interval = tpl_word32_(r + 1);
+            c->add = tpl_word32_(r + 3);
             c->in_table = 1;
             c->entry = e;
             c->within = (uint16_t)(c->pos - start);
-            c->frac = @T@_ahead_(frac, (uint16_t)c->interval, (uint16_t)c->add,
+            c->frac = tpl_ahead_(frac, (uint16_t)c->interval, (uint16_t)c->add,
                 c->within);
             c->interval += (uint32_t)c->within * c->add;
             return 1;
         }
-        low = @R@(r + 2);
-        frac = @T@_ahead_(frac, low, @R@(r + 4), count);
+        low = TPL_READ(r + 2);
+        frac = tpl_ahead_(frac, low, TPL_READ(r + 4), count);
         start = start + count < start ? 0xFFFFFFFFul : start + count;
         if (start > c->pos) {
             return 0;
@@ -77,17 +68,17 @@ static unsigned char @T@_at_(const @T@_t *p, @T@_cursor_t *c) STEPPER_PROFILES_R
 }
 
 /* The period under a cursor, in ticks. */
-static uint32_t @T@_cperiod_(const @T@_cursor_t *c) STEPPER_PROFILES_REENTRANT
+static uint32_t tpl_cperiod_(const tpl_cursor_t *c) STEPPER_PROFILES_REENTRANT
 {
     return (c->frac + c->interval) >> 16;
 }
 
 /* The cursor at step `c->pos`, or at step 0 of the first run with nothing
  * played (period 0) when there is no such step. */
-static void @T@_place_cursor_(const @T@_t *p, @T@_cursor_t *c) STEPPER_PROFILES_REENTRANT
+static void tpl_place_cursor_(const tpl_t *p, tpl_cursor_t *c) STEPPER_PROFILES_REENTRANT
 {
-    STEPPER_PROFILES_LOCAL const @S@uint16_t *r;
-    if (!@T@_at_(p, c)) {
+    STEPPER_PROFILES_LOCAL const TPL_STORAGE uint16_t *r;
+    if (!tpl_at_(p, c)) {
         c->pos = 0;
         c->interval = 0;
         c->entry = 0;
@@ -95,10 +86,10 @@ static void @T@_place_cursor_(const @T@_t *p, @T@_cursor_t *c) STEPPER_PROFILES_
         c->frac = 0;
         c->add = 0;
         c->in_table = 0;
-        r = @T@_run_(p, c, 0);
+        r = tpl_run_(p, c, 0);
         if (r != 0) {
-            c->count = @R@(r);
-            c->add = @T@_word32_(r + 3);
+            c->count = TPL_READ(r);
+            c->add = tpl_word32_(r + 3);
             c->in_table = 1;
         }
     }
@@ -106,23 +97,23 @@ static void @T@_place_cursor_(const @T@_t *p, @T@_cursor_t *c) STEPPER_PROFILES_
 
 /* On to the first step of the next run that holds one, the remainder
  * carried. */
-static void @T@_next_run_(const @T@_t *p, @T@_cursor_t *c) STEPPER_PROFILES_REENTRANT
+static void tpl_next_run_(const tpl_t *p, tpl_cursor_t *c) STEPPER_PROFILES_REENTRANT
 {
-    STEPPER_PROFILES_LOCAL const @S@uint16_t *r;
+    STEPPER_PROFILES_LOCAL const TPL_STORAGE uint16_t *r;
     STEPPER_PROFILES_LOCAL uint16_t count;
     c->within = 0;
     for (;;) {
         c->entry++;
-        r = @T@_run_(p, c, c->entry);
+        r = tpl_run_(p, c, c->entry);
         if (r == 0) {
             c->add = 0;
             c->in_table = 0;
             break;
         }
-        count = @R@(r);
+        count = TPL_READ(r);
         if (count > 0) {
-            c->interval = @T@_word32_(r + 1);
-            c->add = @T@_word32_(r + 3);
+            c->interval = tpl_word32_(r + 1);
+            c->add = tpl_word32_(r + 3);
             c->count = count;
             break;
         }
@@ -130,7 +121,7 @@ static void @T@_next_run_(const @T@_t *p, @T@_cursor_t *c) STEPPER_PROFILES_REEN
 }
 
 /* One step towards the fast end, up to step `last`; 0 at `last`. */
-static unsigned char @T@_forward_(const @T@_t *p, @T@_cursor_t *c, uint32_t last)
+static unsigned char tpl_forward_(const tpl_t *p, tpl_cursor_t *c, uint32_t last)
     STEPPER_PROFILES_REENTRANT
 {
     if (c->pos >= last) {
@@ -141,16 +132,16 @@ static unsigned char @T@_forward_(const @T@_t *p, @T@_cursor_t *c, uint32_t last
     c->frac = (uint16_t)(c->frac + c->interval);
     c->interval += c->add;
     if (c->in_table && c->within >= c->count) {
-        @T@_next_run_(p, c);
+        tpl_next_run_(p, c);
     }
     return 1;
 }
 
 /* One step towards the slow end: within the run, or to the last step of the
  * previous run that holds one; 0 at step 0. */
-static unsigned char @T@_backward_(const @T@_t *p, @T@_cursor_t *c) STEPPER_PROFILES_REENTRANT
+static unsigned char tpl_backward_(const tpl_t *p, tpl_cursor_t *c) STEPPER_PROFILES_REENTRANT
 {
-    STEPPER_PROFILES_LOCAL const @S@uint16_t *r;
+    STEPPER_PROFILES_LOCAL const TPL_STORAGE uint16_t *r;
     STEPPER_PROFILES_LOCAL uint16_t count;
     if (c->pos == 0) {
         return 0;
@@ -164,15 +155,15 @@ static unsigned char @T@_backward_(const @T@_t *p, @T@_cursor_t *c) STEPPER_PROF
     }
     while (c->entry > 0) {
         c->entry--;
-        r = @T@_run_(p, c, c->entry);
+        r = tpl_run_(p, c, c->entry);
         if (r == 0) {
             break;
         }
-        count = @R@(r);
+        count = TPL_READ(r);
         if (count > 0) {
             c->within = (uint16_t)(count - 1u);
-            c->add = @T@_word32_(r + 3);
-            c->interval = @T@_word32_(r + 1) + (uint32_t)c->within * c->add;
+            c->add = tpl_word32_(r + 3);
+            c->interval = tpl_word32_(r + 1) + (uint32_t)c->within * c->add;
             c->frac = (uint16_t)(c->frac - c->interval);
             c->count = count;
             c->in_table = 1;
@@ -183,13 +174,12 @@ static unsigned char @T@_backward_(const @T@_t *p, @T@_cursor_t *c) STEPPER_PROF
 }
 
 /* The period at step `pos` of a table, in ticks; 0 past its end. */
-static uint32_t @T@_period_(const @T@_t *p, unsigned char decel, uint32_t pos)
+static uint32_t tpl_period_(const tpl_t *p, unsigned char decel, uint32_t pos)
     STEPPER_PROFILES_REENTRANT
 {
-    STEPPER_PROFILES_LOCAL @T@_cursor_t c;
+    STEPPER_PROFILES_LOCAL tpl_cursor_t c;
     c.decel = decel;
     c.pos = pos;
-    return @T@_at_(p, &c) ? @T@_cperiod_(&c) : 0;
+    return tpl_at_(p, &c) ? tpl_cperiod_(&c) : 0;
 }
 
-"#;

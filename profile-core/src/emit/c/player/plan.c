@@ -1,14 +1,5 @@
-//! The move's plan in C, shared by every kind of table: `Player::start`,
-//! `stop` and `set_cruise` with the planner of `player::plan`, written
-//! against a few functions each kind defines (`_period_`, `_place_`,
-//! `_settle_`, `_crossing_`, `_capped_walk_`, `_last_`, `_enter_`,
-//! `_first_`).
-//!
-//! `@T@` is the player's prefix (`ramps_player`).
-
-/// The planner's C89 definitions.
-pub(super) const PLAN: &str = r#"/* One step of the acceleration side towards the cruise position: 1, -1 or 0. */
-static signed char @T@_toward_(const @T@_t *p, uint32_t pos) STEPPER_PROFILES_REENTRANT
+/* One step of the acceleration side towards the cruise position: 1, -1 or 0. */
+static signed char tpl_toward_(const tpl_t *p, uint32_t pos) STEPPER_PROFILES_REENTRANT
 {
     return pos < p->cruise ? 1 : pos > p->cruise ? -1 : 0;
 }
@@ -16,10 +7,10 @@ static signed char @T@_toward_(const @T@_t *p, uint32_t pos) STEPPER_PROFILES_RE
 /* Adds a stretch to the plan (at most 8: a capped walk, a walk and a cruise
  * out of reach of the deceleration table, then a walk, a cruise and the
  * deceleration within reach). */
-static void @T@_push_(@T@_t *p, unsigned char decel, uint32_t pos, signed char dir,
+static void tpl_push_(tpl_t *p, unsigned char decel, uint32_t pos, signed char dir,
     uint32_t count, uint32_t acc, signed char acc_dir) STEPPER_PROFILES_REENTRANT
 {
-    STEPPER_PROFILES_LOCAL @T@_stretch_t *s;
+    STEPPER_PROFILES_LOCAL tpl_stretch_t *s;
     if (p->len >= 8) {
         return;
     }
@@ -33,24 +24,24 @@ static void @T@_push_(@T@_t *p, unsigned char decel, uint32_t pos, signed char d
     s->dir = dir;
     s->decel = decel;
     s->decelerating = (unsigned char)(decel && dir < 0);
-    @T@_place_(p, s, pos);
+    tpl_place_(p, s, pos);
 }
 
 /* The acceleration side walking from `pos` for `n` steps (towards the cruise
  * position, reaching it at most), then holding; where it ends. */
-static uint32_t @T@_walk_(@T@_t *p, uint32_t pos, uint32_t n) STEPPER_PROFILES_REENTRANT
+static uint32_t tpl_walk_(tpl_t *p, uint32_t pos, uint32_t n) STEPPER_PROFILES_REENTRANT
 {
     STEPPER_PROFILES_LOCAL uint32_t distance, walked;
     STEPPER_PROFILES_LOCAL signed char dir;
     distance = pos > p->cruise ? pos - p->cruise : p->cruise - pos;
     walked = n < distance ? n : distance;
-    dir = @T@_toward_(p, pos);
+    dir = tpl_toward_(p, pos);
     if (walked > 0) {
-        @T@_push_(p, 0, pos, dir, walked, pos, dir);
+        tpl_push_(p, 0, pos, dir, walked, pos, dir);
     }
     pos = dir > 0 ? pos + walked : pos - walked;
     if (n > walked) {
-        @T@_push_(p, 0, pos, 0, n - walked, pos, 0);
+        tpl_push_(p, 0, pos, 0, n - walked, pos, 0);
     }
     return pos;
 }
@@ -60,7 +51,7 @@ static uint32_t @T@_walk_(@T@_t *p, uint32_t pos, uint32_t n) STEPPER_PROFILES_R
  * table within reach: the acceleration side plays until the deceleration
  * table, read at the steps that remain, is not faster; then the deceleration
  * table plays to the end. */
-static void @T@_plan_(@T@_t *p, uint32_t pos, uint32_t r) STEPPER_PROFILES_REENTRANT
+static void tpl_plan_(tpl_t *p, uint32_t pos, uint32_t r) STEPPER_PROFILES_REENTRANT
 {
     STEPPER_PROFILES_LOCAL uint32_t l, far, n, cap, j;
     STEPPER_PROFILES_LOCAL signed char acc_dir;
@@ -69,12 +60,12 @@ static void @T@_plan_(@T@_t *p, uint32_t pos, uint32_t r) STEPPER_PROFILES_REENT
     while (r > 0 && r - 1 > l) {
         /* The deceleration table is out of reach for `far` more steps. */
         far = r - (l + 1);
-        if (@T@_period_(p, 0, pos) < p->decel_fastest) {
+        if (tpl_period_(p, 0, pos) < p->decel_fastest) {
             /* No faster than the deceleration table's fastest entry: its top
              * plays; the acceleration side only walks down. */
             acc_dir = (signed char)(p->cruise < pos ? -1 : 0);
-            n = acc_dir < 0 ? @T@_capped_walk_(p, pos, far) : far;
-            @T@_push_(p, 1, l, 0, n, pos, acc_dir);
+            n = acc_dir < 0 ? tpl_capped_walk_(p, pos, far) : far;
+            tpl_push_(p, 1, l, 0, n, pos, acc_dir);
             if (acc_dir < 0) {
                 pos -= n;
             }
@@ -88,34 +79,34 @@ static void @T@_plan_(@T@_t *p, uint32_t pos, uint32_t r) STEPPER_PROFILES_REENT
             if (cap < n) {
                 n = cap;
             }
-            pos = @T@_walk_(p, pos, n);
+            pos = tpl_walk_(p, pos, n);
         } else {
-            pos = @T@_walk_(p, pos, far);
+            pos = tpl_walk_(p, pos, far);
             n = far;
         }
         r -= n;
     }
     if (r > 0) {
-        j = @T@_crossing_(p, pos, r);
-        pos = @T@_walk_(p, pos, j);
+        j = tpl_crossing_(p, pos, r);
+        pos = tpl_walk_(p, pos, j);
         if (j < r) {
             n = r - 1 - j;
-            @T@_push_(p, 1, n, -1, n + 1, pos, 0);
+            tpl_push_(p, 1, n, -1, n + 1, pos, 0);
         }
     }
 }
 
 /* Steps of a stretch not yet handed to the step path. */
-static uint32_t @T@_count_(const @T@_stretch_t *s) STEPPER_PROFILES_REENTRANT
+static uint32_t tpl_count_(const tpl_stretch_t *s) STEPPER_PROFILES_REENTRANT
 {
     return ((uint32_t)s->count_hi << 16) | s->count_lo;
 }
 
 /* Hands `n` steps of stretch `s` to the step path: at most 255 at once. */
-static void @T@_take_(@T@_t *p, @T@_stretch_t *s, uint16_t n) STEPPER_PROFILES_REENTRANT
+static void tpl_take_(tpl_t *p, tpl_stretch_t *s, uint16_t n) STEPPER_PROFILES_REENTRANT
 {
     STEPPER_PROFILES_LOCAL uint32_t count;
-    count = @T@_count_(s) - n;
+    count = tpl_count_(s) - n;
     s->count_hi = (uint16_t)(count >> 16);
     s->count_lo = (uint16_t)count;
     p->left = (unsigned char)(n > 255 ? 255 : n);
@@ -123,10 +114,10 @@ static void @T@_take_(@T@_t *p, @T@_stretch_t *s, uint16_t n) STEPPER_PROFILES_R
 }
 
 /* Follows the plan from its start: its first steps taken at once. */
-static void @T@_follow_(@T@_t *p, uint32_t before) STEPPER_PROFILES_REENTRANT
+static void tpl_follow_(tpl_t *p, uint32_t before) STEPPER_PROFILES_REENTRANT
 {
     p->before = before;
-    @T@_settle_(p);
+    tpl_settle_(p);
     p->cur = p->plan;
     p->end = p->plan + p->len;
     p->left = 0;
@@ -135,53 +126,53 @@ static void @T@_follow_(@T@_t *p, uint32_t before) STEPPER_PROFILES_REENTRANT
         p->plan[0].count_hi = 0;
         p->plan[0].count_lo = 0;
     } else {
-        @T@_enter_(p, p->plan);
-        @T@_take_(p, p->plan, @T@_first_(p->plan));
+        tpl_enter_(p, p->plan);
+        tpl_take_(p, p->plan, tpl_first_(p->plan));
     }
 }
 
-uint32_t @T@_remaining(const @T@_t *p) STEPPER_PROFILES_REENTRANT
+uint32_t tpl_remaining(const tpl_t *p) STEPPER_PROFILES_REENTRANT
 {
     STEPPER_PROFILES_LOCAL uint32_t n;
     STEPPER_PROFILES_LOCAL unsigned char i;
     n = (uint32_t)p->left + p->rest;
     for (i = 0; i < p->len; i++) {
-        n += @T@_count_(&p->plan[i]);
+        n += tpl_count_(&p->plan[i]);
     }
     return n;
 }
 
 /* Steps of the stretch being played that have been played. */
-static uint32_t @T@_played_(const @T@_t *p) STEPPER_PROFILES_REENTRANT
+static uint32_t tpl_played_(const tpl_t *p) STEPPER_PROFILES_REENTRANT
 {
-    return p->cur->total - @T@_count_(p->cur) - p->rest - p->left;
+    return p->cur->total - tpl_count_(p->cur) - p->rest - p->left;
 }
 
 /* Where the acceleration side stands after the steps played, and whether the
  * deceleration table has taken over. */
-static uint32_t @T@_acc_(const @T@_t *p, unsigned char *decelerating)
+static uint32_t tpl_acc_(const tpl_t *p, unsigned char *decelerating)
     STEPPER_PROFILES_REENTRANT
 {
-    STEPPER_PROFILES_LOCAL const @T@_stretch_t *s;
+    STEPPER_PROFILES_LOCAL const tpl_stretch_t *s;
     STEPPER_PROFILES_LOCAL uint32_t played;
     s = p->cur;
     *decelerating = 0;
     if (s >= p->end) {
         return 0;
     }
-    played = @T@_played_(p);
+    played = tpl_played_(p);
     *decelerating = s->decelerating;
     return s->acc_dir > 0 ? s->acc + played : s->acc_dir < 0 ? s->acc - played : s->acc;
 }
 
 /* The period of the last step played, in ticks (0 at rest). Nothing of a plan
  * is played only right after it is made: then the period played before. */
-static uint32_t @T@_last_period_(const @T@_t *p) STEPPER_PROFILES_REENTRANT
+static uint32_t tpl_last_period_(const tpl_t *p) STEPPER_PROFILES_REENTRANT
 {
-    if (p->cur >= p->end || @T@_played_(p) == 0) {
+    if (p->cur >= p->end || tpl_played_(p) == 0) {
         return p->before;
     }
-    return @T@_last_(p);
+    return tpl_last_(p);
 }
 
 /* The last position of the deceleration table whose period is not shorter
@@ -189,14 +180,14 @@ static uint32_t @T@_last_period_(const @T@_t *p) STEPPER_PROFILES_REENTRANT
  * bisection for `k` steps below the top short by more than the table's
  * slack (a step's period is at most that above any period before it, so
  * every step above is short too), then a walk down from there. */
-static uint32_t @T@_entry_point_(const @T@_t *p, uint32_t current) STEPPER_PROFILES_REENTRANT
+static uint32_t tpl_entry_point_(const tpl_t *p, uint32_t current) STEPPER_PROFILES_REENTRANT
 {
     STEPPER_PROFILES_LOCAL uint32_t lo, hi, mid, pos, t;
     lo = 0;
     hi = p->decel_last + 1;
     while (lo < hi) {
         mid = lo + ((hi - lo) >> 1);
-        t = @T@_period_(p, 1, p->decel_last - mid);
+        t = tpl_period_(p, 1, p->decel_last - mid);
         if (t < current && current - t > p->decel_slack) {
             lo = mid + 1;
         } else {
@@ -204,59 +195,58 @@ static uint32_t @T@_entry_point_(const @T@_t *p, uint32_t current) STEPPER_PROFI
         }
     }
     pos = lo > p->decel_last ? 0 : p->decel_last - lo;
-    while (pos > 0 && @T@_period_(p, 1, pos) < current) {
+    while (pos > 0 && tpl_period_(p, 1, pos) < current) {
         pos--;
     }
     return pos;
 }
 
-void @T@_start(@T@_t *p, uint32_t steps) STEPPER_PROFILES_REENTRANT
+void tpl_start(tpl_t *p, uint32_t steps) STEPPER_PROFILES_REENTRANT
 {
     p->cruise = p->accel_last;
     p->len = 0;
     if (steps > 0 && !p->empty) {
-        @T@_plan_(p, 0, steps);
+        tpl_plan_(p, 0, steps);
     }
-    @T@_follow_(p, 0);
+    tpl_follow_(p, 0);
 }
 
-void @T@_set_cruise(@T@_t *p, uint32_t pos) STEPPER_PROFILES_REENTRANT
+void tpl_set_cruise(tpl_t *p, uint32_t pos) STEPPER_PROFILES_REENTRANT
 {
     STEPPER_PROFILES_LOCAL unsigned char decelerating;
     STEPPER_PROFILES_LOCAL uint32_t acc, remaining, last;
     p->cruise = pos < p->accel_last ? pos : p->accel_last;
-    acc = @T@_acc_(p, &decelerating);
-    remaining = @T@_remaining(p);
+    acc = tpl_acc_(p, &decelerating);
+    remaining = tpl_remaining(p);
     if (remaining > 0 && !decelerating) {
-        last = @T@_last_period_(p);
-        @T@_plan_(p, acc, remaining);
-        @T@_follow_(p, last);
+        last = tpl_last_period_(p);
+        tpl_plan_(p, acc, remaining);
+        tpl_follow_(p, last);
     }
 }
 
-void @T@_stop(@T@_t *p) STEPPER_PROFILES_REENTRANT
+void tpl_stop(tpl_t *p) STEPPER_PROFILES_REENTRANT
 {
     STEPPER_PROFILES_LOCAL unsigned char decelerating;
     STEPPER_PROFILES_LOCAL uint32_t remaining, current, needed, acc;
-    remaining = @T@_remaining(p);
+    remaining = tpl_remaining(p);
     if (remaining == 0) {
         return;
     }
-    current = @T@_last_period_(p);
+    current = tpl_last_period_(p);
     /* Not moving yet, or already slower than the table's slowest entry: at
      * rest now. */
-    if (current == 0 || @T@_period_(p, 1, 0) < current) {
+    if (current == 0 || tpl_period_(p, 1, 0) < current) {
         p->len = 0;
-        @T@_follow_(p, current);
+        tpl_follow_(p, current);
         return;
     }
-    needed = @T@_entry_point_(p, current) + 1;
+    needed = tpl_entry_point_(p, current) + 1;
     if (needed < remaining) {
-        acc = @T@_acc_(p, &decelerating);
+        acc = tpl_acc_(p, &decelerating);
         p->len = 0;
-        @T@_push_(p, 1, needed - 1, -1, needed, acc, 0);
-        @T@_follow_(p, current);
+        tpl_push_(p, 1, needed - 1, -1, needed, acc, 0);
+        tpl_follow_(p, current);
     }
 }
 
-"#;
