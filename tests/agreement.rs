@@ -14,9 +14,10 @@
 
 use test_support as common;
 
-use profile_core::motor::{Motor, MotorError};
+use profile_codegen::SpecTables;
+use profile_codegen::motor::{Motor, MotorError};
+use profile_codegen::simulate::{self, SimOptions};
 use profile_core::player::{Player, Ramp};
-use profile_core::simulate::{self, SimOptions};
 use profile_core::{Curve, Linear, LinearExtent, Spec, Timer};
 
 const ACCELS: [f64; 10] = [

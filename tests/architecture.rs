@@ -2,15 +2,17 @@
 //!
 //! `ARCHITECTURE.md` lists each crate's modules by layer in its tables; this
 //! test reads those tables and every `crate::` and `super::` path in
-//! `profile-core/src` and `profile-macros/src` (comments aside), and checks:
+//! `profile-core/src`, `profile-codegen/src` and `profile-macros/src`
+//! (comments aside), and checks:
 //!
 //! - no module imports one of a higher layer (a parent declaring its own
 //!   children is structure, not an import, and is not counted);
 //! - no two modules import each other, directly or around a loop;
 //! - no source file is over 600 lines.
 //!
-//! And, reading every source file of the four crates (`profile-core`,
-//! `profile-macros`, `profile-cli` and the facade's `src/`) with `syn`: no
+//! And, reading every source file of the five crates (`profile-core`,
+//! `profile-codegen`, `profile-macros`, `profile-cli` and the facade's
+//! `src/`) with `syn`: no
 //! function outside tests is over 100 lines, from its `fn` to its closing
 //! brace.
 
@@ -235,6 +237,7 @@ fn cycles(krate: &str, graph: &BTreeMap<String, BTreeSet<String>>) -> Vec<String
 /// crate's sources.
 const FUNCTION_SOURCES: &[&str] = &[
     "profile-core/src",
+    "profile-codegen/src",
     "profile-macros/src",
     "profile-cli/src",
     "src",
@@ -389,6 +392,7 @@ fn no_function_is_over_the_limit() {
 #[test]
 fn layers_hold_and_nothing_is_too_long() {
     let mut problems = check_crate("profile-core", "profile-core/src");
+    problems.extend(check_crate("profile-codegen", "profile-codegen/src"));
     problems.extend(check_crate("profile-macros", "profile-macros/src"));
     assert!(
         problems.is_empty(),
@@ -458,4 +462,50 @@ fn the_function_reader_measures_functions() {
     assert_eq!(line("T::d"), Some((at + 6, 2)));
     assert_eq!(line("m::i"), Some((at + 11, 1)));
     assert_eq!(found.len(), 5, "{found:?}");
+}
+
+/// The names of the dependencies in the `[dependencies]` table of a
+/// manifest.
+fn dependencies(manifest: &str) -> Vec<String> {
+    let text = fs::read_to_string(root().join(manifest)).unwrap();
+    let table = text
+        .split("\n[dependencies]\n")
+        .nth(1)
+        .unwrap_or_else(|| panic!("{manifest} has no [dependencies]"));
+    table
+        .lines()
+        .take_while(|l| !l.starts_with('['))
+        .filter_map(|l| l.split_once('=').map(|(name, _)| name.trim().to_string()))
+        .filter(|name| !name.is_empty() && !name.starts_with('#'))
+        .collect()
+}
+
+/// The firmware crate depends on nothing of the generator, and has no
+/// feature that would bring it: a firmware build compiles `profile-core`
+/// and its two numeric crates, and the generator only inside the macros,
+/// on the host.
+#[test]
+fn the_firmware_crate_holds_none_of_the_generator() {
+    assert_eq!(dependencies("profile-core/Cargo.toml"), ["libm", "fugit"]);
+    let manifest = fs::read_to_string(root().join("profile-core/Cargo.toml")).unwrap();
+    for feature in ["std", "codegen", "golden"] {
+        assert!(
+            !manifest.contains(&format!("\n{feature} = ")),
+            "profile-core has a feature `{feature}`"
+        );
+    }
+    // The facade builds the host crate only with a host feature.
+    let facade = fs::read_to_string(root().join("Cargo.toml")).unwrap();
+    assert!(facade.contains("profile-codegen = { workspace = true, optional = true }"));
+    assert!(facade.contains("std = [\"dep:profile-codegen\"]"));
+    // No module of the generator in the firmware crate's sources.
+    for module in ["motor", "schema", "pipeline", "emit", "profiles", "golden"] {
+        assert!(
+            !root().join("profile-core/src").join(module).exists()
+                && !root()
+                    .join(format!("profile-core/src/{module}.rs"))
+                    .exists(),
+            "profile-core/src holds `{module}`"
+        );
+    }
 }

@@ -21,14 +21,14 @@ publish = false
 stepper-profiles = { path = "@ROOT@" }
 
 [build-dependencies]
-profile-core = { path = "@ROOT@/profile-core", features = ["codegen"] }
+profile-codegen = { path = "@ROOT@/profile-codegen" }
 
 # Not part of any enclosing workspace.
 [workspace]
 "#;
 
 const BUILD_RS: &str = r#"fn main() {
-    if let Some(profiles) = profile_core::profiles::build_script("profiles.toml") {
+    if let Some(profiles) = profile_codegen::profiles::build_script("profiles.toml") {
         profiles.write_c_header("profiles.h").expect("OUT_DIR is writable");
     }
 }
@@ -95,7 +95,7 @@ fn a_bad_file_fails_the_build_with_cargo_errors_and_a_good_one_builds() {
     );
     // What the loader computes here, for the same file.
     let loaded =
-        profile_core::profiles::Profiles::parse("profiles.toml", &profiles("fmax")).unwrap();
+        profile_codegen::profiles::Profiles::parse("profiles.toml", &profiles("fmax")).unwrap();
     let first = loaded.profiles()[0].table.step_periods()[0];
     assert_eq!(
         String::from_utf8_lossy(&good.stdout).trim(),

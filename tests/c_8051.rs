@@ -31,10 +31,10 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-use profile_core::Generated;
+use profile_codegen::Generated;
+use profile_codegen::profiles::{CStyle, Profiles};
 use profile_core::TableWord;
 use profile_core::player::{Layout, Player, Ramp};
-use profile_core::profiles::{CStyle, Profiles};
 
 /// One per-step table (an exponential ramp, as in the article) and one
 /// compressed ramp, on a 2 MHz timer.

@@ -14,8 +14,8 @@ use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use profile_core::Generated;
-use profile_core::profiles::{CStyle, Profiles};
+use profile_codegen::Generated;
+use profile_codegen::profiles::{CStyle, Profiles};
 
 const FLAGS: &[&str] = &["-Wall", "-Wextra", "-Werror", "-pedantic"];
 /// A storage word as a user's toolchain would define it (`__code` on SDCC);

@@ -31,10 +31,10 @@ use std::sync::OnceLock;
 
 use common::cc::CProgram;
 use common::lcg::Lcg;
-use profile_core::Generated;
+use profile_codegen::Generated;
+use profile_codegen::profiles::{CStyle, Profiles};
 use profile_core::TableWord;
 use profile_core::player::{Layout, Player, Ramp};
-use profile_core::profiles::{CStyle, Profiles};
 use profile_core::runs::LinearRun;
 
 /// A table the players play.

@@ -1,4 +1,4 @@
-//! The C players' sources, as the files in `profile-core/src/emit/c/player/`
+//! The C players' sources, as the files in `profile-codegen/src/emit/c/player/`
 //! hold them, compile on their own: each player's files in the order the
 //! header emits them, with their placeholders (`tpl`, `TPL_WORD`,
 //! `TPL_STORAGE `, `TPL_READ`) defined as a header fills them, by the C
@@ -11,7 +11,7 @@ use std::process::Command;
 
 /// The folder of the players' C.
 fn sources() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("profile-core/src/emit/c/player")
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("profile-codegen/src/emit/c/player")
 }
 
 /// One player: its name, the period's type, and its files in the order the

@@ -7,7 +7,8 @@
 use test_support as common;
 
 use common::oracle;
-use profile_core::profiles::Profiles;
+use profile_codegen::SpecTables;
+use profile_codegen::profiles::Profiles;
 use stepper_profiles::{Curve, Generated, Linear, LinearExtent, Spec, Timer, Word};
 use stepper_profiles::{golden, period_table, runs};
 

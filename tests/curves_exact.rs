@@ -31,6 +31,7 @@ use test_support as common;
 
 use common::oracle::{self, Model};
 use common::seeds::{SEED001_SEGMENTS, jerk_limited, seed001, seed004, zeng};
+use profile_codegen::SpecTables;
 use stepper_profiles::{
     Curve, Discretization, Error, Exponential, ExponentialExtent, JerkLimited, Linear,
     LinearExtent, Rounding, SegmentFigures, Spec, ThreeStage, Timer, Word,

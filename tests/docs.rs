@@ -6,8 +6,6 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::fs;
 use std::path::{Path, PathBuf};
 
-use profile_core::Key;
-
 fn root() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
 }
@@ -33,7 +31,8 @@ fn period_table_docs() -> String {
 fn every_key_is_documented_on_period_table() {
     let docs = period_table_docs();
     assert!(docs.contains("Computes a period table"), "{docs}");
-    let missing: Vec<&str> = Key::all()
+    let missing: Vec<&str> = profile_codegen::__private::schema::all_keys()
+        .into_iter()
         .map(|k| k.name())
         .filter(|name| !docs.contains(&format!("`{name}`")))
         .collect();
@@ -60,6 +59,7 @@ fn public_docs_name_the_articles_not_seed_numbers() {
     for dir in [
         "src",
         "profile-core/src",
+        "profile-codegen/src",
         "profile-macros/src",
         "profile-cli/src",
     ] {
@@ -79,6 +79,7 @@ fn public_docs_name_the_articles_not_seed_numbers() {
     for readme in [
         "README.md",
         "profile-core/README.md",
+        "profile-codegen/README.md",
         "profile-macros/README.md",
         "profile-cli/README.md",
     ] {
@@ -246,6 +247,7 @@ fn documents() -> Vec<(String, String)> {
         "CHANGELOG.md",
         "tests/README.md",
         "profile-core/README.md",
+        "profile-codegen/README.md",
         "profile-macros/README.md",
         "profile-cli/README.md",
     ]
@@ -272,6 +274,7 @@ fn documents() -> Vec<(String, String)> {
     for dir in [
         "src",
         "profile-core/src",
+        "profile-codegen/src",
         "profile-macros/src",
         "profile-cli/src",
     ] {
@@ -443,12 +446,12 @@ fn size_claims() -> Vec<SizeClaim> {
             &[indexed, index],
         ),
         claim(
-            "profile-core/src/table/compress.rs",
+            "profile-codegen/src/table/compress.rs",
             "in bytes ({} per run)",
             &[run],
         ),
         claim(
-            "profile-core/src/table/compress.rs",
+            "profile-codegen/src/table/compress.rs",
             "64 runs ({} bytes,",
             &[("64 runs, `[[u16; 5]; 64]`", size_of::<[[u16; 5]; 64]>())],
         ),
@@ -480,7 +483,7 @@ const NOT_TYPE_SIZES: &[(&str, &str)] = &[
     // An 8051's internal RAM, and what the C players take of it and of
     // external RAM there, measured with SDCC (tests/c_8051.rs).
     (
-        "profile-core/src/emit/c/player/mod.rs",
+        "profile-codegen/src/emit/c/player/mod.rs",
         "whose internal RAM is 256 bytes, of which 128",
     ),
     (
@@ -632,7 +635,7 @@ fn the_figure_reader_reads_figures() {
 fn the_emitted_run_index_states_its_size() {
     use profile_core::runs::{IndexedRun, RunIndex};
     use std::mem::size_of;
-    let profiles = profile_core::profiles::Profiles::parse(
+    let profiles = profile_codegen::profiles::Profiles::parse(
         "runs.toml",
         "[profiles.ramp]\ncurve = \"linear\"\nfmin = 1600\nfmax = 48_000\n\
          accel = 160_000\ntimer_hz = 10_000_000\ncompress = 1\n",
@@ -735,13 +738,13 @@ fn features(krate: Crate) -> Vec<Feature> {
     out
 }
 
-/// The features of `profile-core` that `feature` of `krate` turns on,
-/// itself included for `profile-core`'s own.
+/// The features `feature` of `krate` turns on, itself included: those of
+/// its own manifest it implies, and `profile-core`'s it enables.
 fn core_features(krate: Crate, feature: &str) -> BTreeSet<String> {
     let mut out = BTreeSet::new();
     let mut stack = vec![(krate, feature.to_string())];
     while let Some((krate, name)) = stack.pop() {
-        if krate == Crate::Core && !out.insert(name.clone()) {
+        if !out.insert(name.clone()) {
             continue;
         }
         let all = features(krate);
@@ -874,11 +877,7 @@ const FEATURE_LISTS: &[(&str, &str, Crate)] = &[
         Crate::Facade,
     ),
     ("profile-core/README.md", "Features:", Crate::Core),
-    (
-        "ARCHITECTURE.md",
-        "`libm` only by default; its features:",
-        Crate::Core,
-    ),
+    ("ARCHITECTURE.md", "runs. Its one feature:", Crate::Core),
     (
         "ARCHITECTURE.md",
         "doc tests). Its features:",
@@ -1251,7 +1250,7 @@ fn features_the_documents_name_exist_and_gate_what_they_say() {
             let Some((group, before)) = group_around(&text, at) else {
                 continue;
             };
-            let brings = core_features(Crate::Core, &name);
+            let brings = core_features(krate.unwrap_or(Crate::Facade), &name);
             for (span, n) in spoken_of(&gates, group, before, &name) {
                 if n.is_empty() || !n.is_subset(&brings) {
                     problems.push(format!(
@@ -1328,6 +1327,10 @@ fn the_feature_readers_read_features() {
     let gates = gates();
     assert_eq!(
         needs(&gates, Crate::Facade, "simulate::run(&m)"),
+        Some(BTreeSet::from(["std".to_string()]))
+    );
+    assert_eq!(
+        needs(&gates, Crate::Facade, "player::Player"),
         Some(BTreeSet::new())
     );
     assert_eq!(
@@ -1335,8 +1338,9 @@ fn the_feature_readers_read_features() {
         Some(BTreeSet::from(["fugit".to_string()]))
     );
     assert_eq!(
-        needs(&gates, Crate::Core, "schema"),
+        needs(&gates, Crate::Facade, "profiles::Profiles"),
         Some(BTreeSet::from(["codegen".to_string(), "std".to_string()]))
     );
+    assert_eq!(needs(&gates, Crate::Core, "schema"), None);
     assert_eq!(needs(&gates, Crate::Facade, "build::Profiles"), None);
 }

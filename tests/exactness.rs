@@ -21,6 +21,7 @@
 use test_support as common;
 
 use common::oracle::{self, Model};
+use profile_codegen::SpecTables;
 use stepper_profiles::{Arithmetic, Curve, Discretization, Rounding, Sigmoid, Spec, Timer, Word};
 
 /// What a correct edge may miss its exact time by: half a tick, plus room

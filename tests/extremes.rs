@@ -1,6 +1,7 @@
 //! Parameters at the ends of what a float holds: a table or an error that
 //! says what is wrong with which key, never an error about the arithmetic.
 
+use profile_codegen::SpecTables;
 use profile_core::{Curve, Error, Key, Linear, LinearExtent, Sigmoid, Spec, ThreeStage, Timer};
 
 fn timer() -> Timer {

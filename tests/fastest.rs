@@ -22,7 +22,8 @@
 
 use test_support::motors::QSH4218_CHART;
 
-use profile_core::motor::{CurrentSetting, Drive, Motor, MotorError, TorqueCurve, Windings};
+use profile_codegen::SpecTables;
+use profile_codegen::motor::{CurrentSetting, Drive, Motor, MotorError, TorqueCurve, Windings};
 use stepper_profiles::{
     Curve, JerkLimited, Linear, LinearExtent, Spec, ThreeStage, Timer, TorqueLimited,
 };

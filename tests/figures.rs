@@ -7,6 +7,7 @@
 use test_support as common;
 
 use common::oracle::{self, Model};
+use profile_codegen::SpecTables;
 use stepper_profiles::period_table;
 use stepper_profiles::profiles::Profiles;
 use stepper_profiles::{

@@ -9,7 +9,7 @@
 
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
-use profile_core::profiles::Profiles;
+use profile_codegen::profiles::Profiles;
 
 /// xorshift64*: deterministic, so a failure names a reproducible case.
 struct Rng(u64);
@@ -26,7 +26,7 @@ impl Rng {
     }
 }
 
-/// TOML syntax, values and names; the keys come from `Key::all()`.
+/// TOML syntax, values and names; the keys come from the schema's list.
 const PIECES: &[&str] = &[
     "=",
     "\"",
@@ -95,7 +95,8 @@ fn seeds() -> Vec<String> {
 
 /// Every key, then the other pieces.
 fn pieces() -> Vec<&'static str> {
-    profile_core::Key::all()
+    profile_codegen::__private::schema::all_keys()
+        .into_iter()
         .map(|k| k.name())
         .chain(PIECES.iter().copied())
         .collect()

@@ -25,7 +25,7 @@ use std::path::PathBuf;
 
 use common::golden::checked_periods;
 use common::seeds::{SEED000_ORANGE_COMPAT, f32_compat, seed000};
-use profile_core::__private::golden::{self, Body};
+use profile_codegen::__private::golden::{self, Body};
 use stepper_profiles::{Figures, Generated, Spec, Table, period_table};
 
 /// The golden file `file`.

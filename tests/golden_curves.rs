@@ -40,7 +40,8 @@ use common::golden::checked_periods;
 use common::seeds::{
     self, SEED001_SEGMENTS, SEED004_INTEGER, integer_compat, jerk_limited, seed004, zeng,
 };
-use profile_core::__private::golden::{self, Body};
+use profile_codegen::__private::golden::{self, Body};
+use profile_codegen::SpecTables;
 use stepper_profiles::{Curve, Generated, Spec, Table, Timer, period_table};
 
 /// The golden file `file`.

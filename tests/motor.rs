@@ -11,11 +11,12 @@
 use test_support as common;
 
 use common::motors::CURVE;
-use profile_core::Generated;
-use profile_core::motor::{MAX_CURVE_POINTS, Motor, MotorError, StartLimit, TorqueCurve};
+use profile_codegen::Generated;
+use profile_codegen::SpecTables;
+use profile_codegen::motor::{MAX_CURVE_POINTS, Motor, MotorError, StartLimit, TorqueCurve};
+use profile_codegen::profiles::Profiles;
+use profile_codegen::simulate::{self, MAX_STEPS, SimError, SimOptions, SimResult};
 use profile_core::player::{Player, Ramp};
-use profile_core::profiles::Profiles;
-use profile_core::simulate::{self, MAX_STEPS, SimError, SimOptions, SimResult};
 use profile_core::{Curve, Key, Linear, LinearExtent, Spec, Timer};
 use stepper_profiles::period_table;
 

@@ -28,6 +28,7 @@ use test_support as common;
 
 use common::lcg::Lcg;
 use common::oracle::{self, Model};
+use profile_codegen::SpecTables;
 use stepper_profiles::{
     AccelCurve, Curve, Discretization, Error, Exponential, ExponentialExtent, JerkLimited, Linear,
     LinearExtent, MAX_LEN, Rounding, Sigmoid, Spec, ThreeStage, Timer, TorqueLimited, Word, runs,

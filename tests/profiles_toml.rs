@@ -8,8 +8,9 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use profile_core::Generated;
-use profile_core::profiles::Profiles;
+use profile_codegen::Generated;
+use profile_codegen::SpecTables;
+use profile_codegen::profiles::Profiles;
 use profile_core::{
     Arithmetic, Curve, Discretization, Exponential, ExponentialExtent, Linear, LinearExtent,
     Rounding, Sigmoid, Spec, Timer,

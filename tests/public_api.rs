@@ -1,6 +1,7 @@
-//! The public API, as a list: every path a user of `profile-core` or
-//! `stepper-profiles` can name, read from the sources with `syn`, against
-//! `tests/public-api.txt`. A change to what is public shows in `git diff`;
+//! The public API, as a list: every path a user of `profile-core`,
+//! `profile-codegen` or `stepper-profiles` can name, read from the sources
+//! with `syn`, against `tests/public-api.txt`. The firmware crate's face
+//! stays small: at most [`FIRMWARE_PATHS`] paths. A change to what is public shows in `git diff`;
 //! bless it with `UPDATE_GOLDEN=1 cargo test --test public_api`.
 //!
 //! The reader follows `mod` declarations from each crate's `lib.rs` and
@@ -350,11 +351,15 @@ impl Crate {
     }
 }
 
-/// The public paths of both crates, one a line.
+/// The public paths of the three crates, one a line: the firmware crate's,
+/// the host crate's, and the facade's re-exports of both.
 fn surface() -> String {
     let core = Crate::load("profile-core/src");
     let mut lines = BTreeSet::new();
     core.public(&[], "profile_core", &[], &mut lines);
+    let codegen = Crate::load("profile-codegen/src");
+    let mut codegen_lines = BTreeSet::new();
+    codegen.public(&[], "profile_codegen", &[], &mut codegen_lines);
     let mut facade_lines = BTreeSet::new();
     let facade = Crate::load("src");
     let module = &facade.tree[&Vec::new()];
@@ -367,9 +372,14 @@ fn surface() -> String {
             Some("profile_macros") => {
                 facade_lines.insert(format!("macro {path}"));
             }
-            Some("profile_core") => {
-                let target = core.resolve(&[], &source[1..], 0);
-                let target = target.unwrap_or_else(|| panic!("{source:?} is not in profile_core"));
+            Some(name @ ("profile_core" | "profile_codegen")) => {
+                let krate = if name == "profile_core" {
+                    &core
+                } else {
+                    &codegen
+                };
+                let target = krate.resolve(&[], &source[1..], 0);
+                let target = target.unwrap_or_else(|| panic!("{source:?} is not in {name}"));
                 let with = |kind: &str, more: &[String]| {
                     let mut f: Vec<String> = own.iter().chain(more).cloned().collect();
                     f.sort();
@@ -387,22 +397,51 @@ fn surface() -> String {
                     Target::Module(m, f) => {
                         facade_lines.insert(with("mod", &f));
                         let all: Vec<String> = own.iter().chain(&f).cloned().collect();
-                        core.public(&m, &path, &all, &mut facade_lines);
+                        krate.public(&m, &path, &all, &mut facade_lines);
                     }
                 }
             }
-            _ => panic!("stepper_profiles re-exports {source:?}, from neither crate"),
+            _ => panic!("stepper_profiles re-exports {source:?}, from none of the crates"),
         }
     }
     let mut text = String::from(
-        "# The public API of profile-core and stepper-profiles: `kind path (features)`.\n\
+        "# The public API of profile-core (firmware), profile-codegen (hosts) and\n\
+         # stepper-profiles (both): `kind path (features)`.\n\
          # tests/public_api.rs writes it with UPDATE_GOLDEN=1; review what changed.\n",
     );
-    for line in lines.iter().chain(&facade_lines) {
+    for line in lines.iter().chain(&codegen_lines).chain(&facade_lines) {
         text.push_str(line);
         text.push('\n');
     }
     text
+}
+
+/// The most paths `profile-core`, the crate firmware depends on, may make
+/// public: what a firmware author reads to use it.
+const FIRMWARE_PATHS: usize = 60;
+
+#[test]
+fn the_firmware_face_fits_in_the_head() {
+    let surface = surface();
+    let core: Vec<&str> = surface
+        .lines()
+        .filter(|l| {
+            l.split(' ')
+                .nth(1)
+                .is_some_and(|p| p.starts_with("profile_core::"))
+        })
+        .collect();
+    assert!(
+        core.len() > 40,
+        "{} paths read: the reader is broken",
+        core.len()
+    );
+    assert!(
+        core.len() <= FIRMWARE_PATHS,
+        "profile-core makes {} paths public, more than {FIRMWARE_PATHS}:\n{}",
+        core.len(),
+        core.join("\n")
+    );
 }
 
 #[test]

@@ -18,8 +18,8 @@ use std::time::{Duration, Instant, SystemTime};
 
 use common::scratch::{ScratchCrate, target_dir};
 
-use profile_core::Generated;
-use profile_core::profiles::Profiles;
+use profile_codegen::Generated;
+use profile_codegen::profiles::Profiles;
 
 /// The macro path: no build script, so only the macro's `include_bytes!`
 /// can make Cargo notice an edit.
@@ -54,7 +54,7 @@ publish = false
 stepper-profiles = { path = "@ROOT@" }
 
 [build-dependencies]
-profile-core = { path = "@ROOT@/profile-core", features = ["codegen"] }
+profile-codegen = { path = "@ROOT@/profile-codegen" }
 
 # Not part of any enclosing workspace.
 [workspace]
@@ -62,7 +62,7 @@ profile-core = { path = "@ROOT@/profile-core", features = ["codegen"] }
 
 const BUILD_RS: &str = r#"fn main() -> Result<(), Box<dyn std::error::Error>> {
     let out_dir = std::env::var("OUT_DIR")?;
-    profile_core::profiles::Profiles::load("profiles.toml")?.write_rust(out_dir)?;
+    profile_codegen::profiles::Profiles::load("profiles.toml")?.write_rust(out_dir)?;
     Ok(())
 }
 "#;

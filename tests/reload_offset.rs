@@ -6,11 +6,12 @@
 
 use std::path::Path;
 
-use profile_core::__private::golden::Body;
-use profile_core::golden::Golden;
+use profile_codegen::__private::golden::Body;
+use profile_codegen::Generated;
+use profile_codegen::golden::Golden;
+use profile_codegen::profiles::Profiles;
 use profile_core::player::{Player, Ramp};
-use profile_core::profiles::Profiles;
-use profile_core::{Curve, Generated, Sigmoid, Spec, Timer, runs};
+use profile_core::{Curve, Sigmoid, Spec, Timer, runs};
 use stepper_profiles::period_table;
 
 mod arr {

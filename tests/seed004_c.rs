@@ -32,6 +32,7 @@ use std::sync::OnceLock;
 use common::cc::CProgram;
 use common::lcg::Lcg;
 use common::seeds::{SEED004_INTEGER, integer_compat, seed004_ramp};
+use profile_codegen::SpecTables;
 use stepper_profiles::{Curve, Error, Key, Linear, LinearExtent, Spec, Timer, Word};
 
 /// Seed 004's `pulse()`, its globals and a checking `main`.

@@ -22,6 +22,7 @@ use std::sync::OnceLock;
 use common::cc::CProgram;
 use common::lcg::Lcg;
 use common::seeds::{SEED000_ORANGE_COMPAT, SEED000_TIMER_HZ, f32_compat, seed000};
+use profile_codegen::SpecTables;
 use stepper_profiles::{Curve, Spec};
 
 /// Seed 000's `CalculateSModelLine` and a `main` that runs it.

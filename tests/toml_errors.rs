@@ -17,7 +17,7 @@ use std::fs;
 use std::path::{Path, PathBuf};
 
 use common::golden;
-use profile_core::profiles::Profiles;
+use profile_codegen::profiles::Profiles;
 
 /// Cases the issue asks for; the directory may hold more.
 const REQUIRED: &[&str] = &[

@@ -7,10 +7,11 @@
 use test_support::lcg::Lcg;
 use test_support::motors::QSH4218_CHART as CHART;
 
-use profile_core::__private::golden;
-use profile_core::motor::{Motor, MotorError, TorqueCurve, Windings};
+use profile_codegen::__private::golden;
+use profile_codegen::SpecTables;
+use profile_codegen::motor::{Motor, MotorError, TorqueCurve, Windings};
+use profile_codegen::profiles::Profiles;
 use profile_core::player::{Player, Ramp};
-use profile_core::profiles::Profiles;
 use stepper_profiles::{Curve, Generated, Spec, Timer, Word, period_table};
 
 /// The start a profile without `fmin` takes on the shipped

@@ -1,8 +1,8 @@
 //! Units in both front ends: a value with a unit gives the table of the
 //! plain number it stands for, bit for bit.
 
-use profile_core::Generated;
-use profile_core::profiles::Profiles;
+use profile_codegen::Generated;
+use profile_codegen::profiles::Profiles;
 use stepper_profiles::period_table;
 
 static SIGMOID_UNITS: [u16; 1000] = period_table!(
@@ -124,7 +124,7 @@ static DATASHEET_UNITS: [u16; 416] = period_table!(
 );
 
 /// The motor and the table of a profiles file's only profile.
-fn motor_and_table(file: &str) -> (profile_core::motor::Motor, Vec<u32>) {
+fn motor_and_table(file: &str) -> (profile_codegen::motor::Motor, Vec<u32>) {
     let profiles = Profiles::parse("profiles.toml", file).unwrap_or_else(|e| panic!("{e}"));
     let profile = &profiles.profiles()[0];
     match &profile.table {

@@ -2,10 +2,11 @@
 //! pull-out torque they give, in the macro, in a profiles file and in the
 //! library, and a typed curve takes precedence over them.
 
-use profile_core::motor::{Drive, Motor, MotorError, TorqueCurve, Windings};
+use profile_codegen::SpecTables;
+use profile_codegen::motor::{Drive, Motor, MotorError, TorqueCurve, Windings};
+use profile_codegen::profiles::Profiles;
+use profile_codegen::simulate::{self, SimOptions};
 use profile_core::player::{Player, Ramp};
-use profile_core::profiles::Profiles;
-use profile_core::simulate::{self, SimOptions};
 use profile_core::{Curve, Linear, LinearExtent, Spec, Timer};
 use stepper_profiles::period_table;
 

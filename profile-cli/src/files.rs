@@ -4,9 +4,10 @@
 use std::path::Path;
 
 use plotters::style::{BLACK, RGBColor};
-use profile_core::profiles::Profile;
-use profile_core::profiles::Profiles;
-use profile_core::{Discretization, Generated, Spec, Table};
+use profile_codegen::profiles::Profile;
+use profile_codegen::profiles::Profiles;
+use profile_codegen::{Generated, SpecTables, Table};
+use profile_core::{Discretization, Spec};
 
 use crate::plots::{self, Line, Series};
 use crate::staging::Staging;
@@ -81,7 +82,7 @@ fn write_torque_plot(p: &Profile, path: &Path) -> Result<(), Box<dyn std::error:
 /// The pull-out curves to plot: the typed one, and the one the windings
 /// give (sampled finely up to the ramp's fastest step), under each other.
 fn pull_out_curves(
-    motor: &profile_core::motor::Motor,
+    motor: &profile_codegen::motor::Motor,
     edges: &[(u32, f64, f64, f64)],
 ) -> Vec<(&'static str, Vec<(f64, f64)>)> {
     let mut curves = Vec::new();

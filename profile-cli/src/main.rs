@@ -21,7 +21,7 @@ use std::sync::mpsc;
 use std::time::Duration;
 
 use clap::{Parser, Subcommand};
-use profile_core::profiles::{CStyle, Profiles};
+use profile_codegen::profiles::{CStyle, Profiles};
 use staging::Staging;
 
 /// Stepper-motor acceleration tables from a profiles file: report their

@@ -4,14 +4,14 @@
 
 use std::fmt::Write as _;
 
-use profile_core::__private::emit::start_note;
-use profile_core::__private::schema::{describe, describe_motor};
-use profile_core::motor::MotorError;
-use profile_core::motor::{Drive, Motor};
+use profile_codegen::__private::emit::start_note;
+use profile_codegen::__private::schema::{describe, describe_motor};
+use profile_codegen::motor::MotorError;
+use profile_codegen::motor::{Drive, Motor};
+use profile_codegen::profiles::{Profile, Profiles};
+use profile_codegen::simulate::{self, SimOptions, SimResult};
+use profile_codegen::{Compact, Generated, SpecTables};
 use profile_core::player::{Player, Ramp};
-use profile_core::profiles::{Profile, Profiles};
-use profile_core::simulate::{self, SimOptions, SimResult};
-use profile_core::{Compact, Generated};
 use profile_core::{Curve, Linear, LinearExtent};
 use profile_core::{Discretization, Error, Rounding, Spec};
 

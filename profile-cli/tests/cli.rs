@@ -5,7 +5,7 @@ use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 
-use profile_core::profiles::{CStyle, Profiles};
+use profile_codegen::profiles::{CStyle, Profiles};
 
 const BIN: &str = env!("CARGO_BIN_EXE_stepper-profiles");
 
@@ -315,7 +315,7 @@ fn plot_writes_an_svg_and_a_csv_per_profile() {
         let edges = dir.join(format!("figures/{}_edges.svg", p.name));
         assert_eq!(
             edges.exists(),
-            !matches!(p.table, profile_core::Generated::Steps(_)),
+            !matches!(p.table, profile_codegen::Generated::Steps(_)),
             "{}",
             p.name
         );

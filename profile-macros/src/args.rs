@@ -4,8 +4,8 @@
 //! whole `-500` (a `Span` cannot be joined on stable Rust).
 
 use proc_macro2::TokenStream;
-use profile_core::__private::schema::units::{self, Quantity};
-use profile_core::__private::schema::{self, Arg, MAX_DIGITS, Value};
+use profile_codegen::__private::schema::units::{self, Quantity};
+use profile_codegen::__private::schema::{self, Arg, MAX_DIGITS, Value};
 use quote::ToTokens;
 use syn::parse::{Parse, ParseStream, Parser};
 use syn::punctuated::Punctuated;

@@ -1,9 +1,9 @@
 //! `period_table!`: arguments through `profile-core`'s pipeline and emitter.
 
 use proc_macro2::TokenStream;
-use profile_core::__private::emit;
-use profile_core::__private::pipeline::{self, Options};
-use profile_core::__private::schema::Diagnostic;
+use profile_codegen::__private::emit;
+use profile_codegen::__private::pipeline::{self, Options};
+use profile_codegen::__private::schema::Diagnostic;
 
 use crate::args::Loc;
 
@@ -51,7 +51,7 @@ mod tests {
 
     use super::*;
 
-    /// Names, values and punctuation besides the keys (which come from `Key::all()`).
+    /// Names, values and punctuation besides the keys (which come from the schema's list of keys).
     const PIECES: &[&str] = &[
         "speed",
         "sigmoid",
@@ -117,7 +117,8 @@ mod tests {
 
     /// Every key, and two that are not keys.
     fn keys() -> Vec<&'static str> {
-        profile_core::Key::all()
+        profile_codegen::__private::schema::all_keys()
+            .into_iter()
             .map(|k| k.name())
             .chain(["fmni", "speed"])
             .collect()

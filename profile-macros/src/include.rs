@@ -3,7 +3,7 @@
 use std::path::Path;
 
 use proc_macro2::{Literal, TokenStream};
-use profile_core::profiles::Profiles;
+use profile_codegen::profiles::Profiles;
 use syn::LitStr;
 
 /// Expands `include_profiles!(path)`; errors become a `compile_error!` on the path.

@@ -76,7 +76,7 @@ mod include;
 /// | `rotor_inertia` | kg·m² | required |
 /// | `load_inertia` | the load's inertia at the shaft, kg·m² | `0` |
 /// | `torque_curve` | pull-out torque, up to 32 `(step frequency, N·m)` pairs with rising frequencies: `[(0, 0.40), (1000, 0.33), (4000, 0.12)]`; no torque beyond the last | required, unless the windings are given |
-/// | `resistance`, `inductance` | phase resistance (Ω) and inductance (H): with `rated_current`, `holding_torque` and `supply_voltage`, the pull-out curve is derived (`profile_core::motor::Windings`) | none |
+/// | `resistance`, `inductance` | phase resistance (Ω) and inductance (H): with `rated_current`, `holding_torque` and `supply_voltage`, the pull-out curve is derived (`profile_codegen::motor::Windings`) | none |
 /// | `rated_current` | the motor's rated phase current, A: its holding torque is measured at it, and the driver is set to it unless `driver_current` says otherwise | none |
 /// | `holding_torque` | holding torque at rated current, two phases on, N·m | none |
 /// | `supply_voltage` | the driver's supply, V | none |

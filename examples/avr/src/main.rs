@@ -32,9 +32,9 @@ use std::path::Path;
 use std::process::{Command, ExitCode};
 use std::time::Duration;
 
-use profile_core::Generated;
+use profile_codegen::Generated;
 use profile_core::player::{Layout, Player, Ramp};
-use profile_core::profiles::{CStyle, Profiles};
+use profile_codegen::profiles::{CStyle, Profiles};
 use profile_core::runs::Expand;
 
 use cycles::{Isr, Stats};

@@ -5,7 +5,7 @@ use core::fmt;
 use super::key::Key;
 use super::messages::*;
 use super::modes::Discretization;
-pub(crate) use super::numbers::{Fixed, Num};
+pub(crate) use super::numbers::Num;
 use super::timer::Word;
 
 /// Why a spec cannot become a table.
@@ -389,8 +389,41 @@ impl fmt::Display for Error {
     }
 }
 
-#[cfg(feature = "std")]
-impl std::error::Error for Error {}
+// Beside the error it returns: the one check of a stored value.
+impl Word {
+    /// What a table of this word stores for a period of `ticks`, offset by
+    /// `reload_offset` = `offset`: from 1 to [`max`](Self::max), or the
+    /// error that says which period (`what` `index`: `entry 3`, `step 12`)
+    /// and why. The one check of a stored value, for every layout.
+    ///
+    /// ```
+    /// use profile_core::Word;
+    ///
+    /// assert_eq!(Word::U16.stored(1000, -1, "entry", 0), Ok(999));
+    /// assert!(Word::U16.stored(65_535, 1, "entry", 7).is_err());
+    /// ```
+    pub fn stored(
+        self,
+        ticks: u32,
+        offset: i32,
+        what: &'static str,
+        index: u32,
+    ) -> Result<u32, Error> {
+        let value = i64::from(ticks) + i64::from(offset);
+        if value < 1 || value > i64::from(self.max()) {
+            return Err(Error::ReloadOffset {
+                what,
+                index,
+                ticks,
+                offset,
+                word: self,
+            });
+        }
+        Ok(value as u32)
+    }
+}
+
+impl core::error::Error for Error {}
 
 #[cfg(test)]
 #[path = "error_tests.rs"]

@@ -7,7 +7,7 @@ use std::vec::Vec;
 use super::*;
 use crate::base::key::Key;
 use crate::base::modes::Discretization;
-use crate::base::numbers::Significant;
+use crate::base::numbers::{Fixed, Significant};
 use crate::base::timer::Word;
 
 /// One example of every variant with its exact message. The match in

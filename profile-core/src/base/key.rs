@@ -6,8 +6,8 @@ use core::fmt;
 ///
 /// The keys every curve shares are constants here; a key that only one
 /// curve takes is declared in that curve's module (`Key::FLEXIBLE` with the
-/// sigmoid, `Key::JERK` with the jerk-limited ramp). [`Key::all`] lists them
-/// all, in documentation order.
+/// sigmoid, `Key::JERK` with the jerk-limited ramp). An [`Error`](crate::Error)
+/// names the key it is about ([`Error::key`](crate::Error::key)).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct Key(pub(crate) &'static str);
 
@@ -91,87 +91,14 @@ impl Key {
     /// N·m.
     pub const IRON_LOSS: Key = Key("iron_loss");
 
-    /// The keys every curve takes, after the curve's own, in documentation
-    /// order (the motor's keys aside).
-    pub const COMMON: &'static [Key] = &[
-        Key::TIMER_HZ,
-        Key::WORD,
-        Key::TICKS_PER_STEP,
-        Key::RELOAD_OFFSET,
-        Key::DISCRETIZATION,
-        Key::ROUNDING,
-        Key::ARITHMETIC,
-        Key::SEGMENTS,
-        Key::COMPRESS,
-        Key::MOTOR,
-    ];
-
-    /// The keys that describe a motor (all but `motor` itself).
-    pub const MOTOR_KEYS: &'static [Key] = &[
-        Key::STEP_ANGLE,
-        Key::MICROSTEPS,
-        Key::ROTOR_INERTIA,
-        Key::LOAD_INERTIA,
-        Key::TORQUE_CURVE,
-        Key::FRICTION,
-        Key::DAMPING,
-        Key::DAMPING_RATIO,
-        Key::SAFETY,
-        Key::MAX_START_HZ,
-        Key::RESISTANCE,
-        Key::INDUCTANCE,
-        Key::RATED_CURRENT,
-        Key::HOLDING_TORQUE,
-        Key::SUPPLY_VOLTAGE,
-        Key::DETENT_TORQUE,
-        Key::DRIVE,
-        Key::DRIVER_CURRENT,
-        Key::DRIVER_CURRENT_IS,
-        Key::SUPPLY_UTILIZATION,
-        Key::IRON_LOSS,
-    ];
-
-    /// The keys that describe a motor's windings, from which its pull-out
-    /// curve is derived ([`Windings`](crate::motor::Windings)) and the
-    /// driver behind them: the first five are required together, the rest
-    /// have defaults.
-    pub const WINDINGS_KEYS: &'static [Key] = &[
-        Key::RESISTANCE,
-        Key::INDUCTANCE,
-        Key::RATED_CURRENT,
-        Key::HOLDING_TORQUE,
-        Key::SUPPLY_VOLTAGE,
-        Key::DETENT_TORQUE,
-        Key::DRIVE,
-        Key::DRIVER_CURRENT,
-        Key::DRIVER_CURRENT_IS,
-        Key::SUPPLY_UTILIZATION,
-        Key::IRON_LOSS,
-    ];
-
     /// The key as written by users.
     pub const fn name(self) -> &'static str {
         self.0
-    }
-
-    /// Whether the key describes a motor.
-    pub fn is_motor(self) -> bool {
-        Key::MOTOR_KEYS.contains(&self)
     }
 }
 
 impl fmt::Display for Key {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(self.0)
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::Key;
-
-    #[test]
-    fn the_windings_keys_are_motor_keys_in_the_same_order() {
-        assert!(Key::MOTOR_KEYS.ends_with(Key::WINDINGS_KEYS));
     }
 }

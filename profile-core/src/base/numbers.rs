@@ -100,3 +100,58 @@ impl fmt::Write for Buf<'_> {
         Ok(())
     }
 }
+
+/// A number as this crate's messages print it, for tools that print
+/// figures beside them: [`plain`](MessageNumber::plain) as a user wrote it
+/// (`500`, `0.25`, `1e308`), [`fixed`](MessageNumber::fixed) to a number of
+/// decimals (`0.1799`), [`significant`](MessageNumber::significant) to six
+/// significant digits (`1.33333e300`); never three hundred digits long, and
+/// without allocation.
+///
+/// ```
+/// use profile_core::MessageNumber;
+///
+/// assert_eq!(MessageNumber::plain(64_000.0).to_string(), "64000");
+/// assert_eq!(MessageNumber::plain(1e300).to_string(), "1e300");
+/// assert_eq!(MessageNumber::fixed(0.17994, 4).to_string(), "0.1799");
+/// assert_eq!(MessageNumber::fixed(3e-6, 2).to_string(), "0.000003");
+/// assert_eq!(MessageNumber::significant(4.0 / 3.0 * 1e300).to_string(), "1.33333e300");
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MessageNumber(Shown);
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Shown {
+    Plain(f64),
+    Fixed(f64, usize),
+    Significant(f64),
+}
+
+impl MessageNumber {
+    /// Plain between 1e-6 and 1e16, in exponent form beyond.
+    pub const fn plain(value: f64) -> Self {
+        MessageNumber(Shown::Plain(value))
+    }
+
+    /// To `decimals` decimals, or as [`significant`](Self::significant)
+    /// where they would read 0 or the number is 1e16 or more.
+    pub const fn fixed(value: f64, decimals: usize) -> Self {
+        MessageNumber(Shown::Fixed(value, decimals))
+    }
+
+    /// At most six significant digits, trailing zeros dropped; in exponent
+    /// form below 1e-6 and from 1e16.
+    pub const fn significant(value: f64) -> Self {
+        MessageNumber(Shown::Significant(value))
+    }
+}
+
+impl fmt::Display for MessageNumber {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.0 {
+            Shown::Plain(v) => Num(v).fmt(f),
+            Shown::Fixed(v, decimals) => Fixed(v, decimals).fmt(f),
+            Shown::Significant(v) => Significant(v).fmt(f),
+        }
+    }
+}

@@ -2,7 +2,7 @@
 //! at `accel`, falls at `jerk` to zero at `fmax`.
 
 use super::check::{positive, range};
-use super::kind::{CurveKind, Length, Param, Reader};
+use super::kind::{CurveKind, Length};
 use crate::base::error::Error;
 use crate::base::key::Key;
 use crate::base::solve::TimeCurve;
@@ -125,9 +125,6 @@ impl TimeCurve for JerkInTime {
 
 impl CurveKind for JerkLimited {
     const NAME: &'static str = "jerk_limited";
-    const KEYS: &'static [Key] = &[Key::FMIN, Key::FMAX, Key::ACCEL, Key::JERK];
-    const REQUIRED: &'static [Key] = Self::KEYS;
-    const UNITS: &'static [(Key, &'static str)] = &[(Key::JERK, "Hz/s²")];
     type Time = JerkInTime;
 
     fn time(&self) -> JerkInTime {
@@ -150,28 +147,6 @@ impl CurveKind for JerkLimited {
         range(self.fmin, self.fmax)?;
         positive(Key::ACCEL, self.accel)?;
         positive(Key::JERK, self.jerk)
-    }
-
-    fn read(r: &mut dyn Reader) -> Option<Self> {
-        let (fmin, fmax) = (r.number(Key::FMIN), r.number(Key::FMAX));
-        let (accel, jerk) = (r.number(Key::ACCEL), r.number(Key::JERK));
-        Some(JerkLimited {
-            fmin: fmin?,
-            fmax: fmax?,
-            accel: accel?,
-            jerk: jerk?,
-        })
-    }
-
-    fn describe(&self, out: &mut dyn FnMut(Key, Param)) {
-        for (key, value) in [
-            (Key::FMIN, self.fmin),
-            (Key::FMAX, self.fmax),
-            (Key::ACCEL, self.accel),
-            (Key::JERK, self.jerk),
-        ] {
-            out(key, Param::Number(value));
-        }
     }
 }
 

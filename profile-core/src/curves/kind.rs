@@ -1,6 +1,5 @@
 //! The contract of a curve's module, and what it deals in.
 
-use super::Curve;
 use crate::base::error::Error;
 use crate::base::key::Key;
 use crate::base::modes::{Arithmetic, Discretization, Rounding};
@@ -66,40 +65,10 @@ pub(crate) struct IndexEntry {
     pub(crate) rounded: Option<u64>,
 }
 
-/// A parameter's value as a curve describes it.
-#[cfg_attr(not(feature = "codegen"), allow(dead_code))]
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) enum Param {
-    /// A real number, written as Rust writes an `f64` (`64000`, `0.5`).
-    Number(f64),
-    /// A whole count (`len`).
-    Count(u32),
-}
-
-/// Where a curve reads its parameters from: the schema's arguments. Each
-/// call reports a wrong kind of value itself and returns `None` for it.
-#[cfg_attr(not(feature = "codegen"), allow(dead_code))]
-pub(crate) trait Reader {
-    /// A number, in the key's unit.
-    fn number(&mut self, key: Key) -> Option<f64>;
-    /// `len`, from 1 to `MAX_LEN`.
-    fn len(&mut self) -> Option<u32>;
-    /// Whether the key is given.
-    fn has(&self, key: Key) -> bool;
-}
-
 /// What every curve provides: the contract of its module.
 pub(crate) trait CurveKind: Copy {
     /// The name in `curve = NAME`.
     const NAME: &'static str;
-    /// The keys this curve takes besides the common ones, in documentation order.
-    const KEYS: &'static [Key];
-    /// Those it requires (the common `timer_hz` aside).
-    const REQUIRED: &'static [Key];
-    /// Two keys of which exactly one is given: each sets the ramp's length.
-    const ONE_OF: Option<[Key; 2]> = None;
-    /// Units of the keys this curve alone takes, for messages.
-    const UNITS: &'static [(Key, &'static str)] = &[];
     /// Arithmetic besides `f64` the curve computes in, each with where it
     /// applies, as messages say it.
     const ARITHMETIC: &'static [(Arithmetic, &'static str)] = &[];
@@ -130,24 +99,12 @@ pub(crate) trait CurveKind: Copy {
     ) -> Result<(), Error> {
         Ok(())
     }
-    /// Reads the parameters; `None` when one is missing or wrong (the
-    /// reader has said why).
-    #[cfg_attr(not(feature = "codegen"), allow(dead_code))]
-    fn read(r: &mut dyn Reader) -> Option<Self>;
-    /// The parameters as a user writes them, in documentation order.
-    #[cfg_attr(not(feature = "codegen"), allow(dead_code))]
-    fn describe(&self, out: &mut dyn FnMut(Key, Param));
 }
 
-/// A curve as the schema sees it: its name, keys and how to read it.
-#[cfg_attr(not(feature = "codegen"), allow(dead_code))]
+/// What the table's own checks know of a curve besides its parameters:
+/// its name and the arithmetic and discretization it takes.
 pub(crate) struct CurveSchema {
     pub(crate) name: &'static str,
-    pub(crate) keys: &'static [Key],
-    pub(crate) required: &'static [Key],
-    pub(crate) one_of: Option<[Key; 2]>,
-    pub(crate) units: &'static [(Key, &'static str)],
     pub(crate) arithmetic: &'static [(Arithmetic, &'static str)],
     pub(crate) index: bool,
-    pub(crate) read: fn(&mut dyn Reader) -> Option<Curve>,
 }

@@ -2,7 +2,7 @@
 //! the index, and in the article's integer arithmetic.
 
 use super::check::{len, positive, range};
-use super::kind::{CurveKind, IndexEntry, Length, Modes, Param, Reader};
+use super::kind::{CurveKind, IndexEntry, Length, Modes};
 use crate::base::error::Error;
 use crate::base::key::Key;
 use crate::base::modes::{Arithmetic, Discretization, Rounding};
@@ -230,9 +230,6 @@ const INTEGER_APPLIES: &str =
 
 impl CurveKind for Linear {
     const NAME: &'static str = "linear";
-    const KEYS: &'static [Key] = &[Key::FMIN, Key::FMAX, Key::LEN, Key::ACCEL];
-    const REQUIRED: &'static [Key] = &[Key::FMIN, Key::FMAX];
-    const ONE_OF: Option<[Key; 2]> = Some([Key::LEN, Key::ACCEL]);
     const ARITHMETIC: &'static [(Arithmetic, &'static str)] =
         &[(Arithmetic::Integer, INTEGER_APPLIES)];
     const INDEX: bool = true;
@@ -334,29 +331,6 @@ impl CurveKind for Linear {
             }
         }
         Ok(())
-    }
-
-    fn read(r: &mut dyn Reader) -> Option<Self> {
-        let (fmin, fmax) = (r.number(Key::FMIN), r.number(Key::FMAX));
-        let extent = if r.has(Key::LEN) {
-            LinearExtent::Len(r.len()?)
-        } else {
-            LinearExtent::Accel(r.number(Key::ACCEL)?)
-        };
-        Some(Linear {
-            fmin: fmin?,
-            fmax: fmax?,
-            extent,
-        })
-    }
-
-    fn describe(&self, out: &mut dyn FnMut(Key, Param)) {
-        out(Key::FMIN, Param::Number(self.fmin));
-        out(Key::FMAX, Param::Number(self.fmax));
-        match self.extent {
-            LinearExtent::Len(n) => out(Key::LEN, Param::Count(n)),
-            LinearExtent::Accel(a) => out(Key::ACCEL, Param::Number(a)),
-        }
     }
 }
 

@@ -1,14 +1,14 @@
-//! The curves, one module each: a curve's parameters, its keys and their
-//! units, its checks, its description and its model in time live in its own
-//! file, which implements [`CurveKind`].
+//! The curves, one module each: a curve's parameters, its own keys, its
+//! checks and its model in time live in its own file, which implements
+//! [`CurveKind`].
 //!
 //! The list at the end of this file names every curve once; the macro that
 //! reads it makes the public [`Curve`] enum, the dispatch over it, and the
-//! table of [`CurveSchema`]s the schema reads keys from. Adding a curve is one new
-//! file, its `mod` line and one line in that list (ARCHITECTURE.md).
+//! table of [`CurveSchema`]s the checks read a curve's name and modes from.
+//! Adding a curve is one new file, its `mod` line and one line in that list,
+//! and how the code generator reads it (ARCHITECTURE.md).
 
 use crate::base::error::Error;
-use crate::base::key::Key;
 use crate::base::solve::TimeCurve;
 
 pub(crate) mod check;
@@ -23,40 +23,12 @@ mod sigmoid;
 mod three_stage;
 mod torque_limited;
 
-pub(crate) use kind::{CurveKind, CurveSchema, IndexEntry, Length, Modes, Param, Reader};
+pub(crate) use kind::{CurveKind, CurveSchema, IndexEntry, Length, Modes};
 
 impl CurveSchema {
     /// The schema of the curve named `name`.
     pub(crate) fn named(name: &str) -> Option<&'static CurveSchema> {
         CURVE_SCHEMAS.iter().find(|r| r.name == name)
-    }
-}
-
-fn read_as<C: CurveKind + Into<Curve>>(r: &mut dyn Reader) -> Option<Curve> {
-    C::read(r).map(Into::into)
-}
-
-impl Key {
-    /// Every key, in the order documentation lists them: `curve`, each
-    /// curve's own keys (in the order of the curves), the common keys, the
-    /// motor's.
-    pub fn all() -> impl Iterator<Item = Key> {
-        let own = CURVE_SCHEMAS.iter().enumerate().flat_map(|(i, schema)| {
-            schema
-                .keys
-                .iter()
-                .copied()
-                .filter(move |k| !CURVE_SCHEMAS[..i].iter().any(|r| r.keys.contains(k)))
-        });
-        core::iter::once(Key::CURVE)
-            .chain(own)
-            .chain(Key::COMMON.iter().copied())
-            .chain(Key::MOTOR_KEYS.iter().copied())
-    }
-
-    /// The key spelled `name`, if there is one.
-    pub fn from_name(name: &str) -> Option<Key> {
-        Key::all().find(|k| k.name() == name)
     }
 }
 
@@ -94,13 +66,8 @@ macro_rules! curves {
             $(
                 CurveSchema {
                     name: <$Curve as CurveKind>::NAME,
-                    keys: <$Curve as CurveKind>::KEYS,
-                    required: <$Curve as CurveKind>::REQUIRED,
-                    one_of: <$Curve as CurveKind>::ONE_OF,
-                    units: <$Curve as CurveKind>::UNITS,
                     arithmetic: <$Curve as CurveKind>::ARITHMETIC,
                     index: <$Curve as CurveKind>::INDEX,
-                    read: read_as::<$Curve>,
                 },
             )+
         ];
@@ -172,13 +139,6 @@ macro_rules! curves {
             pub(crate) fn time_model(&self) -> TimeModel {
                 match self {
                     $( Curve::$Curve(c) => TimeModel::$Curve(c.time()), )+
-                }
-            }
-
-            #[cfg_attr(not(feature = "codegen"), allow(dead_code))]
-            pub(crate) fn describe(&self, out: &mut dyn FnMut(Key, Param)) {
-                match self {
-                    $( Curve::$Curve(c) => c.describe(out), )+
                 }
             }
         }

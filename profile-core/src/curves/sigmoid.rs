@@ -1,7 +1,7 @@
 //! The sigmoid S-curve of the S-curve articles, over the step index and over time.
 
 use super::check::{len, positive, range};
-use super::kind::{CurveKind, IndexEntry, Length, Modes, Param, Reader};
+use super::kind::{CurveKind, IndexEntry, Length, Modes};
 use crate::base::error::Error;
 use crate::base::key::Key;
 use crate::base::math::{SoftplusRise, logistic};
@@ -135,8 +135,6 @@ impl TimeCurve for SigmoidInTime {
 
 impl CurveKind for Sigmoid {
     const NAME: &'static str = "sigmoid";
-    const KEYS: &'static [Key] = &[Key::LEN, Key::FMIN, Key::FMAX, Key::FLEXIBLE];
-    const REQUIRED: &'static [Key] = Self::KEYS;
     const ARITHMETIC: &'static [(Arithmetic, &'static str)] = &[(
         Arithmetic::F32,
         "to `curve = sigmoid` with `discretization = index`, as the S-curve article's C function `CalculateSModelLine` computes",
@@ -198,24 +196,6 @@ impl CurveKind for Sigmoid {
             })?;
         }
         Ok(())
-    }
-
-    fn read(r: &mut dyn Reader) -> Option<Self> {
-        let (len, fmin, fmax) = (r.len(), r.number(Key::FMIN), r.number(Key::FMAX));
-        let flexible = r.number(Key::FLEXIBLE);
-        Some(Sigmoid {
-            fmin: fmin?,
-            fmax: fmax?,
-            flexible: flexible?,
-            len: len?,
-        })
-    }
-
-    fn describe(&self, out: &mut dyn FnMut(Key, Param)) {
-        out(Key::LEN, Param::Count(self.len));
-        out(Key::FMIN, Param::Number(self.fmin));
-        out(Key::FMAX, Param::Number(self.fmax));
-        out(Key::FLEXIBLE, Param::Number(self.flexible));
     }
 }
 

@@ -1,7 +1,7 @@
 //! The exponential-linear-parabolic curve of Zeng, Hu and Hu.
 
 use super::check::{finite, greater, positive};
-use super::kind::{CurveKind, Length, Param, Reader};
+use super::kind::{CurveKind, Length};
 use crate::base::error::Error;
 use crate::base::key::Key;
 use crate::base::solve::TimeCurve;
@@ -192,20 +192,6 @@ impl TimeCurve for ThreeStageInTime {
 
 impl CurveKind for ThreeStage {
     const NAME: &'static str = "three_stage";
-    const KEYS: &'static [Key] = &[
-        Key::FMIN,
-        Key::FMAX,
-        Key::ACCEL,
-        Key::F1,
-        Key::F2,
-        Key::SHAPE,
-    ];
-    const REQUIRED: &'static [Key] = Self::KEYS;
-    const UNITS: &'static [(Key, &'static str)] = &[
-        (Key::F1, "Hz (steps/s)"),
-        (Key::F2, "Hz (steps/s)"),
-        (Key::SHAPE, "1/s"),
-    ];
     type Time = ThreeStageInTime;
 
     fn time(&self) -> ThreeStageInTime {
@@ -252,36 +238,6 @@ impl CurveKind for ThreeStage {
             });
         }
         Ok(())
-    }
-
-    fn read(r: &mut dyn Reader) -> Option<Self> {
-        let (fmin, fmax, accel) = (
-            r.number(Key::FMIN),
-            r.number(Key::FMAX),
-            r.number(Key::ACCEL),
-        );
-        let (f1, f2, shape) = (r.number(Key::F1), r.number(Key::F2), r.number(Key::SHAPE));
-        Some(ThreeStage {
-            fmin: fmin?,
-            fmax: fmax?,
-            accel: accel?,
-            f1: f1?,
-            f2: f2?,
-            shape: shape?,
-        })
-    }
-
-    fn describe(&self, out: &mut dyn FnMut(Key, Param)) {
-        for (key, value) in [
-            (Key::FMIN, self.fmin),
-            (Key::FMAX, self.fmax),
-            (Key::ACCEL, self.accel),
-            (Key::F1, self.f1),
-            (Key::F2, self.f2),
-            (Key::SHAPE, self.shape),
-        ] {
-            out(key, Param::Number(value));
-        }
     }
 }
 

@@ -2,7 +2,7 @@
 //! its torque leaves, less a margin.
 
 use super::check::{finite, positive, range};
-use super::kind::{CurveKind, Length, Param, Reader};
+use super::kind::{CurveKind, Length};
 use crate::base::error::Error;
 use crate::base::key::Key;
 use crate::base::math::{exp_excess_ratio, exp_fraction};
@@ -25,7 +25,7 @@ pub const MAX_ACCEL_POINTS: usize = 34;
 /// Acceleration against step frequency, `(Hz, Hz/s)` points with rising
 /// frequencies and straight lines between them: what a motor's torque
 /// leaves for accelerating at each speed
-/// ([`Motor::torque_limited`](crate::motor::Motor::torque_limited) makes
+/// (`Motor::torque_limited` of the host crate, profile-codegen, makes
 /// it).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct AccelCurve {
@@ -81,7 +81,7 @@ impl AccelCurve {
 /// The fastest ramp a motor allows, with a margin: from `fmin` to `fmax`
 /// the step frequency rises at `df/dt = a(f)`, the acceleration
 /// [`AccelCurve`] gives at each frequency. From a motor
-/// ([`Motor::torque_limited`](crate::motor::Motor::torque_limited)),
+/// (`Motor::torque_limited` of the host crate, profile-codegen),
 /// `a(f) = (s · margin · pull-out torque(f') / safety - friction - damping
 /// · θ · f') / (J · θ)`, `θ` the angle of a table step, `J` the rotor's and
 /// the load's inertia, `f'` one step's gain of speed ahead of `f` (where
@@ -242,8 +242,6 @@ impl TimeCurve for TorqueLimitedInTime {
 
 impl CurveKind for TorqueLimited {
     const NAME: &'static str = "torque_limited";
-    const KEYS: &'static [Key] = &[Key::FMIN, Key::FMAX, Key::MARGIN];
-    const REQUIRED: &'static [Key] = &[Key::FMAX, Key::MARGIN];
     type Time = TorqueLimitedInTime;
 
     fn time(&self) -> TorqueLimitedInTime {
@@ -305,29 +303,6 @@ impl CurveKind for TorqueLimited {
             });
         }
         Ok(())
-    }
-
-    fn read(r: &mut dyn Reader) -> Option<Self> {
-        // The start and the acceleration come from the motor, once it is
-        // read: the start when `fmin` is not given.
-        let fmin = if r.has(Key::FMIN) {
-            r.number(Key::FMIN)
-        } else {
-            Some(f64::NAN)
-        };
-        let (fmax, margin) = (r.number(Key::FMAX), r.number(Key::MARGIN));
-        Some(TorqueLimited {
-            fmin: fmin?,
-            fmax: fmax?,
-            margin: margin?,
-            accel: AccelCurve::EMPTY,
-        })
-    }
-
-    fn describe(&self, out: &mut dyn FnMut(Key, Param)) {
-        out(Key::FMIN, Param::Number(self.fmin));
-        out(Key::FMAX, Param::Number(self.fmax));
-        out(Key::MARGIN, Param::Number(self.margin));
     }
 }
 

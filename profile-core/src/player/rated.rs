@@ -127,6 +127,8 @@ mod timed {
         }
     }
 
+    impl core::error::Error for OffsetMismatch {}
+
     impl<'a, W: TableWord, const HZ: u32> Timed<'a, W, HZ> {
         /// A player of `ramp`, decelerating along it read backwards.
         pub fn new(ramp: Rated<'a, W, HZ>) -> Self {

@@ -80,7 +80,7 @@ impl CheckedSpec {
     /// s) of the entry's closing edge as
     /// [`for_each_exact_edge`](Self::for_each_exact_edge) gives it: one
     /// pass for both.
-    pub(crate) fn for_each_period_and_edge<F: FnMut(u32, u32, f64)>(
+    pub fn for_each_period_and_edge<F: FnMut(u32, u32, f64)>(
         &self,
         mut sink: F,
     ) -> Result<Figures, Error> {

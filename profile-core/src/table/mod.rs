@@ -1,10 +1,6 @@
 //! The table: a spec and its checked form, the one quantizer, per-step,
-//! segment and compressed layouts, owned tables.
+//! segment layouts, and compressed runs with their expansion and index.
 
-#[cfg(feature = "std")]
-pub(crate) mod compress;
-#[cfg(feature = "std")]
-pub(crate) mod computed;
 pub(crate) mod fall;
 pub(crate) mod generate;
 pub(crate) mod quantize;

@@ -4,7 +4,7 @@
 
 use crate::base::error::Error;
 use crate::base::modes::Rounding;
-use crate::base::timer::{Timer, Word};
+use crate::base::timer::Timer;
 use crate::table::spec::Spec;
 
 /// What a generated table amounts to. Times in seconds, frequencies in Hz
@@ -205,30 +205,6 @@ impl Slope {
     }
 }
 
-/// What a table stores for a period of `ticks` (`what` `index`: `entry 3`,
-/// `step 12`), offset by `reload_offset` = `offset`: from 1 to the word's
-/// largest value, or the error that says which period and why. The one
-/// check of a stored value, for every layout.
-pub(crate) fn stored(
-    word: Word,
-    offset: i32,
-    what: &'static str,
-    index: u32,
-    ticks: u32,
-) -> Result<u32, Error> {
-    let value = i64::from(ticks) + i64::from(offset);
-    if value < 1 || value > i64::from(word.max()) {
-        return Err(Error::ReloadOffset {
-            what,
-            index,
-            ticks,
-            offset,
-            word,
-        });
-    }
-    Ok(value as u32)
-}
-
 /// Turns exact periods into integers and keeps the figures.
 pub(crate) struct Quantizer {
     rounding: Rounding,
@@ -385,7 +361,7 @@ impl Quantizer {
     /// `reload_offset`, from 1 to the word's largest value; `what` (`entry`,
     /// `segment`) and `index` say which, as the error does.
     pub(crate) fn stored(&self, index: u32, ticks: u32, what: &'static str) -> Result<u32, Error> {
-        stored(self.timer.word, self.offset, what, index, ticks)
+        self.timer.word.stored(ticks, self.offset, what, index)
     }
 
     /// The quantizer of the same spec, storing the periods as they are: for

@@ -5,7 +5,8 @@
 use std::fs;
 use std::path::Path;
 
-use profile_core::__private::golden::blessing;
+use profile_codegen::__private::golden::blessing;
+use profile_codegen::SpecTables;
 use stepper_profiles::{Figures, Spec};
 
 /// Writes a golden file, its folder created: beside, then renamed, so that

@@ -3,7 +3,7 @@
 //! steps per second scaled to the table's steps; and the chart of the
 //! shipped QSH4218-47-28-040.
 
-use profile_core::motor::{Motor, TorqueCurve};
+use profile_codegen::motor::{Motor, TorqueCurve};
 
 /// Pull-out torque against full steps per second, N·m.
 pub const CURVE: [(f64, f64); 6] = [

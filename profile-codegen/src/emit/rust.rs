@@ -1,0 +1,220 @@
+//! Rust: a table as an array expression, a profile as a module, as tokens.
+//!
+//! `period_table!` and `include_profiles!` return these tokens; the build
+//! script writes the same tokens as text. Nothing is printed to be parsed
+//! again.
+
+use proc_macro2::{Ident, Literal, Span, TokenStream};
+use quote::quote;
+use std::format;
+use std::string::String;
+use std::vec::Vec;
+
+use super::{Constant, Number, Profile, constants, doc_lines};
+use crate::numbers::Fixed;
+use crate::table::computed::Generated;
+use core::mem::size_of;
+use profile_core::Word;
+use profile_core::runs::{IndexedRun, RunIndex};
+
+/// A period as a literal: the first of an array carries the word's suffix,
+/// which gives the array its type.
+fn period(word: Word, ticks: u32, first: bool) -> Literal {
+    match (first, word) {
+        (false, _) => Literal::u32_unsuffixed(ticks),
+        (true, Word::U16) => Literal::u16_suffixed(ticks as u16),
+        (true, Word::U32) => Literal::u32_suffixed(ticks),
+    }
+}
+
+/// The word's type: `u16` or `u32`.
+fn word_type(word: Word) -> Ident {
+    Ident::new(word.name(), Span::call_site())
+}
+
+/// An array expression holding the table as it is stored (each period plus
+/// `reload_offset`): `[19183u16, 18866, ...]`, `[(9533u16, 3u16), (4750,
+/// 9), ...]` for a segment table, or `[[2u16, 2442u16, ...], [5, 1303,
+/// ...], ...]` for runs (see [`runs`](profile_core::runs)).
+pub fn table_expr(table: &Generated) -> TokenStream {
+    let word = table.spec().timer.word;
+    match table {
+        Generated::Steps(t) => {
+            let items = t
+                .stored_periods()
+                .into_iter()
+                .enumerate()
+                .map(|(i, p)| period(word, p, i == 0));
+            quote!([#(#items),*])
+        }
+        Generated::Segments(t) => {
+            let items = t.stored_pairs().into_iter().enumerate().map(|(i, (p, c))| {
+                let (p, c) = (period(word, p, i == 0), period(word, c, i == 0));
+                quote!((#p, #c))
+            });
+            quote!([#(#items),*])
+        }
+        Generated::Runs(t) => {
+            let items = t.stored_runs().into_iter().enumerate().map(|(i, words)| {
+                let w = words.map(|w| period(Word::U16, u32::from(w), i == 0));
+                quote!([#(#w),*])
+            });
+            quote!([#(#items),*])
+        }
+    }
+}
+
+/// A constant's value as a literal of its type.
+fn value(value: Number) -> (Ident, Literal) {
+    let (ty, literal) = match value {
+        Number::U8(v) => ("u8", Literal::u8_unsuffixed(v)),
+        Number::I32(v) => ("i32", Literal::i32_unsuffixed(v)),
+        Number::U32(v) => ("u32", Literal::u32_unsuffixed(v)),
+        Number::U64(v) => ("u64", Literal::u64_unsuffixed(v)),
+        Number::Usize(v) => ("usize", Literal::u64_unsuffixed(v)),
+        Number::F64(v) => ("f64", Literal::f64_unsuffixed(v)),
+    };
+    (Ident::new(ty, Span::call_site()), literal)
+}
+
+/// A doc attribute's text: a space, as `///` writes it, then the line.
+fn doc(line: &str) -> String {
+    format!(" {line}")
+}
+
+/// The lines of `RUN_INDEX`'s docs that state its sizes, as the types have
+/// them: a run indexed, the buckets and what an index holds besides, and a
+/// run of `RUNS`.
+fn run_index_sizes() -> [String; 3] {
+    let (indexed, buckets, run) = (
+        size_of::<IndexedRun>(),
+        size_of::<RunIndex<0>>(),
+        size_of::<[u16; 5]>(),
+    );
+    [
+        format!(
+            " them and plans its moves finding a step's run by its bucket of steps ({indexed} bytes of"
+        ),
+        format!(
+            " flash a run and {buckets} for the buckets, in place of `RUNS`' {run} a run when `RUNS` is"
+        ),
+        String::from(" not played itself)."),
+    ]
+}
+
+/// A module named after the profile, holding the table and its figures,
+/// documented with its parameters.
+pub fn module(profile: &Profile) -> TokenStream {
+    let spec = profile.table.spec();
+    let word = spec.timer.word;
+    let mut docs = std::vec![
+        doc(&format!(
+            "Profile `{}` ({}).",
+            profile.name,
+            spec.curve.name()
+        )),
+        String::new(),
+    ];
+    docs.extend(doc_lines(&profile.table).iter().map(|l| doc(l)));
+    if let Some(t) = &profile.torque {
+        docs.push(String::new());
+        docs.push(doc(&format!(
+            "Motor: the smallest torque margin is {} N·m at step {} ({} Hz): {} N·m \
+             needed of {} N·m available.",
+            Fixed(t.min_margin_nm, 4),
+            t.step,
+            Fixed(t.hz, 1),
+            Fixed(t.needed_nm, 4),
+            Fixed(t.available_nm, 4)
+        )));
+    }
+    let name = Ident::new(&profile.name, Span::call_site());
+    let ty = word_type(word);
+    let array = table_expr(&profile.table);
+    let table = match &profile.table {
+        Generated::Steps(t) => {
+            let len = Literal::usize_unsuffixed(t.periods.len());
+            quote! {
+                #[doc = " Timer periods, one per step, in ticks of `TIMER_HZ`, each plus `RELOAD_OFFSET`."]
+                pub static PERIODS: [#ty; #len] = #array;
+            }
+        }
+        Generated::Segments(t) => {
+            let len = Literal::usize_unsuffixed(t.pairs.len());
+            quote! {
+                #[doc = " `(period in ticks plus `RELOAD_OFFSET`, steps)` per equal-time segment."]
+                pub static SEGMENTS: [(#ty, #ty); #len] = #array;
+            }
+        }
+        Generated::Runs(t) => {
+            let len = Literal::usize_unsuffixed(t.runs.len());
+            let sizes = run_index_sizes();
+            quote! {
+                #[doc = " Runs of fixed-point periods, `[count, interval_hi, interval_lo, add_hi, add_lo]`:"]
+                #[doc = " play them with `runs::Expand` (see the `runs` module); each period plus `RELOAD_OFFSET`."]
+                pub static RUNS: [[u16; 5]; #len] = #array;
+                #[doc = " `RUNS` with where each run begins: `Player::compressed_indexed(&RUN_INDEX)` plays"]
+                #(#[doc = #sizes])*
+                pub static RUN_INDEX: ::stepper_profiles::runs::RunIndex<#len> =
+                    ::stepper_profiles::runs::RunIndex::new(&RUNS);
+            }
+        }
+    };
+    // The table with its rate as a type and its offset, for `player::Timed`.
+    let hz = Literal::u32_unsuffixed(spec.timer.timer_hz);
+    let (array_name, ramp) = match &profile.table {
+        Generated::Steps(_) => (quote!(PERIODS), quote!(steps)),
+        Generated::Segments(_) => (quote!(SEGMENTS), quote!(segments)),
+        Generated::Runs(_) => (quote!(RUNS), quote!(runs)),
+    };
+    let rated = quote! {
+        #[doc = " The table as a ramp of a timer of `TIMER_HZ` ticks per second, as a type, storing each"]
+        #[doc = " period plus `RELOAD_OFFSET`: `player::Timed::new(RAMP)` hands out durations of that timer."]
+        pub const RAMP: ::stepper_profiles::player::Rated<'static, #ty, #hz> =
+            ::stepper_profiles::player::Rated::new(
+                ::stepper_profiles::player::Ramp::#ramp(&#array_name),
+                RELOAD_OFFSET
+            );
+    };
+    let constants = constants(profile).into_iter().map(|c: Constant| {
+        let name = Ident::new(c.name, Span::call_site());
+        let (ty, literal) = value(c.value);
+        let doc = doc(c.doc);
+        quote! {
+            #[doc = #doc]
+            pub const #name: #ty = #literal;
+        }
+    });
+    // Unused figures are no reason for warnings in the user's crate.
+    quote! {
+        #(#[doc = #docs])*
+        #[allow(dead_code)]
+        pub mod #name {
+            #table
+            #(#constants)*
+            #rated
+        }
+    }
+}
+
+/// One module per profile.
+pub fn modules(profiles: &[Profile]) -> TokenStream {
+    let modules: Vec<TokenStream> = profiles.iter().map(module).collect();
+    quote!(#(#modules)*)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn first_literal_is_suffixed() {
+        use std::string::ToString;
+        let lits = |word, ps: &[u32]| -> String {
+            let items = ps.iter().enumerate().map(|(i, &p)| period(word, p, i == 0));
+            quote!([#(#items),*]).to_string()
+        };
+        assert_eq!(lits(Word::U16, &[3, 2, 1]), "[3u16 , 2 , 1]");
+        assert_eq!(lits(Word::U32, &[70000]), "[70000u32]");
+    }
+}

@@ -1,0 +1,107 @@
+//! The schema's lists of keys: the common ones, the motor's, every key in
+//! documentation order, and the key a name spells. The keys themselves are
+//! `profile-core`'s ([`Key`]).
+
+use std::vec::Vec;
+
+use profile_core::Key;
+
+use super::curve_keys;
+
+/// The keys every curve takes, after the curve's own, in documentation
+/// order (the motor's keys aside).
+pub(crate) const COMMON: &[Key] = &[
+    Key::TIMER_HZ,
+    Key::WORD,
+    Key::TICKS_PER_STEP,
+    Key::RELOAD_OFFSET,
+    Key::DISCRETIZATION,
+    Key::ROUNDING,
+    Key::ARITHMETIC,
+    Key::SEGMENTS,
+    Key::COMPRESS,
+    Key::MOTOR,
+];
+
+/// The keys that describe a motor (all but `motor` itself).
+pub(crate) const MOTOR_KEYS: &[Key] = &[
+    Key::STEP_ANGLE,
+    Key::MICROSTEPS,
+    Key::ROTOR_INERTIA,
+    Key::LOAD_INERTIA,
+    Key::TORQUE_CURVE,
+    Key::FRICTION,
+    Key::DAMPING,
+    Key::DAMPING_RATIO,
+    Key::SAFETY,
+    Key::MAX_START_HZ,
+    Key::RESISTANCE,
+    Key::INDUCTANCE,
+    Key::RATED_CURRENT,
+    Key::HOLDING_TORQUE,
+    Key::SUPPLY_VOLTAGE,
+    Key::DETENT_TORQUE,
+    Key::DRIVE,
+    Key::DRIVER_CURRENT,
+    Key::DRIVER_CURRENT_IS,
+    Key::SUPPLY_UTILIZATION,
+    Key::IRON_LOSS,
+];
+
+/// The keys that describe a motor's windings, from which its pull-out
+/// curve is derived ([`Windings`](crate::motor::Windings)) and the driver
+/// behind them: the first five are required together, the rest have
+/// defaults.
+pub(crate) const WINDINGS_KEYS: &[Key] = &[
+    Key::RESISTANCE,
+    Key::INDUCTANCE,
+    Key::RATED_CURRENT,
+    Key::HOLDING_TORQUE,
+    Key::SUPPLY_VOLTAGE,
+    Key::DETENT_TORQUE,
+    Key::DRIVE,
+    Key::DRIVER_CURRENT,
+    Key::DRIVER_CURRENT_IS,
+    Key::SUPPLY_UTILIZATION,
+    Key::IRON_LOSS,
+];
+
+/// Whether `key` describes a motor.
+pub(crate) fn is_motor(key: Key) -> bool {
+    MOTOR_KEYS.contains(&key)
+}
+
+/// Every key, in the order documentation lists them: `curve`, each curve's
+/// own keys (in the order of the curves), the common keys, the motor's.
+pub fn all() -> Vec<Key> {
+    let mut keys = Vec::from([Key::CURVE]);
+    keys.extend(curve_keys());
+    keys.extend_from_slice(COMMON);
+    keys.extend_from_slice(MOTOR_KEYS);
+    keys
+}
+
+/// The key spelled `name`, if there is one.
+pub(crate) fn from_name(name: &str) -> Option<Key> {
+    all().into_iter().find(|k| k.name() == name)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_windings_keys_are_motor_keys_in_the_same_order() {
+        assert!(MOTOR_KEYS.ends_with(WINDINGS_KEYS));
+    }
+
+    #[test]
+    fn every_key_is_listed_once() {
+        let keys = all();
+        for (i, k) in keys.iter().enumerate() {
+            assert!(!keys[..i].contains(k), "{k} twice");
+        }
+        assert_eq!(from_name("flexible"), Some(Key::FLEXIBLE));
+        assert_eq!(from_name("flexibel"), None);
+    }
+}
