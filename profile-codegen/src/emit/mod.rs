@@ -43,7 +43,7 @@ pub struct Profile {
 
 impl Profile {
     /// A compiled table under its name.
-    pub fn new(name: String, compiled: Compiled) -> Self {
+    pub(crate) fn new(name: String, compiled: Compiled) -> Self {
         Profile {
             name,
             table: compiled.table,

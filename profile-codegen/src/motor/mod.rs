@@ -42,10 +42,7 @@ mod start;
 mod stepped;
 mod windings;
 
-pub use start::{
-    END_FULL_STEPS, REMEDY_DAMPING_RATIO, Remedies, START_FULL_STEPS, START_MAX_STEPS,
-    START_RESOLUTION, StartLimit,
-};
+pub use start::{Remedies, StartLimit};
 pub use windings::{CurrentSetting, Drive, Windings};
 
 use core::fmt;

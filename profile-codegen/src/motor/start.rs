@@ -26,10 +26,10 @@ pub enum StartLimit {
     },
     /// From the model: the fastest constant step rate the rotor, starting at
     /// rest, pulls in to (reaches the field's speed before its lag passes
-    /// 180° electrical, within [`START_FULL_STEPS`] full steps), under the
+    /// 180° electrical, within four full steps), under the
     /// pull-out torque over the safety factor.
     Model {
-        /// The limit, in Hz (to [`START_RESOLUTION`]).
+        /// The limit, in Hz (to a thousandth of a hertz).
         hz: f64,
     },
 }
@@ -46,26 +46,25 @@ impl StartLimit {
 /// Full steps of the start the model plays from rest at a constant rate:
 /// one electrical turn, in which a rotor that cannot pull in falls behind
 /// the field by more than half a turn.
-pub const START_FULL_STEPS: u32 = 4;
+pub(crate) const START_FULL_STEPS: u32 = 4;
 
 /// Full steps of each end of a move the check plays to the model's rotor
 /// ([`Motor::check`]): from rest up the ramp's first entries, and the
 /// shortest move up them and down again.
-pub const END_FULL_STEPS: u32 = 4 * START_FULL_STEPS;
+pub(crate) const END_FULL_STEPS: u32 = 4 * START_FULL_STEPS;
 
 /// The field damping ratio the model tries when its rotor slips at an end
 /// of a move with less ([`Remedies::damping`]): a small fraction of
 /// critical, as a motor's own electromagnetic damping is.
-pub const REMEDY_DAMPING_RATIO: f64 = 0.1;
+pub(crate) const REMEDY_DAMPING_RATIO: f64 = 0.1;
 
 /// What the model found, by playing them, would let its rotor make an end
 /// of a move it slips on. A refusal advises only what is found here.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct Remedies {
-    /// Tried (the motor's `damping_ratio` is below
-    /// [`REMEDY_DAMPING_RATIO`]) and found to help: with
-    /// `damping_ratio = REMEDY_DAMPING_RATIO` the rotor makes it.
+    /// Tried (the motor's `damping_ratio` is below 0.1) and found to
+    /// help: with `damping_ratio = 0.1` the rotor makes it.
     pub damping: Option<bool>,
     /// The same pulses at half the rate (every period doubled: half the
     /// start frequency, a quarter of the acceleration) let the rotor make
@@ -74,7 +73,7 @@ pub struct Remedies {
 }
 
 /// The relative resolution of a start limit found from the model.
-pub const START_RESOLUTION: f64 = 1e-3;
+pub(crate) const START_RESOLUTION: f64 = 1e-3;
 
 /// Above this bound (Hz), [`Motor::start_limit`] narrows its search
 /// geometrically before it bisects.
@@ -104,7 +103,7 @@ impl Motor {
     /// Whether the loaded rotor starts from rest at `hz` (table steps per
     /// second): below `max_start_hz` corrected for the load when it is
     /// given, otherwise when the model's rotor follows a constant rate of
-    /// `hz` (pulls in within [`START_FULL_STEPS`] full steps). A motor
+    /// `hz` (pulls in within four full steps). A motor
     /// [`Motor::validate`] refuses starts at no rate.
     pub fn starts_at(&self, hz: f64) -> bool {
         if self.validate().is_err() {
@@ -118,7 +117,7 @@ impl Motor {
 
     /// The fastest start from rest with the load: `max_start_hz` corrected
     /// for the load when it is given; otherwise the fastest constant rate,
-    /// searched by bisection below `below` Hz (to [`START_RESOLUTION`];
+    /// searched by bisection below `below` Hz (to a thousandth of a hertz;
     /// geometric first from 1 Hz when `below` is above a million, or
     /// infinite), at which the model's rotor pulls in from rest. A motor
     /// [`Motor::validate`] refuses starts at no rate: `Model` at 0 Hz.
@@ -178,7 +177,7 @@ impl Motor {
 
     /// The ends of a move on `periods`, played to the model's rotor: from
     /// rest, the start must pull in before the rotor slips; and the shortest
-    /// move on the ramp's start (up its first [`END_FULL_STEPS`] full steps,
+    /// move on the ramp's start (up its first 16 full steps,
     /// down again, the field held) must leave the rotor within the field's stable region.
     pub(super) fn check_ends(&self, per_second: f64, periods: &[u32]) -> Result<(), MotorError> {
         let hz = per_second / periods.first().map_or(1, |&p| p) as f64;
@@ -229,7 +228,7 @@ impl Motor {
 
 /// The most integration steps of one start judged from the model
 /// ([`Motor::starts_at`]).
-pub const START_MAX_STEPS: u64 = 200_000;
+pub(crate) const START_MAX_STEPS: u64 = 200_000;
 
 /// Whether the rotor, at rest and aligned, pulls in to a field stepping at a
 /// constant `hz` table steps per second: reaches the field's speed without

@@ -21,7 +21,7 @@ use std::collections::VecDeque;
 use std::vec;
 use std::vec::Vec;
 
-use profile_core::runs::{self, Expand, LinearRun, RUN_FRACTION_BITS, RUN_START_FRACTION};
+use profile_core::runs::{self, Expand, LinearRun};
 use profile_core::{CheckedSpec, Discretization, Error, Key, Rounding, Spec, Word};
 
 /// The smallest `compress` allowed with one reload per step: an integer edge
@@ -61,7 +61,7 @@ pub struct RunFigures {
     pub total_error_ticks: f64,
 }
 
-const ONE: f64 = (1u64 << RUN_FRACTION_BITS) as f64;
+const ONE: f64 = (1u64 << LinearRun::FRACTION_BITS) as f64;
 /// The longest step a run plays, in fixed point: 65 535 whole ticks.
 const LONGEST: f64 = u16::MAX as f64 * ONE;
 /// Polygons kept to step back to when the longest run has no integer point.
@@ -230,7 +230,7 @@ impl<'a> Fit<'a> {
     /// running sum that the fit places: each band is `tolerance / repeat`
     /// wide on either side.
     fn new(exact: &'a [f64], tolerance: f64, repeat: f64) -> Self {
-        let fixed = |ticks: f64| (ticks as i64).saturating_mul(1 << RUN_FRACTION_BITS);
+        let fixed = |ticks: f64| (ticks as i64).saturating_mul(1 << LinearRun::FRACTION_BITS);
         let half_width = tolerance / repeat;
         let bands = exact
             .iter()
@@ -277,7 +277,7 @@ impl<'a> Fit<'a> {
                 return None;
             }
             let next = pos + step;
-            let period = (next >> RUN_FRACTION_BITS) - (pos >> RUN_FRACTION_BITS);
+            let period = (next >> LinearRun::FRACTION_BITS) - (pos >> LinearRun::FRACTION_BITS);
             if !(self.shortest..=u16::MAX as i64).contains(&period) {
                 return None;
             }
@@ -401,7 +401,7 @@ impl<'a> Fit<'a> {
         }
         // Every kept length failed: one step, as near its edge as can be.
         let (lo, hi) = self.band(at.done);
-        let target = ((lo + hi) / 2 - at.pos).max(self.shortest << RUN_FRACTION_BITS);
+        let target = ((lo + hi) / 2 - at.pos).max(self.shortest << LinearRun::FRACTION_BITS);
         if let (Some(end), Ok(interval)) = (self.play(at, target, 0, 1), u32::try_from(target)) {
             let run = LinearRun {
                 count: 1,
@@ -469,7 +469,7 @@ pub(crate) fn run_table(checked: &CheckedSpec, tolerance: f64) -> Result<RunTabl
     let fit = Fit::new(&exact, tolerance, repeat);
     let mut at = At {
         done: 0,
-        pos: RUN_START_FRACTION as i64,
+        pos: LinearRun::START_FRACTION as i64,
     };
     let mut runs = Vec::new();
     while at.done < exact.len() {

@@ -4,7 +4,7 @@
 //!
 //! A run is five `u16` words, `[count, interval_hi, interval_lo, add_hi,
 //! add_lo]`: `interval` is the run's first period and `add` what each step
-//! adds to it, both in ticks with [`RUN_FRACTION_BITS`] fractional bits
+//! adds to it, both in ticks with [`LinearRun::FRACTION_BITS`] fractional bits
 //! (`add` in two's complement). Played, a run keeps the sub-tick remainder
 //! of the edges so that rounding never accumulates:
 //!
@@ -12,17 +12,19 @@
 //! x = frac + interval;  period = x >> 16;  frac = x & 0xFFFF;  interval += add
 //! ```
 //!
-//! with `frac` starting at [`RUN_START_FRACTION`] (half a tick: the edges are
+//! with `frac` starting at [`LinearRun::START_FRACTION`] (half a tick: the edges are
 //! rounded, not truncated) and carried from run to run. [`Expand`] is that
 //! loop; the player, the C function and every check use it.
 
 use super::fall::Fall;
 
-/// Fractional bits of a run's `interval` and `add`.
-pub const RUN_FRACTION_BITS: u32 = 16;
+/// Fractional bits of a run's `interval` and `add`
+/// ([`LinearRun::FRACTION_BITS`]).
+pub(crate) const RUN_FRACTION_BITS: u32 = 16;
 
-/// The sub-tick remainder before the first step: half a tick.
-pub const RUN_START_FRACTION: u32 = 1 << (RUN_FRACTION_BITS - 1);
+/// The sub-tick remainder before the first step: half a tick
+/// ([`LinearRun::START_FRACTION`]).
+pub(crate) const RUN_START_FRACTION: u32 = 1 << (RUN_FRACTION_BITS - 1);
 
 pub(crate) const FRACTION_MASK: u32 = (1 << RUN_FRACTION_BITS) - 1;
 
@@ -40,6 +42,14 @@ pub struct LinearRun {
 }
 
 impl LinearRun {
+    /// Fractional bits of a run's `interval` and `add`: they count
+    /// 1/65 536 ticks.
+    pub const FRACTION_BITS: u32 = RUN_FRACTION_BITS;
+
+    /// The sub-tick remainder the first run starts from: half a tick, so
+    /// that the edges are the curve's rounded to the nearest tick.
+    pub const START_FRACTION: u32 = RUN_START_FRACTION;
+
     /// The run's five words, as tables store them.
     pub const fn encode(&self) -> [u16; 5] {
         let add = self.add as u32;
