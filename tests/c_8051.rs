@@ -520,11 +520,11 @@ fn an_8051_plays_moves_as_the_rust_player() {
     let run_steps: u32 = runs.iter().map(|r| u32::from(r[0])).sum();
     let (steps_ops, runs_ops) = (ops(table.len() as u32), ops(run_steps));
     let mut want = Vec::new();
-    let mut player = Player::with_decel(Ramp::steps(&table), Ramp::steps(&table));
+    let mut player = Player::new(Ramp::steps(&table)).with_decel(Ramp::steps(&table));
     for (i, line) in expected(&mut player, &steps_ops).iter().enumerate() {
         want.push(format!("steps {i} {line}"));
     }
-    let mut player = Player::<u16, _>::compressed_with_decel(&runs, &runs);
+    let mut player = Player::<u16, _>::new(&runs[..]).with_decel(&runs[..]);
     for (i, line) in expected(&mut player, &runs_ops).iter().enumerate() {
         want.push(format!("runs {i} {line}"));
     }

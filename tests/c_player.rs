@@ -9,8 +9,8 @@
 //! program that plays every sequence with the header's player and prints
 //! every period and the steps remaining after each operation, compiles it
 //! with the machine's C compiler (`cc`, or `$CC`) and compares its output
-//! with the same sequences played by `Player::with_decel` (per-step tables)
-//! and `Player::compressed_with_decel` (runs).
+//! with the same sequences played by `Player::new(..).with_decel(..)` (per-step tables)
+//! and `Player::new(&RUNS).with_decel(..)` (runs).
 //!
 //! Two builds: one header (C89, `-O0`), and a header with its source file
 //! whose tables are in program memory (`PROGMEM`, with a storage word; C99,
@@ -321,17 +321,17 @@ fn expected(cases: &[Case]) -> String {
         match (&case.accel, decel) {
             (Table::U16(a), Table::U16(d)) => play(
                 &mut out,
-                &mut Player::with_decel(Ramp::steps(a), Ramp::steps(d)),
+                &mut Player::new(Ramp::steps(a)).with_decel(Ramp::steps(d)),
                 &case.ops,
             ),
             (Table::U32(a), Table::U32(d)) => play(
                 &mut out,
-                &mut Player::with_decel(Ramp::steps(a), Ramp::steps(d)),
+                &mut Player::new(Ramp::steps(a)).with_decel(Ramp::steps(d)),
                 &case.ops,
             ),
             (Table::Runs(a), Table::Runs(d)) => play(
                 &mut out,
-                &mut Player::<u16, _>::compressed_with_decel(a, d),
+                &mut Player::<u16, _>::new(&a[..]).with_decel(&d[..]),
                 &case.ops,
             ),
             _ => unreachable!("one kind per case"),

@@ -6,7 +6,7 @@
 #   Cortex-M4F (thumbv7em-none-eabihf,  QEMU mps2-an386)
 # Fails (exit 1) when, on any core, the player's mean in any phase of the
 # per-step table is more than the bare load + 4, or the compressed player's
-# (`Player::compressed`) in any phase of the compressed ramp more than the
+# (`Player::new(&RUNS)`) in any phase of the compressed ramp more than the
 # bare load + 8, or either wrapped in `Buffered` (and the axis) more than
 # the same; or when the step interrupt (SysTick's handler, from its vector
 # to its return, the pin's toggle included, the pin pulsed before the step
@@ -131,7 +131,7 @@ for core in "${cores[@]}"; do
         END {
             bare = mean["bare load, PERIODS[i] (sigmoid_exact)"]
             for (l in mean) {
-                limit = l ~ /^player, per-step table/ ? 4 : l ~ /^Player::compressed/ ? 8 : -1
+                limit = l ~ /^player, per-step table/ ? 4 : l ~ /^compressed Player/ ? 8 : -1
                 if (limit >= 0 && mean[l] > bare + limit) {
                     printf "FAIL %s: %s %.2f instructions per step, more than the bare load %.2f + %d\n", core, l, mean[l], bare, limit
                     bad = 1
@@ -160,7 +160,7 @@ for core in "${cores[@]}"; do
                     }
                 }
                 # Buffered: the step path of the player it wraps.
-                limit = l ~ /^Buffered(,| axis,) per-step table/ ? 4 : l ~ /^Buffered Player::compressed/ ? 8 : -1
+                limit = l ~ /^Buffered(,| axis,) per-step table/ ? 4 : l ~ /^Buffered compressed Player/ ? 8 : -1
                 if (limit >= 0 && mean[l] > bare + limit) {
                     printf "FAIL %s: %s %.2f instructions per step, more than the bare load %.2f + %.1f\n", core, l, mean[l], bare, limit
                     bad = 1
@@ -181,8 +181,8 @@ for core in "${cores[@]}"; do
                 # run: no more than the largest step of the compressed
                 # player on its move.
                 if (l ~ /the step after/) {
-                    refill = largest["Player::compressed (microstep, compress = 1) accelerating"]
-                    down = largest["Player::compressed (microstep, compress = 1) decelerating"]
+                    refill = largest["compressed Player (microstep, compress = 1) accelerating"]
+                    down = largest["compressed Player (microstep, compress = 1) decelerating"]
                     if (down > refill) refill = down
                     if (mean[l] > refill) {
                         printf "FAIL %s: %s %.0f instructions, more than the largest step of the compressed player, %d\n", core, l, mean[l], refill

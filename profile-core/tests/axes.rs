@@ -336,7 +336,7 @@ proptest! {
     ) {
         let runs: Vec<[u16; 5]> = accel.iter().map(|&p| [1, p, 0, 0, 0]).collect();
         let m = model(&deltas);
-        let mut axes = Axes::new(Player::<u16, _>::compressed(&runs), [0; 3]);
+        let mut axes = Axes::new(Player::<u16, _>::new(&runs[..]), [0; 3]);
         axes.move_by(array::<3>(&deltas));
         let mut edges = Vec::new();
         while let Some(e) = axes.next_step() {

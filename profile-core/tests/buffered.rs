@@ -13,7 +13,7 @@ use profile_core::player::{Axis, Buffered, Direction, Player, Ramp, Steps};
 use proptest::prelude::*;
 
 /// Runs from a per-step table: each entry a run of one step, so that
-/// `Player::compressed` plays them.
+/// `Player::new(&RUNS)` plays them.
 fn as_runs(t: &[u16]) -> Vec<[u16; 5]> {
     t.iter().map(|&p| [1, p, 0, 0, 0]).collect()
 }
@@ -132,7 +132,7 @@ proptest! {
         events in events(2usize..200),
     ) {
         let make = || if own_decel {
-            Player::with_decel(Ramp::steps(&accel), Ramp::steps(&decel))
+            Player::new(Ramp::steps(&accel)).with_decel(Ramp::steps(&decel))
         } else {
             Player::new(Ramp::steps(&accel))
         };
@@ -151,7 +151,7 @@ proptest! {
     ) {
         let runs = as_runs(&accel);
         let periods = plain(Player::new(Ramp::steps(&accel)), steps, &events);
-        let mut stepper = Buffered::new(Player::<u16, _>::compressed(&runs));
+        let mut stepper = Buffered::new(Player::<u16, _>::new(&runs[..]));
         let begin = stepper.start(steps);
         let mut handed = begin.0.iter().count() + begin.1.iter().count();
         let apply = |s: &mut Buffered<Player<'_, u16, _>>| {

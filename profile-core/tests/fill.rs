@@ -179,11 +179,11 @@ fn run(
                 let (a, d) = (Tables::<W>::new(accel), Tables::<W>::new(decel));
                 let (ra, rd) = (a.ramp(accel), d.ramp(decel));
                 if let (true, Ramp::Runs(x), Ramp::Runs(y)) = (compressed, ra, rd) {
-                    let mut f = Player::<W, Compressed>::compressed_with_decel(x, y);
+                    let mut f = Player::<W, Compressed>::new(x).with_decel(y);
                     let mut s = f.clone();
                     return compare(&mut f, &mut s, ops);
                 }
-                let mut f = Player::with_decel(ra, rd);
+                let mut f = Player::new(ra).with_decel(rd);
                 let mut s = f.clone();
                 compare(&mut f, &mut s, ops)
             }
@@ -219,7 +219,7 @@ fn compressed_fills_are_the_periods_next_period_hands_out() {
         (Just(a), prop_oneof![1 => same, 1 => runs()])
     });
     let strategy = (ramps, ops(), any::<bool>()).prop_map(|((a, d), ops, w)| (a, d, ops, w));
-    run("Player::compressed", strategy, true);
+    run("compressed Player", strategy, true);
 }
 
 /// The axis fills as its player does, and its position follows the fills.

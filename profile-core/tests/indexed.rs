@@ -6,7 +6,7 @@
 //! The player of the per-step table the runs expand to is the reference
 //! here (its moves are checked against the per-step model in `player.rs`
 //! and against rules computed from the table alone in `motion.rs`); the
-//! players of the runs (`Player::compressed`, `Player::compressed_indexed`,
+//! players of the runs (`Player::new(&RUNS)`, `Player::new(&RUN_INDEX)`,
 //! and `Player::new` of an indexed ramp) must play every period it plays,
 //! keep as many steps and take the same new targets, after every call.
 //!
@@ -47,19 +47,19 @@ fn check(accel: &[[u16; 5]], decel: &[[u16; 5]], ops: &[Op]) -> Result<u64, Test
     // Up to 40 runs, padded with runs of no step to 40 for an index.
     let (a_all, d_all) = (padded::<40>(accel), padded::<40>(decel));
     let (a_index, d_index) = (RunIndex::new(&a_all), RunIndex::new(&d_all));
-    let mut reference = Player::with_decel(Ramp::steps(&a_steps), Ramp::steps(&d_steps));
-    let mut plain = Player::<u16, _>::compressed_with_decel(accel, decel);
-    // One ramp both ways is one index, as `compressed_indexed` makes it
+    let mut reference = Player::new(Ramp::steps(&a_steps)).with_decel(Ramp::steps(&d_steps));
+    let mut plain = Player::<u16, _>::new(accel).with_decel(decel);
+    // One ramp both ways is one index, as `Player::new(&INDEX)` makes it
     // (the planner knows the two ramps for one); else two.
     let (mut indexed, mut any) = if accel == decel {
         (
-            Player::<u16, _>::compressed_indexed(&a_index),
+            Player::<u16, _>::new(&a_index),
             Player::new(Ramp::indexed(&a_index)),
         )
     } else {
         (
-            Player::<u16, _>::compressed_indexed_with_decel(&a_index, &d_index),
-            Player::with_decel(Ramp::indexed(&a_index), Ramp::indexed(&d_index)),
+            Player::<u16, _>::new(&a_index).with_decel(&d_index),
+            Player::new(Ramp::indexed(&a_index)).with_decel(Ramp::indexed(&d_index)),
         )
     };
     let mut steps = 0u64;

@@ -167,8 +167,8 @@ fn tables_of_register_values_play_as_their_periods() {
                     let mut a = Player::new(Ramp::runs(r));
                     let mut b = Player::new(Ramp::runs(&stored));
                     compare(&mut a, &mut b, offset, &ops)?;
-                    let mut a = Player::<u16, Compressed>::compressed(r);
-                    let mut b = Player::<u16, Compressed>::compressed(&stored);
+                    let mut a = Player::<u16, Compressed>::new(&r[..]);
+                    let mut b = Player::<u16, Compressed>::new(&stored[..]);
                     compare(&mut a, &mut b, offset, &ops)
                 }
             }

@@ -68,7 +68,7 @@ proptest! {
         hold in 1u32..4, steps in 0u32..1500,
     ) {
         let decel = if symmetric { accel.clone() } else { decel };
-        let mut player = Player::with_decel(Ramp::held(&accel, hold), Ramp::held(&decel, hold));
+        let mut player = Player::new(Ramp::held(&accel, hold)).with_decel(Ramp::held(&decel, hold));
         player.start(steps);
         let periods = play(&mut player, steps as usize, |_, _| {}).expect("move does not end");
         prop_assert_eq!(periods.len(), steps as usize);
@@ -104,7 +104,7 @@ proptest! {
         accel in table(), decel in table(), hold in 1u32..3,
         steps in 1u32..1500, stop_at in 0usize..1500,
     ) {
-        let mut player = Player::with_decel(Ramp::held(&accel, hold), Ramp::held(&decel, hold));
+        let mut player = Player::new(Ramp::held(&accel, hold)).with_decel(Ramp::held(&decel, hold));
         player.start(steps);
         let periods = play(&mut player, steps as usize, |i, p| if i == stop_at { p.stop() })
             .expect("move does not end");
@@ -202,7 +202,7 @@ fn divider_holds_each_entry() {
 fn stop_enters_the_deceleration_table_at_the_current_speed() {
     let accel = [1000u16, 800, 600, 500, 400];
     let decel = [2000u16, 1500, 1000, 700, 450, 300];
-    let mut player = Player::with_decel(Ramp::steps(&accel), Ramp::steps(&decel));
+    let mut player = Player::new(Ramp::steps(&accel)).with_decel(Ramp::steps(&decel));
     player.start(100);
     let mut periods = Vec::new();
     for _ in 0..4 {
@@ -346,10 +346,8 @@ fn compare<W: TableWord + core::fmt::Debug + PartialEq>(
     };
     let (a_padded, d_padded) = (pad(accel), pad(decel));
     let (a_index, d_index) = (RunIndex::new(&a_padded), RunIndex::new(&d_padded));
-    let mut planned = Player::with_decel(
-        ramp(accel, &a_steps, &a_pairs, true),
-        ramp(decel, &d_steps, &d_pairs, true),
-    );
+    let mut planned = Player::new(ramp(accel, &a_steps, &a_pairs, true))
+        .with_decel(ramp(decel, &d_steps, &d_pairs, true));
     // Every compressed ramp indexed, beside the other layouts.
     fn indexed<'t, W: TableWord>(
         shape: &'t Shape,
@@ -362,18 +360,16 @@ fn compare<W: TableWord + core::fmt::Debug + PartialEq>(
             _ => ramp(shape, steps, pairs, true),
         }
     }
-    let mut any_indexed = Player::with_decel(
-        indexed(accel, &a_index, &a_steps, &a_pairs),
-        indexed(decel, &d_index, &d_steps, &d_pairs),
-    );
+    let mut any_indexed = Player::new(indexed(accel, &a_index, &a_steps, &a_pairs))
+        .with_decel(indexed(decel, &d_index, &d_steps, &d_pairs));
     let mut model = Reference::with_decel(
         ramp(accel, &a_steps, &a_pairs, false),
         ramp(decel, &d_steps, &d_pairs, false),
     );
     let mut compressed: Vec<Player<'_, W, Compressed>> = match (accel, decel) {
         (Shape::Runs(a), Shape::Runs(d)) => vec![
-            Player::compressed_with_decel(a, d),
-            Player::compressed_indexed_with_decel(&a_index, &d_index),
+            Player::new(&a[..]).with_decel(&d[..]),
+            Player::new(&a_index).with_decel(&d_index),
         ],
         _ => vec![],
     };
@@ -503,7 +499,7 @@ fn plays_exactly_as_the_per_step_model() {
     compare_random("planned player", cases() * 8, (shape(80, 6, 1), decel));
 }
 
-/// The player of compressed tables ([`Player::compressed`]) plays every
+/// The player of compressed tables (`Player::new(&RUNS)`) plays every
 /// move exactly as the per-step model plays the runs' expansion (and as the
 /// player of any layout does): random runs (empty ones included), one ramp
 /// or two, u16 and u32, random operations. `PROPTEST_CASES` times 4
@@ -520,7 +516,7 @@ fn the_compressed_player_plays_exactly_as_the_per_step_model() {
 fn a_slower_cruise_is_followed_while_the_deceleration_ramp_caps_the_speed() {
     static ACCEL: [u16; 4] = [4000, 3000, 2000, 1000];
     static DECEL: [u16; 2] = [4000, 2500];
-    let mut player = Player::with_decel(Ramp::steps(&ACCEL), Ramp::steps(&DECEL));
+    let mut player = Player::new(Ramp::steps(&ACCEL)).with_decel(Ramp::steps(&DECEL));
     player.start(40);
     let mut played = Vec::new();
     for step in 0..40 {
@@ -617,8 +613,8 @@ fn a_run_onto_a_held_table_scans_it_entry_by_entry() {
     let moves = [3000u32, 5000, 1000, 1200, 1100];
     let decel_expanded: Vec<u32> = moves.iter().flat_map(|&p| [p; 40]).collect();
     for steps in [50, 120, 150, 170, 190, 200, 230, 400] {
-        let mut a = Player::with_decel(Ramp::runs(&runs), Ramp::held(&moves, 40));
-        let mut c = Player::with_decel(Ramp::steps(&expanded), Ramp::steps(&decel_expanded));
+        let mut a = Player::new(Ramp::runs(&runs)).with_decel(Ramp::held(&moves, 40));
+        let mut c = Player::new(Ramp::steps(&expanded)).with_decel(Ramp::steps(&decel_expanded));
         a.start(steps);
         c.start(steps);
         let all = |p: &mut Player<'_, u32>| -> Vec<u32> {
@@ -627,8 +623,8 @@ fn a_run_onto_a_held_table_scans_it_entry_by_entry() {
         assert_eq!(all(&mut a), all(&mut c), "{steps}");
     }
     let decel = [1000u32, 5000, 1500, 4000, 2500];
-    let mut a = Player::with_decel(Ramp::runs(&runs), Ramp::held(&decel, u32::MAX));
-    let mut b = Player::with_decel(Ramp::steps(&expanded), Ramp::held(&decel, u32::MAX));
+    let mut a = Player::new(Ramp::runs(&runs)).with_decel(Ramp::held(&decel, u32::MAX));
+    let mut b = Player::new(Ramp::steps(&expanded)).with_decel(Ramp::held(&decel, u32::MAX));
     for player in [&mut a, &mut b] {
         player.run();
     }
@@ -657,8 +653,8 @@ fn a_held_table_retargets_as_its_expansion() {
     // The held table and its expansion, `played` steps into a move of
     // `steps`, then changed alike: the rest of each move.
     let both = |steps: u32, played: u32, change: &dyn Fn(&mut Player<'_, u32>) -> bool| {
-        let mut a = Player::with_decel(Ramp::held(&held, 30), Ramp::steps(&decel));
-        let mut b = Player::with_decel(Ramp::steps(&expanded), Ramp::steps(&decel));
+        let mut a = Player::new(Ramp::held(&held, 30)).with_decel(Ramp::steps(&decel));
+        let mut b = Player::new(Ramp::steps(&expanded)).with_decel(Ramp::steps(&decel));
         a.start(steps);
         b.start(steps);
         for _ in 0..played {
@@ -689,7 +685,7 @@ fn a_held_table_retargets_as_its_expansion() {
     }
     // Entries of `u32::MAX` steps: a run stopped, then run again while
     // decelerating.
-    let mut player = Player::with_decel(Ramp::held(&held, u32::MAX), Ramp::steps(&decel));
+    let mut player = Player::new(Ramp::held(&held, u32::MAX)).with_decel(Ramp::steps(&decel));
     player.run();
     assert_eq!(player.next_period(), Some(3000));
     player.stop();
@@ -708,8 +704,8 @@ fn a_held_table_stops_as_its_expansion() {
     let decel = [3000u16, 2000, 2500, 1500];
     let decel_expanded: Vec<u16> = decel.iter().flat_map(|&p| [p; 40]).collect();
     for played in [10, 70, 120, 180] {
-        let mut a = Player::with_decel(Ramp::held(&held, 50), Ramp::held(&decel, 40));
-        let mut b = Player::with_decel(Ramp::steps(&expanded), Ramp::steps(&decel_expanded));
+        let mut a = Player::new(Ramp::held(&held, 50)).with_decel(Ramp::held(&decel, 40));
+        let mut b = Player::new(Ramp::steps(&expanded)).with_decel(Ramp::steps(&decel_expanded));
         a.start(1000);
         b.start(1000);
         for _ in 0..played {

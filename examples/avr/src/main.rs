@@ -33,8 +33,8 @@ use std::process::{Command, ExitCode};
 use std::time::Duration;
 
 use profile_codegen::Generated;
-use profile_core::player::{Layout, Player, Ramp};
 use profile_codegen::profiles::{CStyle, Profiles};
+use profile_core::player::{Layout, Player, Ramp};
 use profile_core::runs::Expand;
 
 use cycles::{Isr, Stats};
@@ -70,7 +70,7 @@ impl Table {
     fn play(&self, m: &Move) -> Vec<u32> {
         match self {
             Table::Steps(t) => play(Player::new(Ramp::steps(t)), m),
-            Table::Runs(r) => play(Player::<u16, _>::compressed(r), m),
+            Table::Runs(r) => play(Player::<u16, _>::new(&r[..]), m),
         }
     }
 }

@@ -11,7 +11,7 @@
 //! the periods loaded before it, to the tick. The moves cover a trapezoid,
 //! a triangle, an asymmetric ramp pair, stops, cruise changes, a held
 //! (divider) ramp, a segment table and a compressed (runs) table, played by
-//! `Player::compressed` and by the player of any layout, whose every
+//! `Player::new(&RUNS)` and by the player of any layout, whose every
 //! accelerating pulse edge is also checked against the exact curve computed
 //! on the target; each is compared step by step with a plain reference
 //! reading of the tables and with the figures the macros emit

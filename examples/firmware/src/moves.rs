@@ -235,8 +235,8 @@ pub struct Move<'a> {
     pub steps: u32,
     /// Events before given steps.
     pub events: &'static [(u32, Event)],
-    /// Played by `Player::compressed` (both ramps are runs), else by
-    /// `Player::with_decel`.
+    /// Played by `Player::new(&RUNS)` (both ramps are runs), else by
+    /// `Player::new(..).with_decel(..)`.
     pub compressed: bool,
     /// Played by a `Buffered<Axis>` at the first position, moved to the
     /// second (`steps` apart).
@@ -272,16 +272,15 @@ pub fn play(
     let player = match (m.compressed, m.accel, m.decel) {
         _ if m.axis.is_some() => {
             let (from, to) = m.axis.unwrap_or_default();
-            let player = Player::with_decel(m.accel.ramp(), m.decel.ramp());
+            let player = Player::new(m.accel.ramp()).with_decel(m.decel.ramp());
             Players::Axis(Buffered::new(Axis::new(player, from)), to)
         }
         (true, Table::Runs(a), Table::Runs(d)) => {
-            Players::Compressed(Buffered::new(Player::compressed_with_decel(a, d)))
+            Players::Compressed(Buffered::new(Player::new(a).with_decel(d)))
         }
-        _ => Players::Any(Buffered::new(Player::with_decel(
-            m.accel.ramp(),
-            m.decel.ramp(),
-        ))),
+        _ => Players::Any(Buffered::new(
+            Player::new(m.accel.ramp()).with_decel(m.decel.ramp()),
+        )),
     };
     let s = step::run(
         Stepper {
@@ -807,7 +806,7 @@ fn scenarios() -> [Scenario<'static>; 19] {
 const STOP_RUNS_AT: u32 = 7000;
 
 /// The move whose accelerating edges are also checked against the curve.
-const RUNS_MOVE: &str = "runs, Player::compressed";
+const RUNS_MOVE: &str = "runs, compressed Player";
 
 /// Every accelerating pulse edge of the compressed move against the exact
 /// curve's, computed here on the target: within the `compress` the table

@@ -172,10 +172,10 @@ fn buffered_moves(timer: &mut SYST) {
     );
     check(buffered.is_done(), "buffered player");
     let up = microstep_runs::LEN as u32;
-    let mut buffered = Buffered::new(Player::compressed(&microstep_runs::RUNS));
+    let mut buffered = Buffered::new(Player::new(&microstep_runs::RUNS));
     let _ = buffered.start(2 * up + 1000);
     phases(
-        "Buffered Player::compressed (microstep, compress = 1)",
+        "Buffered compressed Player (microstep, compress = 1)",
         (up, 1000),
         || buffered_runs_step(&mut buffered, timer),
     );
@@ -236,7 +236,7 @@ pub fn player_new(periods: &'static [u16]) -> Player<'static, u16> {
 #[inline(never)]
 #[unsafe(no_mangle)]
 pub fn player_runs_new(runs: &'static [[u16; 5]]) -> Player<'static, u16, Compressed> {
-    Player::compressed(runs)
+    Player::new(runs)
 }
 
 /// [`player_new`] on a compressed ramp with its index.
@@ -245,7 +245,7 @@ pub fn player_runs_new(runs: &'static [[u16; 5]]) -> Player<'static, u16, Compre
 pub fn player_runs_new_indexed(
     index: &'static RunIndex<{ microstep_runs::RUNS.len() }>,
 ) -> Player<'static, u16, Compressed> {
-    Player::compressed_indexed(index)
+    Player::new(index)
 }
 
 /// Planning calls, one set per kind of player: not inlined and not
@@ -580,11 +580,11 @@ fn main() -> ! {
         timer,
     );
     // The player of compressed tables on the same move.
-    let mut player = Player::compressed(&microstep_runs::RUNS);
+    let mut player = Player::new(&microstep_runs::RUNS);
     let up = microstep_runs::LEN as u32;
     player.start(2 * up + 1000);
     phases(
-        "Player::compressed (microstep, compress = 1)",
+        "compressed Player (microstep, compress = 1)",
         (up, 1000),
         || player_runs_step(&mut player, timer),
     );
@@ -599,10 +599,10 @@ fn main() -> ! {
         || player_next_period(&mut player, timer),
     );
     check(player.is_done(), "next_period");
-    let mut player = Player::compressed(&microstep_runs::RUNS);
+    let mut player = Player::new(&microstep_runs::RUNS);
     player.start(2 * up + 1000);
     phases(
-        "next_period, Player::compressed (microstep, compress = 1)",
+        "next_period, compressed Player (microstep, compress = 1)",
         (up, 1000),
         || player_runs_next_period(&mut player, timer),
     );
@@ -645,7 +645,7 @@ fn main() -> ! {
     check(player.is_done() && sum == whole, "fill half a word on");
     let (up, cruise) = (microstep_runs::LEN as u32, 992);
     let whole = 2 * microstep_runs::TOTAL_TICKS as u32 + cruise * last_run(&microstep_runs::RUNS);
-    let mut player = Player::compressed(&microstep_runs::RUNS);
+    let mut player = Player::new(&microstep_runs::RUNS);
     player.start(2 * up + cruise);
     let sum = fill_phases::<62>(
         "Player::fill, compressed (microstep, compress = 1)",
@@ -759,11 +759,11 @@ fn main() -> ! {
     }
     planning_runs!(
         "compressed ramp (microstep_runs, 7192 steps)",
-        Player::<u16, _>::compressed(&microstep_runs::RUNS)
+        Player::<u16, _>::new(&microstep_runs::RUNS)
     );
     planning_runs!(
         "indexed compressed ramp (microstep_runs, 7192 steps)",
-        Player::<u16, _>::compressed_indexed(&microstep_runs::RUN_INDEX)
+        Player::<u16, _>::new(&microstep_runs::RUN_INDEX)
     );
 
     handler::measure();

@@ -153,7 +153,7 @@ pub fn module(profile: &Profile) -> TokenStream {
                 #[doc = " Runs of fixed-point periods, `[count, interval_hi, interval_lo, add_hi, add_lo]`:"]
                 #[doc = " play them with `runs::Expand` (see the `runs` module); each period plus `RELOAD_OFFSET`."]
                 pub static RUNS: [[u16; 5]; #len] = #array;
-                #[doc = " `RUNS` with where each run begins: `Player::compressed_indexed(&RUN_INDEX)` plays"]
+                #[doc = " `RUNS` with where each run begins: `Player::new(&RUN_INDEX)` plays"]
                 #(#[doc = #sizes])*
                 pub static RUN_INDEX: ::stepper_profiles::runs::RunIndex<#len> =
                     ::stepper_profiles::runs::RunIndex::new(&RUNS);

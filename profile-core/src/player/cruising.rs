@@ -246,9 +246,9 @@ mod tests {
                     let (a_all, d_all) = (padded::<40>(&accel), padded::<40>(&decel));
                     let (a_index, d_index) = (RunIndex::new(&a_all), RunIndex::new(&d_all));
                     let mut player = if accel == decel {
-                        Player::<u16, Compressed>::compressed_indexed(&a_index)
+                        Player::<u16, Compressed>::new(&a_index)
                     } else {
-                        Player::<u16, Compressed>::compressed_indexed_with_decel(&a_index, &d_index)
+                        Player::<u16, Compressed>::new(&a_index).with_decel(&d_index)
                     };
                     player.start(steps);
                     for _ in 0..played {

@@ -29,7 +29,7 @@
 //!
 //! A player knows from its type which tables it plays ([`Layout`]):
 //! [`Player::new`] plays every layout, its step path trying the per-step
-//! table's way first; [`Player::compressed`] plays compressed tables only,
+//! table's way first; [`Player::new`] of a compressed table plays compressed tables only,
 //! its step path trying their run first. Each plays at nearly the cost of
 //! a load.
 //!
@@ -73,11 +73,10 @@ mod threshold;
 use core::marker::PhantomData;
 
 use crate::base::timer::TableWord;
-use crate::table::runs::RunIndex;
 pub use axes::Axes;
 pub use axis::{Axis, Direction, Moving};
 pub use buffered::{AxesStart, Buffered, Steps};
-pub use layout::{AnyLayout, Compressed, Layout};
+pub use layout::{AnyLayout, Compressed, IntoRamp, Layout};
 use plan::{Known, Plan, Run, Sides, Source};
 pub use ramp::Ramp;
 use ramp::{Cursor, ticks_at};
@@ -91,7 +90,7 @@ use runs::RunState;
 ///
 /// `L` says which ramps it plays, and so which path its step takes first:
 /// [`AnyLayout`] (the default, from [`Player::new`]) plays every layout,
-/// [`Compressed`] (from [`Player::compressed`]) only compressed tables,
+/// [`Compressed`] (from [`Player::new`] of a compressed table) only compressed tables,
 /// at the least cost per step.
 ///
 /// It hands out what the tables hold. A table made with `reload_offset`
@@ -156,44 +155,36 @@ pub struct Player<'a, W, L = AnyLayout> {
     layout: PhantomData<L>,
 }
 
-impl<'a, W: TableWord> Player<'a, W> {
-    /// A player that decelerates along the acceleration ramp read backwards.
+impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
+    /// A player of `ramp`, decelerating along it read backwards
+    /// ([`with_decel`](Self::with_decel) gives it a deceleration ramp of
+    /// its own). The table's type chooses the player's step path
+    /// ([`IntoRamp`]): a per-step table or any [`Ramp`] plays through
+    /// [`AnyLayout`], a compressed table or its [`RunIndex`](crate::runs::RunIndex) through
+    /// [`Compressed`], which plays what `Player::new(Ramp::runs(..))` plays,
+    /// period for period, with a step path that knows its ramps are runs.
+    /// On a compressed ramp a planning call (`start`, `stop`, a new cruise
+    /// or target) leaves the first run of its plan to the step after it,
+    /// which decodes it as a step does at the end of every run: that step
+    /// costs what any step that begins a run costs, and the call does not.
+    /// An indexed one plans its moves by bisection over the runs instead
+    /// of a walk over them.
     ///
     /// Making a player reads its ramps, a pass or two over every step
     /// (their slack, their fastest periods, and how far ahead the
     /// deceleration ramp is faster at every step, which planning asks
     /// before it searches): about 96 000 instructions for a 1000-entry
     /// table on a Cortex-M3, 1.2 million for a compressed ramp of 7192
-    /// steps, and under a thousand indexed ([`Player::compressed_indexed`]:
-    /// the index has all of it already). Make it once, at boot, and plan
-    /// each move with [`Player::start`] or [`Player::retarget`].
-    pub fn new(accel: Ramp<'a, W>) -> Self {
-        Self::with_decel(accel, accel)
-    }
-
-    /// A player with its own deceleration ramp (also ordered slow to fast),
-    /// for asymmetric moves.
-    pub fn with_decel(accel: Ramp<'a, W>, decel: Ramp<'a, W>) -> Self {
-        Self::build(accel, decel)
-    }
-}
-
-impl<'a, W: TableWord> Player<'a, W, Compressed> {
-    /// A player of a compressed table (a profile's `RUNS`, or
-    /// `period_table!(.., compress = E)`), decelerating along it read
-    /// backwards. It plays what `Player::new(Ramp::runs(runs))` plays,
-    /// period for period, with a step path that knows its ramps are runs.
-    /// A planning call (`start`, `stop`, a new cruise or target) leaves
-    /// the first run of its plan to the step after it, which decodes it as
-    /// a step does at the end of every run: that step costs what any step
-    /// that begins a run costs, and the call does not.
+    /// steps, and under a thousand indexed (the index has all of it
+    /// already). Make it once, at boot, and plan each move with
+    /// [`Player::start`] or [`Player::retarget`].
     ///
     /// ```
     /// use profile_core::player::{Player, Ramp};
     ///
     /// // 3 steps from 4000.5 ticks, 500 shorter each, then 2 of 2000.
     /// static RUNS: [[u16; 5]; 2] = [[3, 4000, 0x8000, 0xFE0C, 0], [2, 2000, 0, 0, 0]];
-    /// let mut fast = Player::<u16, _>::compressed(&RUNS);
+    /// let mut fast = Player::<u16, _>::new(&RUNS);
     /// let mut any = Player::new(Ramp::runs(&RUNS));
     /// fast.start(12);
     /// any.start(12);
@@ -205,33 +196,28 @@ impl<'a, W: TableWord> Player<'a, W, Compressed> {
     /// assert_eq!(fast.next_period(), None);
     /// assert_eq!(periods[..6], [4001, 3500, 3001, 2000, 2000, 2000]);
     /// ```
-    pub fn compressed(runs: &'a [[u16; 5]]) -> Self {
-        Self::compressed_with_decel(runs, runs)
+    pub fn new<R: IntoRamp<'a, W, Layout = L>>(ramp: R) -> Self {
+        let ramp = ramp.into_ramp();
+        Self::build(ramp, ramp)
     }
 
-    /// A player of two compressed tables, one to accelerate and one to
-    /// decelerate (also ordered slow to fast).
-    pub fn compressed_with_decel(accel: &'a [[u16; 5]], decel: &'a [[u16; 5]]) -> Self {
-        Self::build(Ramp::runs(accel), Ramp::runs(decel))
-    }
-
-    /// A player of an indexed compressed table ([`RunIndex`]), decelerating
-    /// along it read backwards: it plays what [`Player::compressed`] plays
-    /// of the same runs, and plans its moves (start, stop, a new cruise or
-    /// target) by bisection over the runs instead of a walk over them.
-    /// The index holds the ramp's slack, its shortest period and how far
-    /// ahead of itself it is faster at every step, computed at compile
-    /// time: making the player reads none of its steps.
-    pub fn compressed_indexed<const N: usize>(index: &'a RunIndex<N>) -> Self {
-        Self::build(Ramp::indexed(index), Ramp::indexed(index))
-    }
-
-    /// [`Player::compressed_indexed`] with a deceleration table of its own.
-    pub fn compressed_indexed_with_decel<const A: usize, const D: usize>(
-        accel: &'a RunIndex<A>,
-        decel: &'a RunIndex<D>,
-    ) -> Self {
-        Self::build(Ramp::indexed(accel), Ramp::indexed(decel))
+    /// The same player with a deceleration ramp of its own (also ordered
+    /// slow to fast, of the same layout), for asymmetric moves: it reads
+    /// its two ramps again, as making a player does.
+    ///
+    /// ```
+    /// use profile_core::player::Player;
+    ///
+    /// static UP: [u16; 4] = [4000, 3000, 2000, 1500];
+    /// static DOWN: [u16; 2] = [4000, 1500];
+    /// let mut player = Player::new(&UP).with_decel(&DOWN);
+    /// player.start(6);
+    /// let periods: Vec<u16> = core::iter::from_fn(|| player.next_period()).collect();
+    /// assert_eq!(periods, [4000, 3000, 2000, 1500, 1500, 4000]);
+    /// ```
+    #[must_use]
+    pub fn with_decel<R: IntoRamp<'a, W, Layout = L>>(self, decel: R) -> Self {
+        Self::build(self.accel, decel.into_ramp())
     }
 }
 

@@ -151,7 +151,7 @@ mod timed {
                 });
             }
             Ok(Timed {
-                player: Player::with_decel(accel.ramp(), decel.ramp()),
+                player: Player::new(accel.ramp()).with_decel(decel.ramp()),
                 reload_offset: accel.reload_offset(),
             })
         }

@@ -75,11 +75,11 @@ fn next_period_hands_out_what_step_does() {
     static RUNS: [[u16; 5]; 2] = [[3, 4000, 0x8000, 0xFE0C, 0], [2, 2000, 0, 0, 0]];
     static INDEX: RunIndex<2> = RunIndex::new(&RUNS);
     same(Player::new(Ramp::steps(&STEPS)));
-    same(Player::with_decel(Ramp::steps(&STEPS), Ramp::steps(&DECEL)));
+    same(Player::new(Ramp::steps(&STEPS)).with_decel(Ramp::steps(&DECEL)));
     same(Player::new(Ramp::held(&STEPS, 3)));
     same(Player::new(Ramp::segments(&SEGMENTS)));
     same(Player::new(Ramp::runs(&RUNS)));
-    same(Player::with_decel(Ramp::runs(&RUNS), Ramp::steps(&DECEL)));
-    same(Player::<u16, _>::compressed(&RUNS));
-    same(Player::<u16, _>::compressed_indexed(&INDEX));
+    same(Player::new(Ramp::runs(&RUNS)).with_decel(Ramp::steps(&DECEL)));
+    same(Player::<u16, _>::new(&RUNS));
+    same(Player::<u16, _>::new(&INDEX));
 }

@@ -212,7 +212,7 @@ impl IndexedRun {
 ///
 /// static RUNS: [[u16; 5]; 2] = [[3, 4000, 0x8000, 0xFE0C, 0], [2, 2000, 0, 0, 0]];
 /// static INDEX: RunIndex<2> = RunIndex::new(&RUNS);
-/// let mut player = Player::<u16, _>::compressed_indexed(&INDEX);
+/// let mut player = Player::<u16, _>::new(&INDEX);
 /// player.start(5);
 /// assert_eq!(player.next_period(), Some(4001));
 /// assert_eq!(INDEX.runs()[1].step(), 3);
