@@ -11,7 +11,7 @@ fn root() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
 }
 
-/// What `examples/firmware/examples/step_interrupt.rs` holds after the
+/// What `rigs/firmware/examples/step_interrupt.rs` holds after the
 /// guide's block: the harness that times its step pin in QEMU, and nothing
 /// else.
 const HARNESS: &str = "
@@ -21,13 +21,13 @@ const HARNESS: &str = "
 mod harness;";
 
 /// The step-interrupt firmware in the guide's firmware page is
-/// `examples/firmware/examples/step_interrupt.rs`, which CI runs on a
+/// `rigs/firmware/examples/step_interrupt.rs`, which CI runs on a
 /// Cortex-M3 in QEMU: the guide's code, then the harness.
 #[test]
 fn the_step_interrupt_example_is_the_file_ci_builds() {
     let readme = read("src/guide/firmware.md");
     let file =
-        fs::read_to_string(root().join("examples/firmware/examples/step_interrupt.rs")).unwrap();
+        fs::read_to_string(root().join("rigs/firmware/examples/step_interrupt.rs")).unwrap();
     let block = readme
         .split("```rust,ignore\n")
         .find(|b| b.contains("fn SysTick()"))
@@ -36,7 +36,7 @@ fn the_step_interrupt_example_is_the_file_ci_builds() {
     assert_eq!(
         format!("{}{}", block.trim_end(), HARNESS),
         file.trim_end(),
-        "the guide's step interrupt differs from examples/firmware/examples/step_interrupt.rs"
+        "the guide's step interrupt differs from rigs/firmware/examples/step_interrupt.rs"
     );
 }
 

@@ -461,7 +461,7 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     /// of the mask flipped. Three axes (two followers stepping on 86 % and
     /// 25 % of the lead's steps) take 9.2 instructions per step
     /// more than the player on a Cortex-M3 or M4F and 12.5 on an M0
-    /// (`examples/measure/measure.sh`). `write` is called
+    /// (`rigs/measure/measure.sh`). `write` is called
     /// once a step at most; it is `FnMut` so that the step can hand it on
     /// to the path that refills the run.
     #[inline]

@@ -4,7 +4,7 @@
 //! after the interval now starting. `main` hands the stepper to the
 //! interrupt for a move and takes it back when the move has ended: no lock
 //! and no check in the interrupt, 16 to 18 instructions a step on a
-//! Cortex-M3 from the vector to the return (`examples/measure`); the pin
+//! Cortex-M3 from the vector to the return (`rigs/measure`); the pin
 //! is pulsed first, so every edge comes the same time after its wrap.
 #![no_std]
 #![no_main]

@@ -23,7 +23,7 @@
 //! instruction a nanosecond, so that the stamps are exact) prints a summary
 //! over semihosting and exits QEMU with status 0, or 1 on any mismatch or
 //! panic. Instructions per step are measured on three cores by
-//! `examples/measure`.
+//! `rigs/measure`.
 #![no_std]
 #![no_main]
 
