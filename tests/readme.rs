@@ -26,8 +26,7 @@ mod harness;";
 #[test]
 fn the_step_interrupt_example_is_the_file_ci_builds() {
     let readme = read("src/guide/firmware.md");
-    let file =
-        fs::read_to_string(root().join("rigs/firmware/examples/step_interrupt.rs")).unwrap();
+    let file = fs::read_to_string(root().join("rigs/firmware/examples/step_interrupt.rs")).unwrap();
     let block = readme
         .split("```rust,ignore\n")
         .find(|b| b.contains("fn SysTick()"))
