@@ -419,13 +419,6 @@ fn size_claims() -> Vec<SizeClaim> {
             &[indexed, index],
         ),
         claim(
-            "CHANGELOG.md",
-            "`const fn` ({} bytes a run and {} for the buckets",
-            &[indexed, index],
-        ),
-        claim("CHANGELOG.md", "too: {} bytes more an index", &[figures]),
-        claim("CHANGELOG.md", "`[[u16; 5]; N]`, {} bytes a run", &[run]),
-        claim(
             "docs/performance.md",
             "with its slack ({} bytes of flash",
             &[figures],
@@ -485,10 +478,6 @@ const NOT_TYPE_SIZES: &[(&str, &str)] = &[
     (
         "profile-codegen/src/emit/c/player/mod.rs",
         "whose internal RAM is 256 bytes, of which 128",
-    ),
-    (
-        "CHANGELOG.md",
-        "needed over 500 bytes of the 128 an 8051 addresses directly",
     ),
     ("tests/README.md", "(256 bytes of internal RAM)"),
     (
