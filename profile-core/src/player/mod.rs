@@ -51,40 +51,25 @@
 //! assert_eq!(periods, [4000, 2500, 2000, 1800, 1800, 1800, 1800, 2000, 2500, 4000]);
 //! ```
 
-mod axes;
-mod axis;
-mod buffered;
-mod crossing;
-mod cruising;
-mod direct;
-mod entries;
-mod fill;
-mod layout;
-mod motion;
-mod plan;
-mod ramp;
-mod rated;
-mod reader;
-mod runs;
-mod search;
-mod step;
-mod threshold;
+mod planning;
+mod playing;
+mod ramps;
 
 use core::marker::PhantomData;
 
 use crate::base::timer::TableWord;
-pub use axes::Axes;
-pub use axis::{Axis, Direction, Moving};
-pub use buffered::{AxesStart, Buffered, Steps};
-pub use layout::{AnyLayout, Compressed, IntoRamp, Layout};
-use plan::{Known, Plan, Run, Sides, Source};
-pub use ramp::Ramp;
-use ramp::{Cursor, ticks_at};
-pub use rated::Rated;
+use planning::plan::{Known, Plan, Run, Sides, Source};
+use planning::reader::{Reader, RunRead};
+pub use playing::axes::Axes;
+pub use playing::axis::{Axis, Direction, Moving};
+pub use playing::buffered::{AxesStart, Buffered, Steps};
+pub use playing::rated::Rated;
 #[cfg(feature = "fugit")]
-pub use rated::{OffsetMismatch, Timed};
-use reader::{Reader, RunRead};
-use runs::RunState;
+pub use playing::rated::{OffsetMismatch, Timed};
+pub use ramps::layout::{AnyLayout, Compressed, IntoRamp, Layout};
+pub use ramps::ramp::Ramp;
+use ramps::ramp::{Cursor, ticks_at};
+use ramps::runs::RunState;
 
 /// Plays moves from an acceleration ramp and a deceleration ramp.
 ///
@@ -132,7 +117,7 @@ pub struct Player<'a, W, L = AnyLayout> {
     /// at the ramp's top, or found on an indexed ramp by
     /// [`Player::set_cruise_period`].
     cruise_last: bool,
-    /// The ramps' slack added ([`search::slack`]): how far from ordered
+    /// The ramps' slack added ([`planning::search::slack`]): how far from ordered
     /// slow to fast they are, for planning's searches.
     slack: u32,
     /// The acceleration ramp's alone.
@@ -249,8 +234,8 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     fn build(accel: Ramp<'a, W>, decel: Ramp<'a, W>) -> Self {
         let accel_last = accel.len_steps().saturating_sub(1);
         let decel_fastest = decel.fastest();
-        let one = search::one_ramp(&accel, &decel);
-        let (accel_slack, decel_slack) = search::slacks(&accel, &decel, one);
+        let one = planning::search::one_ramp(&accel, &decel);
+        let (accel_slack, decel_slack) = planning::search::slacks(&accel, &decel, one);
         Player {
             accel,
             decel,
@@ -272,7 +257,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
                     Cursor::at(&accel, accel_last),
                     Cursor::at(&decel, decel.len_steps().saturating_sub(1)),
                 ],
-                fall: search::fall(&accel, &decel, decel_slack, one),
+                fall: planning::search::fall(&accel, &decel, decel_slack, one),
             },
             endless: false,
             extended: 0,
@@ -456,12 +441,18 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             return 0;
         }
         let entry = match self.decel.per_step() {
-            Some(d) => search::last_at_least(|pos| ticks_at(d, pos), last, slack, current),
-            // (Step 0 is that long: checked above.)
-            None => {
-                threshold::last_at_least_on(&self.decel, self.known.tops[1], last, slack, current)
-                    .unwrap_or(0)
+            Some(d) => {
+                planning::search::last_at_least(|pos| ticks_at(d, pos), last, slack, current)
             }
+            // (Step 0 is that long: checked above.)
+            None => planning::threshold::last_at_least_on(
+                &self.decel,
+                self.known.tops[1],
+                last,
+                slack,
+                current,
+            )
+            .unwrap_or(0),
         };
         entry + 1
     }
@@ -504,7 +495,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     }
 
     /// The period `s` reads at position `pos`, in ticks.
-    fn period_read(&self, s: &plan::Stretch<'a, W>, pos: u32) -> u32 {
+    fn period_read(&self, s: &planning::plan::Stretch<'a, W>, pos: u32) -> u32 {
         let ramp = if s.decel { &self.decel } else { &self.accel };
         if let Some(periods) = ramp.per_step() {
             return ticks_at(periods, pos).unwrap_or(0);

@@ -1,7 +1,7 @@
 //! Where the motor is: a player that knows its position and its direction.
 
-use super::{AnyLayout, Layout, Player};
 use crate::base::timer::TableWord;
+use crate::player::{AnyLayout, Layout, Player};
 
 /// The way a move turns the motor, for the driver's direction pin.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -422,7 +422,7 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
 
     /// The direction of the step whose period the player handed out last:
     /// the one before a reversal while nothing has followed the first
-    /// period after it ([`Buffered`](super::Buffered)'s pin takes that
+    /// period after it ([`Buffered`](crate::player::Buffered)'s pin takes that
     /// period's step one interval later).
     pub(crate) fn handed_direction(&self) -> Direction {
         self.at_turn().unwrap_or(self.direction)

@@ -15,8 +15,8 @@
 //! reads are the bisection's and the steps within the slack of the
 //! boundary.
 
-use super::ramp::{Ramp, ticks_at};
 use crate::base::timer::TableWord;
+use crate::player::ramps::ramp::{Ramp, ticks_at};
 use crate::table::fall::Fall;
 use crate::table::runs::Expand;
 
@@ -259,7 +259,7 @@ impl<'a, W: TableWord> Steps<'a, W> {
     fn of(ramp: &Ramp<'a, W>) -> Option<Self> {
         Some(match *ramp {
             Ramp::Runs(runs) => Steps::Runs(Expand::new(runs)),
-            Ramp::Indexed(index) => Steps::Indexed(super::runs::periods(index)),
+            Ramp::Indexed(index) => Steps::Indexed(crate::player::ramps::runs::periods(index)),
             _ => Steps::Table(ramp.per_step()?.iter()),
         })
     }

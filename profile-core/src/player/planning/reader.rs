@@ -1,10 +1,10 @@
 //! Reading a ramp's periods by position for the searches of a plan.
 
-use super::ramp::{Cursor, Ramp, ticks_at};
-use super::runs::{end_run, place, run_holding};
-use super::search::{self, faster_by};
-use super::threshold;
 use crate::base::timer::TableWord;
+use crate::player::planning::search::{self, faster_by};
+use crate::player::planning::threshold;
+use crate::player::ramps::ramp::{Cursor, Ramp, ticks_at};
+use crate::player::ramps::runs::{end_run, place, run_holding};
 use crate::table::runs::{IndexedRun, IndexedRuns, LinearRun, ahead, behind, period};
 
 /// A run of no steps: what a reader of no runs keeps.

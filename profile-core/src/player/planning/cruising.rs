@@ -6,18 +6,18 @@
 //! Such a move walks to the cruise position, holds there, and
 //! decelerates from the deceleration ramp's last entry not shorter than
 //! the cruise position's period: the crossing of a held side is one
-//! search. It plans the stretches [`Sides::plan`](super::plan::Sides)
+//! search. It plans the stretches [`Sides::plan`](crate::player::planning::plan::Sides)
 //! plans for it; the other cases (a walk capped by the deceleration
 //! ramp's fastest entry, a crossing while walking, a walk down into reach
 //! that neither the ramps' [`Fall`](crate::table::fall::Fall) nor the
 //! buckets clear) are left to that planner.
 
-use super::crossing::{Block, blocks_down, buckets_faster};
-use super::plan::{Source, Stretch};
-use super::ramp::{Cursor, Ramp};
-use super::reader::RunRead;
-use super::{Layout, Player};
 use crate::base::timer::TableWord;
+use crate::player::planning::crossing::{Block, blocks_down, buckets_faster};
+use crate::player::planning::plan::{Source, Stretch};
+use crate::player::planning::reader::RunRead;
+use crate::player::ramps::ramp::{Cursor, Ramp};
+use crate::player::{Layout, Player};
 use crate::table::runs::{IndexedRuns, period};
 
 /// The shortest block of a walk down into reach the buckets are asked
@@ -36,7 +36,12 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// show it, a block of steps at a time. `false`, planning nothing,
     /// otherwise. `held`, if given, is the cursor at the cruise position.
     #[inline(never)]
-    pub(super) fn plan_cruising(&mut self, p: u32, r: u32, held: Option<Cursor>) -> bool {
+    pub(in crate::player) fn plan_cruising(
+        &mut self,
+        p: u32,
+        r: u32,
+        held: Option<Cursor>,
+    ) -> bool {
         let (Ramp::Indexed(a), Ramp::Indexed(d)) = (self.accel, self.decel) else {
             return false;
         };
@@ -198,7 +203,7 @@ fn cleared_down(
 #[cfg(test)]
 mod tests {
     extern crate std;
-    use crate::player::plan::Plan;
+    use crate::player::planning::plan::Plan;
     use crate::player::{Compressed, Player};
     use crate::table::runs::{Expand, RunIndex};
     use core_test_support::{cases, falling_runs, padded};

@@ -1,10 +1,10 @@
 //! Filling a buffer with the next periods: for a DMA channel that copies
 //! them to the timer (ping-pong halves), or a PIO or RMT queue.
 
-use super::plan::Run;
-use super::runs::RunState;
-use super::{Layout, Player};
 use crate::base::timer::TableWord;
+use crate::player::planning::plan::Run;
+use crate::player::ramps::runs::RunState;
+use crate::player::{Layout, Player};
 use crate::table::runs::{FRACTION_MASK, RUN_FRACTION_BITS};
 
 impl<W: TableWord, L: Layout> Player<'_, W, L> {

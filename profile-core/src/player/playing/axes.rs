@@ -1,8 +1,8 @@
 //! Coordinated axes: several motors on one ramp, stepping in proportion.
 
-use super::axis::{Direction, Moving};
-use super::{AnyLayout, Layout, Player};
 use crate::base::timer::TableWord;
+use crate::player::playing::axis::{Direction, Moving};
+use crate::player::{AnyLayout, Layout, Player};
 use core::sync::atomic::{Ordering, compiler_fence};
 
 /// `N` axes that move together on one [`Player`]'s ramp: a straight line in
@@ -92,7 +92,7 @@ pub struct Axes<'a, W, const N: usize, L = AnyLayout> {
     then: Option<[i64; N]>,
     /// The last turn to a queued move: the directions before it, and the
     /// steps the player had left once it handed out the move's first
-    /// period ([`Buffered`](super::Buffered) reads the pins' directions
+    /// period ([`Buffered`](crate::player::Buffered) reads the pins' directions
     /// from it).
     turn: Option<([Direction; N], u32)>,
 }
@@ -296,7 +296,7 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     }
 
     /// The positions after the lead's `s`-th step of the move.
-    pub(super) fn position_after(&self, s: u32) -> [i64; N] {
+    pub(in crate::player) fn position_after(&self, s: u32) -> [i64; N] {
         let mut at = self.start;
         for (i, p) in at.iter_mut().enumerate() {
             let n = follower_steps(self.steps[i], s, self.lead_steps);
@@ -306,7 +306,7 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     }
 
     /// The lead's steps played.
-    pub(super) fn lead_played(&self) -> u32 {
+    pub(in crate::player) fn lead_played(&self) -> u32 {
         self.lead_total.saturating_sub(self.player.remaining())
     }
 
@@ -376,7 +376,7 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     /// every period (`Buffered`), so that the pins take that edge in the
     /// move's directions. The target the axes already go to changes
     /// nothing.
-    pub(super) fn move_after(&mut self, target: [i64; N]) {
+    pub(in crate::player) fn move_after(&mut self, target: [i64; N]) {
         if self.destination() != target {
             self.then = Some(target);
         }
@@ -525,9 +525,9 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
 
     /// The directions of the edge whose period the lead handed out last:
     /// those before a turn while nothing has followed its first edge
-    /// ([`Buffered`](super::Buffered)'s pins take that edge one interval
+    /// ([`Buffered`](crate::player::Buffered)'s pins take that edge one interval
     /// later).
-    pub(super) fn handed_directions(&self) -> [Direction; N] {
+    pub(in crate::player) fn handed_directions(&self) -> [Direction; N] {
         self.at_turn().unwrap_or(self.directions)
     }
 
@@ -555,8 +555,8 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
         &self.player
     }
 
-    /// The lead's player, for [`Buffered`](super::Buffered)'s rest.
-    pub(super) fn player_mut(&mut self) -> &mut Player<'a, W, L> {
+    /// The lead's player, for [`Buffered`](crate::player::Buffered)'s rest.
+    pub(in crate::player) fn player_mut(&mut self) -> &mut Player<'a, W, L> {
         &mut self.player
     }
 

@@ -19,9 +19,9 @@
 //! quadratic in `n` and grows with it, so the last wrap is found by
 //! bisection.
 
-use super::ramp::{Cursor, Ramp};
-use super::runs::run_at;
 use crate::base::timer::TableWord;
+use crate::player::ramps::ramp::{Cursor, Ramp};
+use crate::player::ramps::runs::run_at;
 use crate::table::runs::{FRACTION_MASK, RUN_FRACTION_BITS, ahead, behind, triangle};
 
 /// The intervals a run may reach for the closed form to hold: from 0 up
@@ -157,7 +157,7 @@ pub(crate) fn last_at_least_from<W: TableWord>(
 /// period is at least `ticks`, `slack` the ramp's; `None` when none is.
 /// Probes near each other: one cursor, from `top` (the ramp's top), moves
 /// between the probes of the search past the steps the slack rules out
-/// ([`search::short_above`](super::search::short_above)), and walks down
+/// ([`search::short_above`](crate::player::planning::search::short_above)), and walks down
 /// from the last ([`last_at_least_from`]: plain runs in closed form, held
 /// and segment tables an entry at a time).
 pub(crate) fn last_at_least_on<W: TableWord>(
@@ -172,7 +172,7 @@ pub(crate) fn last_at_least_on<W: TableWord>(
         at = Cursor::near(at, ramp, pos);
         at.map(|c| c.period(ramp).into_ticks())
     };
-    let k = super::search::short_above(&mut read, last, slack, ticks);
+    let k = crate::player::planning::search::short_above(&mut read, last, slack, ticks);
     let c = Cursor::near(at, ramp, last.saturating_sub(k))?;
     last_at_least_from(c, ramp, ticks)
 }

@@ -4,12 +4,12 @@
 //! read by position, or on two indexed ramps each walked a step at a
 //! time.
 
-use super::plan::Sides;
-use super::ramp::{Cursor, Ramp};
-use super::reader::{Reader, RunRead, RunWalk};
-use super::search;
-use super::threshold;
 use crate::base::timer::TableWord;
+use crate::player::planning::plan::Sides;
+use crate::player::planning::reader::{Reader, RunRead, RunWalk};
+use crate::player::planning::search;
+use crate::player::planning::threshold;
+use crate::player::ramps::ramp::{Cursor, Ramp};
 use crate::table::runs::IndexedRuns;
 
 impl<W: TableWord> Sides<'_, '_, W> {

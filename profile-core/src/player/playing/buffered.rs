@@ -3,8 +3,8 @@
 
 use crate::base::timer::TableWord;
 use crate::player::Player;
-use crate::player::axis::{Axis, Direction};
-use crate::player::layout::Layout;
+use crate::player::playing::axis::{Axis, Direction};
+use crate::player::ramps::layout::Layout;
 
 mod axes;
 pub use axes::AxesStart;
@@ -14,7 +14,7 @@ mod sealed {
 }
 
 /// What [`Buffered`] plays: one period per call, as [`Player`] and [`Axis`]
-/// hand them out. ([`Axes`](super::Axes) hand out a period and a mask of
+/// hand them out. ([`Axes`](crate::player::Axes) hand out a period and a mask of
 /// the axes that step: `Buffered<Axes>` has its own calls, which hand on
 /// both.) Sealed:
 /// the two are all there is.
@@ -142,7 +142,7 @@ pub(crate) enum Pulsed<F> {
     Empty(F),
 }
 
-/// A [`Player`], an [`Axis`] or [`Axes`](super::Axes) for a reload
+/// A [`Player`], an [`Axis`] or [`Axes`](crate::player::Axes) for a reload
 /// register that takes effect at the next wrap.
 ///
 /// Playing a move on a timer whose reload register takes effect at the next
@@ -232,7 +232,7 @@ pub(crate) enum Pulsed<F> {
 #[repr(C)]
 pub struct Buffered<S> {
     inner: S,
-    /// For [`Axes`](super::Axes): the mask of the axes that step on the
+    /// For [`Axes`](crate::player::Axes): the mask of the axes that step on the
     /// edge whose period is in the reload register, its step not taken
     /// yet; 0 when
     /// there is none (never 0 else: the lead steps on every edge). A

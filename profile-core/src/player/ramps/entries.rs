@@ -2,8 +2,8 @@
 //! that a search or a scan over them costs their entries, not their steps,
 //! whatever an entry's count.
 
-use super::ramp::{Cursor, Ramp};
 use crate::base::timer::TableWord;
+use crate::player::ramps::ramp::{Cursor, Ramp};
 
 impl<W: TableWord> Ramp<'_, W> {
     /// The first step whose period is shorter than `ticks`, or `u32::MAX`.

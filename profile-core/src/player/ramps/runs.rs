@@ -134,7 +134,7 @@ pub(crate) fn periods(index: IndexedRuns<'_>) -> IndexedSteps<'_> {
 
 /// Where a run of a compressed ramp stands: `left` steps to play, the
 /// next one's period `(frac + interval) >> 16`. Either way along the ramp
-/// the same recurrence plays it (see [`Cursor::take_run`](super::ramp::Cursor::take_run)). The step path
+/// the same recurrence plays it (see [`Cursor::take_run`](crate::player::ramps::ramp::Cursor::take_run)). The step path
 /// of a player of any layout plays it behind an empty `Down` run, so that
 /// tables pay nothing for it; a compressed player's step path plays it
 /// first.

@@ -1,15 +1,15 @@
 //! Which ramps a player plays, known from its type, and the tables that
 //! choose it.
 
-use super::ramp::Ramp;
 use crate::base::timer::TableWord;
+use crate::player::ramps::ramp::Ramp;
 use crate::table::runs::RunIndex;
 
 mod sealed {
     pub trait Sealed {}
 }
 
-/// Which ramps a [`Player`](super::Player) plays: [`AnyLayout`] or
+/// Which ramps a [`Player`](crate::player::Player) plays: [`AnyLayout`] or
 /// [`Compressed`]. The step path plays the layout's own kind of run first,
 /// so that a player of compressed tables does not pay for checking the
 /// per-step table's runs, and the other way round. Sealed: the two are all
@@ -21,13 +21,13 @@ pub trait Layout: sealed::Sealed {
 }
 
 /// Every layout: per-step, held, segment and compressed tables
-/// ([`Player::new`](super::Player::new)). Its step path is the cheapest for
+/// ([`Player::new`](crate::player::Player::new)). Its step path is the cheapest for
 /// per-step tables.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum AnyLayout {}
 
 /// Compressed tables only
-/// ([`Player::new`](super::Player::new) of a compressed table). Its step path is
+/// ([`Player::new`](crate::player::Player::new) of a compressed table). Its step path is
 /// the cheapest for compressed runs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Compressed {}

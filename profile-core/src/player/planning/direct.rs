@@ -2,11 +2,11 @@
 //! found by reading both tables directly, a bounds check and a load per
 //! entry, no cursor.
 
-use super::crossing::{Block, SCAN_BLOCK, blocks_down};
-use super::plan::Sides;
-use super::ramp::ticks_at;
-use super::search::{self, faster_by, past_shorter};
 use crate::base::timer::TableWord;
+use crate::player::planning::crossing::{Block, SCAN_BLOCK, blocks_down};
+use crate::player::planning::plan::Sides;
+use crate::player::planning::search::{self, faster_by, past_shorter};
+use crate::player::ramps::ramp::ticks_at;
 
 /// The first of `from..to` (steps of the last `r`) at which the
 /// deceleration table read at the steps that remain is not faster than
@@ -27,7 +27,7 @@ fn scan_held<W: TableWord>(d: &[W], r: u32, from: u32, to: u32, held: u32) -> Op
 impl<W: TableWord> Sides<'_, '_, W> {
     /// [`Sides::crossing`] on two per-step tables `a` (acceleration) and
     /// `d` (deceleration): the same steps read, the same answer.
-    pub(super) fn crossing_direct(&self, a: &[W], d: &[W], p: u32, r: u32) -> u32 {
+    pub(in crate::player) fn crossing_direct(&self, a: &[W], d: &[W], p: u32, r: u32) -> u32 {
         let dir = self.toward(p).1;
         let (walked_down, slack) = match dir {
             -1 => ((p - self.cruise).min(r), self.slack),
@@ -138,9 +138,9 @@ impl<W: TableWord> Sides<'_, '_, W> {
 #[cfg(test)]
 mod tests {
     extern crate std;
-    use super::super::plan::{Known, Sides};
-    use super::super::ramp::{Cursor, Ramp};
-    use super::super::search;
+    use crate::player::planning::plan::{Known, Sides};
+    use crate::player::planning::search;
+    use crate::player::ramps::ramp::{Cursor, Ramp};
     use proptest::prelude::*;
     use std::vec::Vec;
 

@@ -1,19 +1,19 @@
 //! The step paths ([`Player::step`]'s, and [`Player::next_period`]'s,
 //! which returns the period): the run being played, inline in the step
 //! interrupt, and past its end the plan's next run, in cold functions; the
-//! paths of a buffered register ([`Buffered`](super::Buffered)).
+//! paths of a buffered register ([`Buffered`](crate::player::Buffered)).
 
-use super::buffered::Pulsed;
-use super::plan::{Run, Source};
-use super::{Layout, Player, Ramp};
 use crate::base::timer::TableWord;
+use crate::player::planning::plan::{Run, Source};
+use crate::player::playing::buffered::Pulsed;
+use crate::player::{Layout, Player, Ramp};
 use core::sync::atomic::{Ordering, compiler_fence};
 
 impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// Plays the next step of the run being played, or hands `write` back
     /// when the run is played.
     #[inline(always)]
-    pub(super) fn play_run<F: FnOnce(W)>(&mut self, write: F) -> Result<(), F> {
+    pub(in crate::player) fn play_run<F: FnOnce(W)>(&mut self, write: F) -> Result<(), F> {
         self.play_run_counted::<false, F>(write)
     }
 
@@ -26,7 +26,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// `u32::MAX`, never read: the step past a run always replaces it
     /// ([`Player::refill`]).
     #[inline(always)]
-    pub(super) fn play_run_counted<const DECREMENT_FIRST: bool, F: FnOnce(W)>(
+    pub(in crate::player) fn play_run_counted<const DECREMENT_FIRST: bool, F: FnOnce(W)>(
         &mut self,
         write: F,
     ) -> Result<(), F> {
@@ -67,14 +67,14 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         Err(write)
     }
 
-    /// A buffered register's step ([`Buffered`](super::Buffered)): `Pulsed::Ended` when the
+    /// A buffered register's step ([`Buffered`](crate::player::Buffered)): `Pulsed::Ended` when the
     /// player has handed out nothing since it last returned `false` (no
     /// step is ahead of the pin); else calls `pulse`, then plays the next
     /// step of the run being played, or hands `write` back when the run is
     /// played. The run's kind is read once: whether a step is ahead and
     /// which path plays it.
     #[inline(always)]
-    pub(super) fn play_pulsed<F: FnOnce(W)>(
+    pub(in crate::player) fn play_pulsed<F: FnOnce(W)>(
         &mut self,
         pulse: impl FnOnce(),
         write: F,
@@ -118,11 +118,11 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         Pulsed::Empty(write)
     }
 
-    /// A buffered register's step without a pulse ([`Buffered::step`](super::Buffered::step)):
+    /// A buffered register's step without a pulse ([`Buffered::step`](crate::player::Buffered::step)):
     /// the run being played, then past it whether a step is ahead of the
     /// pin, so that the step path is the player's own.
     #[inline(always)]
-    pub(super) fn step_buffered<F: FnOnce(W)>(&mut self, write: F) -> bool {
+    pub(in crate::player) fn step_buffered<F: FnOnce(W)>(&mut self, write: F) -> bool {
         match self.play(write) {
             Ok(()) => true,
             Err(write) => self.buffered_past_run(write),
@@ -130,9 +130,9 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     }
 
     /// Plays the next step of the run being played (a compressed run for
-    /// a [`Compressed`](super::Compressed) player), or hands `write` back when it is played.
+    /// a [`Compressed`](crate::player::Compressed) player), or hands `write` back when it is played.
     #[inline(always)]
-    pub(super) fn play<F: FnOnce(W)>(&mut self, write: F) -> Result<(), F> {
+    pub(in crate::player) fn play<F: FnOnce(W)>(&mut self, write: F) -> Result<(), F> {
         if L::COMPRESSED {
             return match self.computed.next() {
                 Some(ticks) => {
@@ -161,20 +161,20 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
 
     /// The buffered step has found the move over: at rest. `false`.
     #[cold]
-    pub(super) fn rest(&mut self) -> bool {
+    pub(in crate::player) fn rest(&mut self) -> bool {
         self.rested = true;
         false
     }
 
-    /// For [`Buffered`](super::Buffered): at rest, or nothing has played
+    /// For [`Buffered`](crate::player::Buffered): at rest, or nothing has played
     /// ([`Player::rest`]).
-    pub(super) fn is_rested(&self) -> bool {
+    pub(in crate::player) fn is_rested(&self) -> bool {
         self.rested
     }
 
-    /// For [`Buffered`](super::Buffered): a move has begun (`false`), or
+    /// For [`Buffered`](crate::player::Buffered): a move has begun (`false`), or
     /// the stepper is at rest (`true`).
-    pub(super) fn set_rested(&mut self, rested: bool) {
+    pub(in crate::player) fn set_rested(&mut self, rested: bool) {
         self.rested = rested;
     }
 
@@ -183,7 +183,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// move is done: a call to the refill of any layout, the loop over
     /// compressed runs inline (it calls their refill).
     #[inline(always)]
-    pub(super) fn step_past_run<F: FnOnce(W)>(&mut self, write: F) -> bool {
+    pub(in crate::player) fn step_past_run<F: FnOnce(W)>(&mut self, write: F) -> bool {
         if L::COMPRESSED {
             self.step_runs(write)
         } else {
@@ -195,7 +195,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// plays.
     #[cold]
     #[inline(never)]
-    pub(super) fn step_refilled<F: FnOnce(W)>(&mut self, mut write: F) -> bool {
+    pub(in crate::player) fn step_refilled<F: FnOnce(W)>(&mut self, mut write: F) -> bool {
         // `refill` hands the player back, so that the loop keeps no
         // register across its call.
         let mut this = self;
@@ -220,7 +220,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// [`Player::next_period`]: the step path of [`Player::step`], the
     /// period returned.
     #[inline(always)]
-    pub(super) fn next_played(&mut self) -> Option<W> {
+    pub(in crate::player) fn next_played(&mut self) -> Option<W> {
         // The step's paths, each returning its period: written through a
         // closure, as `step` writes, the period lay in a stack slot whose
         // address the refill's call took (5 or 6 instructions more per
@@ -259,7 +259,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// load: three arms ending with one were merged into a load after
     /// them, an instruction or two more per step than the step's own loads.
     #[inline(always)]
-    pub(super) fn next_in_run(&mut self) -> Option<W> {
+    pub(in crate::player) fn next_in_run(&mut self) -> Option<W> {
         match &mut self.run {
             Run::Down(periods) | Run::Ended(periods) => {
                 let mut rest = periods.clone();
@@ -292,7 +292,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
 
     /// The step path of a player of compressed tables: its run first.
     #[inline(always)]
-    pub(super) fn step_runs(&mut self, write: impl FnOnce(W)) -> bool {
+    pub(in crate::player) fn step_runs(&mut self, write: impl FnOnce(W)) -> bool {
         let mut this = self;
         loop {
             if let Some(ticks) = this.computed.next() {
@@ -308,11 +308,11 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
 
     /// Begins the plan's next run of a compressed table; `None`, the run
     /// [`Run::Ended`], when the plan is played (or a ramp is not
-    /// compressed, which the constructors of a [`Compressed`](super::Compressed) player rule
+    /// compressed, which the constructors of a [`Compressed`](crate::player::Compressed) player rule
     /// out).
     #[cold]
     #[inline(never)]
-    pub(super) fn refill_runs(&mut self) -> Option<&mut Self> {
+    pub(in crate::player) fn refill_runs(&mut self) -> Option<&mut Self> {
         if self.begin_runs().is_none() {
             self.run = Run::ended();
             return None;
@@ -342,7 +342,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// the plan is played.
     #[cold]
     #[inline(never)]
-    pub(super) fn refill(&mut self) -> Option<&mut Self> {
+    pub(in crate::player) fn refill(&mut self) -> Option<&mut Self> {
         // Most stretches of a per-step table are a whole run, made when the
         // move was planned: taken at once.
         let next = self.plan.next;
@@ -373,7 +373,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// The next stretch with steps not yet handed out, now the one being
     /// played; `None` when the plan is played.
     #[inline(always)]
-    pub(super) fn next_stretch(&mut self) -> Option<usize> {
+    pub(in crate::player) fn next_stretch(&mut self) -> Option<usize> {
         loop {
             let next = self.plan.next;
             if next >= self.plan.len {
@@ -393,7 +393,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     }
 
     /// The plan's next run, or `None` when the plan is played.
-    pub(super) fn next_run(&mut self) -> Option<Run<'a, W>> {
+    pub(in crate::player) fn next_run(&mut self) -> Option<Run<'a, W>> {
         let next = self.next_stretch()?;
         let s = self.plan.stretches.get_mut(next)?;
         // A whole run made when the move was planned.

@@ -3,9 +3,9 @@
 
 use super::Buffered;
 use crate::base::timer::TableWord;
-use crate::player::axes::Axes;
-use crate::player::axis::Direction;
-use crate::player::layout::Layout;
+use crate::player::playing::axes::Axes;
+use crate::player::playing::axis::Direction;
+use crate::player::ramps::layout::Layout;
 
 /// How a move of [`Buffered`] [`Axes`] begins: set the direction pins,
 /// load `first`, start the counter and take the first step (on the axes in

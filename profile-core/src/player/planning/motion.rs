@@ -2,12 +2,12 @@
 //! ([`Player::run`]), a cruise speed in ticks ([`Player::set_cruise_period`])
 //! and a new end ([`Player::retarget`]).
 
-use super::ramp::{Cursor, ticks_at};
-use super::reader::{Reader, RunRead};
-use super::search;
-use super::threshold;
-use super::{Layout, Player, Ramp};
 use crate::base::timer::TableWord;
+use crate::player::planning::reader::{Reader, RunRead};
+use crate::player::planning::search;
+use crate::player::planning::threshold;
+use crate::player::ramps::ramp::{Cursor, ticks_at};
+use crate::player::{Layout, Player, Ramp};
 
 /// Steps a run plans at a time: when they are played but for the
 /// deceleration, the run plans as many again from where it stands.
@@ -54,7 +54,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// from where the acceleration side stands. A ramp whose deceleration
     /// is longer than a lap ends the run there.
     #[cold]
-    pub(super) fn next_lap(&mut self) {
+    pub(in crate::player) fn next_lap(&mut self) {
         // Within reach of the deceleration ramp at once: no lap to add.
         if LAP - 1 <= self.decel_last {
             self.endless = false;
@@ -109,7 +109,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// no later step is known to be as long as it (on an indexed ramp,
     /// where a plan uses it: the step found is that long); and on an
     /// indexed ramp the cursor at the step found.
-    pub(super) fn cruise_position(&self, ticks: u32) -> (u32, bool, Option<Cursor>) {
+    pub(in crate::player) fn cruise_position(&self, ticks: u32) -> (u32, bool, Option<Cursor>) {
         let (last, slack) = (self.accel_last, self.accel_slack);
         match (self.accel.per_step(), self.accel) {
             (Some(a), _) => (

@@ -2,8 +2,8 @@
 //! periods typed by that rate (`Timed`, feature `fugit`), so that a table
 //! played on a timer of another rate is a type error, not a wrong speed.
 
-use super::Ramp;
 use crate::base::timer::TableWord;
+use crate::player::Ramp;
 
 /// A ramp whose table is in ticks of a timer of `HZ` ticks per second,
 /// storing each period plus `reload_offset`.
@@ -40,7 +40,7 @@ impl<'a, W: TableWord, const HZ: u32> Rated<'a, W, HZ> {
         }
     }
 
-    /// The ramp, for a [`Player`](super::Player).
+    /// The ramp, for a [`Player`](crate::player::Player).
     pub const fn ramp(&self) -> Ramp<'a, W> {
         self.ramp
     }

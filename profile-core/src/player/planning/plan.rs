@@ -11,9 +11,9 @@
 use core::cell::Cell;
 use core::slice;
 
-use super::ramp::{Cursor, Ramp, ticks_at};
-use super::reader::RunWalk;
 use crate::base::timer::TableWord;
+use crate::player::planning::reader::RunWalk;
+use crate::player::ramps::ramp::{Cursor, Ramp, ticks_at};
 
 /// A run of steps, as the step path plays it. Its tag a word, so that
 /// runs are copied word by word (with a 16-bit tag, a held period packs
@@ -23,7 +23,7 @@ use crate::base::timer::TableWord;
 pub(crate) enum Run<'a, W> {
     /// Nothing to play (the iterator is empty), and the step has found
     /// so: the player returned `false` and has handed out nothing since.
-    /// (A [`Buffered`](super::Buffered) player has no step ahead of the
+    /// (A [`Buffered`](crate::player::Buffered) player has no step ahead of the
     /// pin.) The step path plays it as the empty `Down` it holds, so that
     /// it adds no kind to the step's dispatch: its tag and `Down`'s are
     /// one test.
@@ -234,7 +234,7 @@ pub(crate) struct Sides<'t, 'a, W> {
     pub(crate) cruise: u32,
     /// No step after the cruise position is known to be as long as it.
     pub(crate) cruise_last: bool,
-    /// The two ramps' slack ([`search::slack`](super::search::slack))
+    /// The two ramps' slack ([`search::slack`](crate::player::planning::search::slack))
     /// added: a deceleration step that far faster than the acceleration
     /// side has every step before it faster too.
     pub(crate) slack: u32,

@@ -1,7 +1,7 @@
 //! A ramp to play, and positions along it.
 
-use super::runs::{Placed, RunList, RunState, place, place_beside, run_at};
 use crate::base::timer::TableWord;
+use crate::player::ramps::runs::{Placed, RunList, RunState, place, place_beside, run_at};
 use crate::table::runs::{
     Expand, FRACTION_MASK, IndexedRuns, LinearRun, RUN_FRACTION_BITS, RUN_START_FRACTION, RunIndex,
     ahead, behind, period as run_period,
