@@ -509,3 +509,45 @@ fn the_firmware_crate_holds_none_of_the_generator() {
         );
     }
 }
+
+/// One unit-test convention: a file's unit tests are its `mod tests`, at
+/// its end; only where the file and its tests together would pass
+/// [`MAX_FILE_LINES`] do they go in a sibling `NAME_tests.rs`
+/// (`#[path = "NAME_tests.rs"] mod tests;`), and nowhere else.
+#[test]
+fn unit_tests_live_in_their_file_unless_it_would_be_too_long() {
+    let mut problems = Vec::new();
+    let mut seen = 0;
+    for dir in FUNCTION_SOURCES {
+        for (_, path) in modules(&root().join(dir)) {
+            let name = path.file_name().unwrap().to_string_lossy().into_owned();
+            if name.ends_with("_tests.rs") {
+                continue;
+            }
+            let text = fs::read_to_string(&path).unwrap();
+            let Some(at) = text.find("#[path = \"") else {
+                continue;
+            };
+            let target = text[at + 10..].split('"').next().unwrap();
+            seen += 1;
+            let expected = format!("{}_tests.rs", name.trim_end_matches(".rs"));
+            if target != expected {
+                problems.push(format!(
+                    "{}: tests in `{target}`, not `{expected}`",
+                    path.display()
+                ));
+                continue;
+            }
+            let tests = fs::read_to_string(path.with_file_name(target)).unwrap();
+            let together = text.lines().count() + tests.lines().count();
+            if together <= MAX_FILE_LINES {
+                problems.push(format!(
+                    "{}: {together} lines with its tests: keep them in the file's `mod tests`",
+                    path.display()
+                ));
+            }
+        }
+    }
+    assert!(seen > 0, "no `#[path]` tests seen: the reader is broken");
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+}
