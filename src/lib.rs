@@ -13,9 +13,9 @@
 
 // Tables, computed at compile time or at run time (no_std).
 pub use profile_core::{
-    AccelCurve, AccelWindows, Arithmetic, CheckedSpec, Curve, Discretization, Error, Exponential,
-    ExponentialExtent, Figures, JerkLimited, Key, Linear, LinearExtent, MAX_ACCEL_POINTS,
-    MAX_FLEXIBLE, MAX_LEN, MAX_MARGIN, MessageNumber, Rounding, SegmentFigures, Sigmoid, Spec,
+    AccelCurve, AccelWindows, Arithmetic, CheckedSpec, CompactFigures, Curve, Discretization,
+    Error, Exponential, ExponentialExtent, Figures, JerkLimited, Key, Linear, LinearExtent,
+    MAX_ACCEL_POINTS, MAX_FLEXIBLE, MAX_LEN, MAX_MARGIN, MessageNumber, Rounding, Sigmoid, Spec,
     TableWord, ThreeStage, Timer, TorqueLimited, Word,
 };
 // Playing tables, and compressed runs (no_std).
@@ -33,8 +33,8 @@ pub use profile_core::fugit;
 pub use profile_codegen::simulate;
 #[cfg(feature = "std")]
 pub use profile_codegen::{
-    Compact, Generated, MAX_COMPRESS_TICKS, MIN_COMPRESS_TICKS, RunFigures, RunTable, SegmentTable,
-    SpecTables, Table, motor,
+    Generated, MAX_COMPRESS_TICKS, MIN_COMPRESS_TICKS, RunTable, SegmentTable, SpecTables, Table,
+    motor,
 };
 
 // Profiles files, build scripts and C output (feature `codegen`).

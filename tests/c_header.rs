@@ -125,7 +125,7 @@ fn expected(profiles: &Profiles) -> BTreeMap<String, BTreeMap<String, Figure>> {
                     "TICKS_PER_STEP".into(),
                     int(u64::from(t.spec.timer.ticks_per_step)),
                 );
-                m.insert("SEGMENT_COUNT".into(), int(u64::from(f.segments)));
+                m.insert("SEGMENT_COUNT".into(), int(u64::from(f.entries)));
                 m.insert("LEN".into(), int(u64::from(f.steps)));
                 m.insert("TOTAL_TICKS".into(), int(f.total_ticks));
                 m.insert("DURATION_S".into(), float(f.duration_s));
@@ -152,7 +152,7 @@ fn expected(profiles: &Profiles) -> BTreeMap<String, BTreeMap<String, Figure>> {
                 "TICKS_PER_STEP".into(),
                 int(u64::from(t.spec.timer.ticks_per_step)),
             );
-            m.insert("RUN_COUNT".into(), int(u64::from(f.runs)));
+            m.insert("RUN_COUNT".into(), int(u64::from(f.entries)));
             m.insert("LEN".into(), int(u64::from(f.steps)));
             m.insert("TOTAL_TICKS".into(), int(f.total_ticks));
             m.insert("DURATION_S".into(), float(f.duration_s));

@@ -33,8 +33,8 @@ use common::oracle::{self, Model};
 use common::seeds::{SEED001_SEGMENTS, jerk_limited, seed001, seed004, zeng};
 use profile_codegen::SpecTables;
 use stepper_profiles::{
-    Curve, Discretization, Error, Exponential, ExponentialExtent, JerkLimited, Linear,
-    LinearExtent, Rounding, SegmentFigures, Spec, ThreeStage, Timer, Word,
+    CompactFigures, Curve, Discretization, Error, Exponential, ExponentialExtent, JerkLimited,
+    Linear, LinearExtent, Rounding, Spec, ThreeStage, Timer, Word,
 };
 
 /// What a correct edge (or rounded entry) may miss its exact value by: half a
@@ -539,7 +539,7 @@ fn word_bytes(word: Word) -> u32 {
 }
 
 /// Checks one segment table against its ramp and the independent model.
-fn check_segments(name: &str, spec: &Spec, pairs: &[(u32, u32)], figures: &SegmentFigures) {
+fn check_segments(name: &str, spec: &Spec, pairs: &[(u32, u32)], figures: &CompactFigures) {
     let n = pairs.len() as u32;
     let len = spec.len();
     let counts: u64 = pairs.iter().map(|&(_, c)| u64::from(c)).sum();
@@ -552,7 +552,7 @@ fn check_segments(name: &str, spec: &Spec, pairs: &[(u32, u32)], figures: &Segme
         pairs.iter().all(|&(_, c)| c >= 1),
         "{name}, {n} segments: expected every count >= 1, got {pairs:?}"
     );
-    assert_eq!(figures.segments, n, "{name}: figures.segments");
+    assert_eq!(figures.entries, n, "{name}: figures.entries");
     assert_eq!(figures.steps, len, "{name}: figures.steps");
     let wb = word_bytes(spec.timer.word);
     assert_eq!(

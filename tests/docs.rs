@@ -439,8 +439,8 @@ fn size_claims() -> Vec<SizeClaim> {
             &[indexed, index],
         ),
         claim(
-            "profile-codegen/src/table/compress.rs",
-            "in bytes ({} per run)",
+            "profile-core/src/table/segments.rs",
+            "in bytes (two words a segment, {} per run)",
             &[run],
         ),
         claim(

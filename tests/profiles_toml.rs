@@ -172,7 +172,7 @@ macro_rules! segments {
         );
         assert_eq!(count, table.pairs.len(), "`{name}`: SEGMENT_COUNT");
         assert_eq!(
-            count, f.segments as usize,
+            count, f.entries as usize,
             "`{name}`: SEGMENT_COUNT vs figures"
         );
         assert_eq!(len, f.steps as usize, "`{name}`: LEN");
@@ -230,7 +230,7 @@ macro_rules! runs {
             table.runs.as_slice(),
             "`{name}`: macro RUNS vs loaded table"
         );
-        assert_eq!(count, f.runs as usize, "`{name}`: RUN_COUNT vs figures");
+        assert_eq!(count, f.entries as usize, "`{name}`: RUN_COUNT vs figures");
         assert_eq!(len, f.steps as usize, "`{name}`: LEN");
         timer_constants!($name, table.spec, f);
         assert_eq!(
@@ -238,10 +238,10 @@ macro_rules! runs {
             f.max_edge_error_ticks.to_bits(),
             "`{name}`: MAX_EDGE_ERROR_TICKS"
         );
+        let tolerance = f.tolerance_ticks.expect("runs are fitted to a tolerance");
         assert!(
-            edge <= f.tolerance_ticks,
-            "`{name}`: largest edge error {edge} above `compress = {}`",
-            f.tolerance_ticks
+            edge <= tolerance,
+            "`{name}`: largest edge error {edge} above `compress = {tolerance}`"
         );
 
         let played: Vec<u32> = profile_core::runs::Expand::new(&$name::RUNS).collect();
@@ -262,7 +262,7 @@ macro_rules! runs {
 
         let again = table
             .spec
-            .run_table(f.tolerance_ticks)
+            .run_table(tolerance)
             .unwrap_or_else(|e| panic!("`{name}`: Spec::run_table: {e}"));
         assert_eq!(
             again.runs.as_slice(),

@@ -10,7 +10,8 @@ use profile_codegen::motor::MotorError;
 use profile_codegen::motor::{Drive, Motor};
 use profile_codegen::profiles::{Profile, Profiles};
 use profile_codegen::simulate::{self, SimOptions, SimResult};
-use profile_codegen::{Compact, Generated, SpecTables};
+use profile_codegen::{Generated, SpecTables};
+use profile_core::CompactFigures;
 use profile_core::player::{Player, Ramp};
 use profile_core::{Curve, Linear, LinearExtent};
 use profile_core::{Discretization, Error, Rounding, Spec};
@@ -187,7 +188,7 @@ fn table_row(out: &mut String, c: [&str; 13]) {
 
 /// A row of a compact layout (segments, runs): its frequencies from the
 /// periods it plays.
-fn compact_row(out: &mut String, p: &Profile, c: &Compact) {
+fn compact_row(out: &mut String, p: &Profile, c: &CompactFigures) {
     let s = p.table.spec();
     let periods = p.table.step_periods();
     let hz = |ticks: Option<&u32>| s.timer.frequency_scale() / f64::from(*ticks.unwrap_or(&1));

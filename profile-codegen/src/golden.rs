@@ -52,7 +52,8 @@ use std::vec::Vec;
 
 use crate::profiles::Profiles;
 use crate::schema::describe;
-use crate::table::computed::{Compact, Generated};
+use crate::table::computed::Generated;
+use profile_core::CompactFigures;
 use profile_core::Key;
 
 pub(crate) mod file;
@@ -216,7 +217,7 @@ impl Golden for Generated {
 
 /// The figures of a compact layout (segments, runs): the steps it plays,
 /// its flash, then the timing.
-fn compact(c: &Compact) -> impl Iterator<Item = (String, String)> {
+fn compact(c: &CompactFigures) -> impl Iterator<Item = (String, String)> {
     [
         ("steps".to_string(), c.steps.to_string()),
         ("flash_bytes".to_string(), c.flash_bytes.to_string()),

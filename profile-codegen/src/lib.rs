@@ -46,8 +46,8 @@ mod table;
 
 #[doc(inline)]
 pub use motor::simulate;
-pub use table::compress::{MAX_COMPRESS_TICKS, MIN_COMPRESS_TICKS, RunFigures, RunTable};
-pub use table::computed::{Compact, Generated, SegmentTable, SpecTables, Table};
+pub use table::compress::{MAX_COMPRESS_TICKS, MIN_COMPRESS_TICKS, RunTable};
+pub use table::computed::{Generated, SegmentTable, SpecTables, Table};
 
 /// What this workspace's other crates use and users do not: the argument
 /// schema, the pipeline and the emitter (for `profile-macros` and the

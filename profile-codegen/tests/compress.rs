@@ -45,7 +45,7 @@ fn ratio(spec: &Spec, compress: f64) -> f64 {
     let f = t.figures;
     assert!(f.max_edge_error_ticks <= compress, "{f:?}");
     assert_eq!(Expand::new(&t.runs).count() as u32, f.steps);
-    assert_eq!(f.flash_bytes, 10 * f.runs);
+    assert_eq!(f.flash_bytes, 10 * f.entries);
     f.per_step_flash_bytes as f64 / f.flash_bytes as f64
 }
 
@@ -110,7 +110,7 @@ fn generation_time_of_the_longest_table() {
     eprintln!(
         "{} steps: per-step table {per_step:.2?}, compressed (1 tick, {} runs) {compressed:.2?}",
         profile_core::MAX_LEN,
-        runs.figures.runs
+        runs.figures.entries
     );
 }
 
@@ -263,12 +263,12 @@ fn a_looser_bound_never_compresses_worse() {
         let f = spec.run_table(compress).unwrap().figures;
         println!(
             "compress = {compress}: {} runs, ends {} ticks from the curve",
-            f.runs, f.total_error_ticks
+            f.entries, f.total_error_ticks
         );
         assert!(
-            f.runs <= before,
+            f.entries <= before,
             "compress = {compress}: {} runs, more than the {before} of a tighter bound",
-            f.runs
+            f.entries
         );
         assert!(f.max_edge_error_ticks <= compress, "{f:?}");
         assert!(
@@ -276,7 +276,7 @@ fn a_looser_bound_never_compresses_worse() {
             "compress = {compress}: the ramp ends at {} ticks, the curve at {exact_end}",
             f.total_ticks
         );
-        before = f.runs;
+        before = f.entries;
     }
 }
 

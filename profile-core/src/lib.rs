@@ -49,5 +49,5 @@ pub use base::timer::{TableWord, Timer, Word};
 pub use curves::public::*;
 pub use table::quantize::{AccelWindows, Figures};
 pub use table::runs;
-pub use table::segments::SegmentFigures;
+pub use table::segments::CompactFigures;
 pub use table::spec::{CheckedSpec, Spec};

@@ -142,7 +142,7 @@ pub(crate) fn constants(profile: &Profile) -> Vec<Constant> {
             c.extend([
                 Constant {
                     name: "SEGMENT_COUNT",
-                    value: Number::Usize(f.segments.into()),
+                    value: Number::Usize(f.entries.into()),
                     doc: "Entries in `SEGMENTS`.",
                 },
                 Constant {
@@ -190,11 +190,11 @@ fn torque_constants(t: &TorqueFigures) -> [Constant; 2] {
 }
 
 /// The figures of a compressed table.
-fn run_constants(f: &crate::table::compress::RunFigures) -> [Constant; 5] {
+fn run_constants(f: &profile_core::CompactFigures) -> [Constant; 5] {
     [
         Constant {
             name: "RUN_COUNT",
-            value: Number::Usize(f.runs.into()),
+            value: Number::Usize(f.entries.into()),
             doc: "Entries in `RUNS`.",
         },
         Constant {
@@ -261,7 +261,7 @@ pub fn doc_lines(table: &Generated) -> std::vec::Vec<String> {
             lines.push(format!(
                 "{} segments for {} steps, {} bytes instead of {} per step; {} ticks in all \
                  ({:.6} s); pulse edges within {:.1} ticks of the curve.",
-                f.segments,
+                f.entries,
                 f.steps,
                 f.flash_bytes,
                 f.per_step_flash_bytes,
@@ -271,18 +271,19 @@ pub fn doc_lines(table: &Generated) -> std::vec::Vec<String> {
             ));
         }
         Generated::Runs(t) => {
+            // Runs are always fitted to a tolerance (`Some`).
             let f = &t.figures;
             lines.push(format!(
                 "{} runs for {} steps, {} bytes instead of {} per step; {} ticks in all \
                  ({:.6} s); pulse edges within {:.3} ticks of the curve (`compress = {}`).",
-                f.runs,
+                f.entries,
                 f.steps,
                 f.flash_bytes,
                 f.per_step_flash_bytes,
                 f.total_ticks,
                 f.duration_s,
                 f.max_edge_error_ticks,
-                f.tolerance_ticks
+                f.tolerance_ticks.unwrap_or(0.0)
             ));
         }
     }

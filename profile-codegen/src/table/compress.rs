@@ -22,7 +22,7 @@ use std::vec;
 use std::vec::Vec;
 
 use profile_core::runs::{self, Expand, LinearRun};
-use profile_core::{CheckedSpec, Discretization, Error, Key, Rounding, Spec, Word};
+use profile_core::{CheckedSpec, CompactFigures, Discretization, Error, Key, Rounding, Spec, Word};
 
 /// The smallest `compress` allowed with one reload per step: an integer edge
 /// cannot land nearer than half a tick to every point of the curve. With
@@ -34,32 +34,6 @@ pub const MIN_COMPRESS_TICKS: f64 = 0.5;
 /// holds. An edge allowed further from the curve could lag it by more than
 /// any step of the ramp.
 pub const MAX_COMPRESS_TICKS: f64 = u16::MAX as f64;
-
-/// What a compressed table amounts to.
-#[derive(Clone, Copy, Debug, PartialEq)]
-#[non_exhaustive]
-pub struct RunFigures {
-    /// Number of runs.
-    pub runs: u32,
-    /// Steps in the ramp: the sum of the runs' counts.
-    pub steps: u32,
-    /// Flash of the runs, in bytes (10 per run).
-    pub flash_bytes: u32,
-    /// Flash of the per-step table of the same ramp, in bytes.
-    pub per_step_flash_bytes: u32,
-    /// The largest step-edge error allowed (`compress`), in timer ticks.
-    pub tolerance_ticks: f64,
-    /// Sum of the played periods, in ticks of the entries (with
-    /// `ticks_per_step = 2` the timer counts twice this).
-    pub total_ticks: u64,
-    /// Ramp duration as played, in s.
-    pub duration_s: f64,
-    /// Largest distance of a played step edge from the curve's exact edge,
-    /// in timer ticks: at most `tolerance_ticks`.
-    pub max_edge_error_ticks: f64,
-    /// Last played step edge minus the curve's, in timer ticks.
-    pub total_error_ticks: f64,
-}
 
 const ONE: f64 = (1u64 << LinearRun::FRACTION_BITS) as f64;
 /// The longest step a run plays, in fixed point: 65 535 whole ticks.
@@ -484,41 +458,12 @@ pub(crate) fn run_table(checked: &CheckedSpec, tolerance: f64) -> Result<RunTabl
     for (k, period) in Expand::new(&runs).enumerate() {
         Word::U16.stored(period, spec.reload_offset, "step", k as u32)?;
     }
-    let figures = run_figures(&runs, &exact, tolerance, scale, repeat);
+    let figures = CompactFigures::of_runs(&runs, &exact, tolerance, scale, repeat);
     Ok(RunTable {
         spec: *spec,
         runs,
         figures,
     })
-}
-
-/// The figures of `runs`, played and compared with the exact edges (in ticks
-/// of the entries), the edges' errors in timer ticks: `repeat` times theirs.
-fn run_figures(
-    runs: &[[u16; 5]],
-    exact: &[f64],
-    tolerance: f64,
-    scale: f64,
-    repeat: f64,
-) -> RunFigures {
-    let (mut edge, mut worst, mut last) = (0u64, 0.0f64, 0.0);
-    for (period, t) in Expand::new(runs).zip(exact) {
-        edge += u64::from(period);
-        last = edge as f64 - t;
-        worst = worst.max(libm::fabs(last));
-    }
-    let steps = exact.len() as u32;
-    RunFigures {
-        runs: runs.len() as u32,
-        steps,
-        flash_bytes: runs.len() as u32 * 10,
-        per_step_flash_bytes: steps * 2,
-        tolerance_ticks: tolerance,
-        total_ticks: edge,
-        duration_s: edge as f64 / scale,
-        max_edge_error_ticks: worst * repeat,
-        total_error_ticks: last * repeat,
-    }
 }
 
 /// A compressed table with its spec and figures.
@@ -531,7 +476,7 @@ pub struct RunTable {
     /// `reload_offset`.
     pub runs: Vec<[u16; 5]>,
     /// What the table amounts to.
-    pub figures: RunFigures,
+    pub figures: CompactFigures,
 }
 
 impl RunTable {

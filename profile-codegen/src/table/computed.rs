@@ -4,7 +4,7 @@
 use std::vec::Vec;
 
 use profile_core::runs::Expand;
-use profile_core::{CheckedSpec, Error, Figures, SegmentFigures, Spec};
+use profile_core::{CheckedSpec, CompactFigures, Error, Figures, Spec};
 
 use super::compress::{self, RunTable};
 
@@ -39,7 +39,7 @@ pub struct SegmentTable {
     /// `spec.reload_offset` ([`SegmentTable::stored_pairs`]).
     pub pairs: Vec<(u32, u32)>,
     /// What the table amounts to.
-    pub figures: SegmentFigures,
+    pub figures: CompactFigures,
 }
 
 impl SegmentTable {
@@ -65,32 +65,6 @@ pub enum Generated {
     Runs(RunTable),
 }
 
-/// What a compact layout (segments or runs) amounts to, whichever it is.
-#[derive(Clone, Copy, Debug, PartialEq)]
-#[non_exhaustive]
-pub struct Compact {
-    /// The layout: `"segments"` or `"runs"`.
-    pub kind: &'static str,
-    /// Its entries: segments or runs.
-    pub entries: u32,
-    /// Steps in the ramp.
-    pub steps: u32,
-    /// Flash of the table, in bytes.
-    pub flash_bytes: u32,
-    /// Flash of the per-step table of the same ramp, in bytes.
-    pub per_step_flash_bytes: u32,
-    /// Sum of the periods played, in ticks.
-    pub total_ticks: u64,
-    /// Ramp duration as played, in s.
-    pub duration_s: f64,
-    /// Largest distance of a played pulse edge from the curve's, in ticks.
-    pub max_edge_error_ticks: f64,
-    /// Last played edge minus the exact end of the ramp, in ticks.
-    pub total_error_ticks: f64,
-    /// The largest edge error asked for (`compress`), for runs.
-    pub tolerance_ticks: Option<f64>,
-}
-
 /// `(period, count)` segments as one period per step: the one place a
 /// segment table is expanded.
 pub(crate) fn expand(pairs: &[(u32, u32)]) -> Vec<u32> {
@@ -110,41 +84,13 @@ impl Generated {
         }
     }
 
-    /// The figures a compact layout (segments, runs) shares; `None` for one
+    /// The figures of a compact layout (segments, runs); `None` for one
     /// entry per step.
-    pub fn compact(&self) -> Option<Compact> {
+    pub fn compact(&self) -> Option<CompactFigures> {
         match self {
             Generated::Steps(_) => None,
-            Generated::Segments(t) => {
-                let f = &t.figures;
-                Some(Compact {
-                    kind: "segments",
-                    entries: f.segments,
-                    steps: f.steps,
-                    flash_bytes: f.flash_bytes,
-                    per_step_flash_bytes: f.per_step_flash_bytes,
-                    total_ticks: f.total_ticks,
-                    duration_s: f.duration_s,
-                    max_edge_error_ticks: f.max_edge_error_ticks,
-                    total_error_ticks: f.total_error_ticks,
-                    tolerance_ticks: None,
-                })
-            }
-            Generated::Runs(t) => {
-                let f = &t.figures;
-                Some(Compact {
-                    kind: "runs",
-                    entries: f.runs,
-                    steps: f.steps,
-                    flash_bytes: f.flash_bytes,
-                    per_step_flash_bytes: f.per_step_flash_bytes,
-                    total_ticks: f.total_ticks,
-                    duration_s: f.duration_s,
-                    max_edge_error_ticks: f.max_edge_error_ticks,
-                    total_error_ticks: f.total_error_ticks,
-                    tolerance_ticks: Some(f.tolerance_ticks),
-                })
-            }
+            Generated::Segments(t) => Some(t.figures),
+            Generated::Runs(t) => Some(t.figures),
         }
     }
 

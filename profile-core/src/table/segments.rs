@@ -3,7 +3,7 @@
 //!
 //! A segment table spends `2 n` words of flash instead of `len`, and pays in
 //! accuracy: every step of a segment has the same period, so pulse edges
-//! drift from the curve within a segment. [`SegmentFigures`] reports both.
+//! drift from the curve within a segment. [`CompactFigures`] reports both.
 
 use crate::base::error::Error;
 use crate::base::key::Key;
@@ -11,30 +11,73 @@ use crate::base::modes::Discretization;
 use crate::base::solve::edge_time;
 use crate::base::timer::TableWord;
 use crate::table::quantize::Quantizer;
+use crate::table::runs::Expand;
 use crate::table::spec::{CheckedSpec, Spec};
 
-/// What a segment table amounts to.
+/// What a compact layout amounts to: a segment table or a compressed table
+/// of runs ([`CompactFigures::of_runs`]), against the per-step table of the
+/// same ramp.
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[non_exhaustive]
-pub struct SegmentFigures {
-    /// Number of segments.
-    pub segments: u32,
-    /// Steps in the ramp: the sum of the step counts.
+pub struct CompactFigures {
+    /// The layout: `"segments"` or `"runs"`.
+    pub kind: &'static str,
+    /// Its entries: segments, or runs.
+    pub entries: u32,
+    /// Steps in the ramp: the sum of the entries' step counts.
     pub steps: u32,
-    /// Flash of the segment table, in bytes.
+    /// Flash of the table, in bytes (two words a segment, 10 per run).
     pub flash_bytes: u32,
     /// Flash of the per-step table of the same ramp, in bytes.
     pub per_step_flash_bytes: u32,
-    /// Sum of `period * count` over the segments, in ticks.
+    /// Sum of the played periods, in ticks of the entries (with
+    /// `ticks_per_step = 2` the timer counts twice this).
     pub total_ticks: u64,
     /// Ramp duration as played, in s.
     pub duration_s: f64,
     /// Largest distance of a played step edge from the curve's exact edge,
     /// in timer ticks (with `ticks_per_step = 2`, twice the distance of the
-    /// periods' running sum).
+    /// periods' running sum); for runs at most `tolerance_ticks`.
     pub max_edge_error_ticks: f64,
     /// Last played step edge minus the exact end of the ramp, in timer ticks.
     pub total_error_ticks: f64,
+    /// The largest step-edge error the runs were fitted to (`compress`), in
+    /// timer ticks; `None` for segments.
+    pub tolerance_ticks: Option<f64>,
+}
+
+impl CompactFigures {
+    /// The figures of `runs` (see [`runs`](crate::runs)), played and
+    /// compared with `exact`, the curve's exact step edges in ticks of the
+    /// entries, on a timer of `scale` ticks a second whose step is `repeat`
+    /// entries (`ticks_per_step`), fitted to `tolerance_ticks`.
+    pub fn of_runs(
+        runs: &[[u16; 5]],
+        exact: &[f64],
+        tolerance_ticks: f64,
+        scale: f64,
+        repeat: f64,
+    ) -> Self {
+        let (mut edge, mut worst, mut last) = (0u64, 0.0f64, 0.0);
+        for (period, t) in Expand::new(runs).zip(exact) {
+            edge += u64::from(period);
+            last = edge as f64 - t;
+            worst = worst.max(libm::fabs(last));
+        }
+        let steps = exact.len() as u32;
+        CompactFigures {
+            kind: "runs",
+            entries: runs.len() as u32,
+            steps,
+            flash_bytes: runs.len() as u32 * 10,
+            per_step_flash_bytes: steps * 2,
+            total_ticks: edge,
+            duration_s: edge as f64 / scale,
+            max_edge_error_ticks: worst * repeat,
+            total_error_ticks: last * repeat,
+            tolerance_ticks: Some(tolerance_ticks),
+        }
+    }
 }
 
 impl CheckedSpec {
@@ -66,7 +109,7 @@ impl CheckedSpec {
     pub fn generate_segments<W: TableWord>(
         &self,
         out: &mut [(W, W)],
-    ) -> Result<SegmentFigures, Error> {
+    ) -> Result<CompactFigures, Error> {
         if W::WORD != self.word() {
             return Err(Error::WordMismatch {
                 expected: self.word(),
@@ -103,7 +146,7 @@ impl CheckedSpec {
         &self,
         segments: u32,
         mut sink: F,
-    ) -> Result<SegmentFigures, Error> {
+    ) -> Result<CompactFigures, Error> {
         self.check_segments(segments)?;
         let spec = self.spec();
         let len = self.len();
@@ -160,8 +203,9 @@ impl CheckedSpec {
             steps_before = steps_after;
         }
         let word_bytes = word.bytes();
-        Ok(SegmentFigures {
-            segments,
+        Ok(CompactFigures {
+            kind: "segments",
+            entries: segments,
             steps: len,
             flash_bytes: 2 * word_bytes * segments,
             per_step_flash_bytes: word_bytes * len,
@@ -169,6 +213,7 @@ impl CheckedSpec {
             duration_s: played as f64 / scale,
             max_edge_error_ticks: max_error,
             total_error_ticks: last_error,
+            tolerance_ticks: None,
         })
     }
 }
@@ -185,7 +230,7 @@ impl Spec {
     pub fn generate_segments<W: TableWord>(
         &self,
         out: &mut [(W, W)],
-    ) -> Result<SegmentFigures, Error> {
+    ) -> Result<CompactFigures, Error> {
         self.check()?.generate_segments(out)
     }
 
@@ -195,7 +240,7 @@ impl Spec {
         &self,
         segments: u32,
         sink: F,
-    ) -> Result<SegmentFigures, Error> {
+    ) -> Result<CompactFigures, Error> {
         self.check()?.for_each_segment(segments, sink)
     }
 }
