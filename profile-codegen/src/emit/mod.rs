@@ -137,35 +137,8 @@ pub(crate) fn constants(profile: &Profile) -> Vec<Constant> {
                 },
             ]);
         }
-        Generated::Segments(t) => {
-            let f = &t.figures;
-            c.extend([
-                Constant {
-                    name: "SEGMENT_COUNT",
-                    value: Number::Usize(f.entries.into()),
-                    doc: "Entries in `SEGMENTS`.",
-                },
-                Constant {
-                    name: "LEN",
-                    value: Number::Usize(f.steps.into()),
-                    doc: "Steps of the ramp: the sum of the segments' counts.",
-                },
-                Constant {
-                    name: "TOTAL_TICKS",
-                    value: Number::U64(f.total_ticks),
-                    doc: "Sum of period times count, in ticks.",
-                },
-                Constant {
-                    name: "DURATION_S",
-                    value: Number::F64(f.duration_s),
-                    doc: "Ramp duration as played, in s.",
-                },
-            ]);
-        }
-        Generated::Runs(_) => {}
-    }
-    if let Generated::Runs(t) = table {
-        c.extend(run_constants(&t.figures));
+        Generated::Segments(t) => c.extend(compact_constants(&t.figures)),
+        Generated::Runs(t) => c.extend(compact_constants(&t.figures)),
     }
     if let Some(t) = &profile.torque {
         c.extend(torque_constants(t));
@@ -189,35 +162,55 @@ fn torque_constants(t: &TorqueFigures) -> [Constant; 2] {
     ]
 }
 
-/// The figures of a compressed table.
-fn run_constants(f: &profile_core::CompactFigures) -> [Constant; 5] {
-    [
+/// The figures of a compact layout: a segment table, or a compressed one
+/// (with its largest edge error).
+fn compact_constants(f: &profile_core::CompactFigures) -> Vec<Constant> {
+    let runs = f.tolerance_ticks.is_some();
+    let (count, entries, len, ticks) = if runs {
+        (
+            "RUN_COUNT",
+            "Entries in `RUNS`.",
+            "Steps of the ramp: the sum of the runs' counts.",
+            "Sum of the periods the runs play, in ticks.",
+        )
+    } else {
+        (
+            "SEGMENT_COUNT",
+            "Entries in `SEGMENTS`.",
+            "Steps of the ramp: the sum of the segments' counts.",
+            "Sum of period times count, in ticks.",
+        )
+    };
+    let mut c = Vec::from([
         Constant {
-            name: "RUN_COUNT",
+            name: count,
             value: Number::Usize(f.entries.into()),
-            doc: "Entries in `RUNS`.",
+            doc: entries,
         },
         Constant {
             name: "LEN",
             value: Number::Usize(f.steps.into()),
-            doc: "Steps of the ramp: the sum of the runs' counts.",
+            doc: len,
         },
         Constant {
             name: "TOTAL_TICKS",
             value: Number::U64(f.total_ticks),
-            doc: "Sum of the periods the runs play, in ticks.",
+            doc: ticks,
         },
         Constant {
             name: "DURATION_S",
             value: Number::F64(f.duration_s),
             doc: "Ramp duration as played, in s.",
         },
-        Constant {
+    ]);
+    if runs {
+        c.push(Constant {
             name: "MAX_EDGE_ERROR_TICKS",
             value: Number::F64(f.max_edge_error_ticks),
             doc: "Largest distance of a played pulse edge from the curve's, in ticks.",
-        },
-    ]
+        });
+    }
+    c
 }
 
 /// Markdown lines describing a table: parameters and figures.
