@@ -62,7 +62,7 @@ use planning::plan::{Known, Plan, Run, Sides, Source};
 use planning::reader::{Reader, RunRead};
 pub use playing::axes::Axes;
 pub use playing::axis::{Axis, Direction, Moving};
-pub use playing::buffered::{AxesStart, Buffered, Steps};
+pub use playing::buffered::{Adjust, AxesStart, Buffered, Steps};
 pub use playing::rated::Rated;
 #[cfg(feature = "fugit")]
 pub use playing::rated::{OffsetMismatch, Timed};

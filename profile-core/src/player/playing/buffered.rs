@@ -3,6 +3,7 @@
 
 use crate::base::timer::TableWord;
 use crate::player::Player;
+use crate::player::playing::axes::Axes;
 use crate::player::playing::axis::{Axis, Direction};
 use crate::player::ramps::layout::Layout;
 
@@ -51,8 +52,47 @@ pub trait Steps: sealed::Sealed {
     fn set_rested(&mut self, rested: bool);
 }
 
+/// The calls that change a move without starting one, the same on a
+/// [`Player`], an [`Axis`] and [`Axes`](crate::player::Axes): what
+/// [`Buffered`] hands on to what it wraps unchanged. (A call that starts a
+/// move says what to load, and [`Buffered`] has its own.) Sealed: the
+/// three are all there is.
+pub trait Adjust: sealed::Sealed {
+    /// The table's word.
+    type Word;
+    /// Decelerates to rest ([`Player::stop`]).
+    fn stop(&mut self);
+    /// Cruises at step `pos` of the acceleration ramp
+    /// ([`Player::set_cruise`]).
+    fn set_cruise(&mut self, pos: u32);
+    /// Cruises at a period in ticks ([`Player::set_cruise_period`]).
+    fn set_cruise_period(&mut self, period: Self::Word);
+}
+
 impl<W: TableWord, L: Layout> sealed::Sealed for Player<'_, W, L> {}
 impl<W: TableWord, L: Layout> sealed::Sealed for Axis<'_, W, L> {}
+impl<W: TableWord, const N: usize, L: Layout> sealed::Sealed for Axes<'_, W, N, L> {}
+
+/// Implements [`Adjust`] by the inherent calls of the same names.
+macro_rules! adjust_by_inherent {
+    ($ty:ty, $($generics:tt)*) => {
+        impl<$($generics)*> Adjust for $ty {
+            type Word = W;
+            fn stop(&mut self) {
+                <$ty>::stop(self);
+            }
+            fn set_cruise(&mut self, pos: u32) {
+                <$ty>::set_cruise(self, pos);
+            }
+            fn set_cruise_period(&mut self, period: W) {
+                <$ty>::set_cruise_period(self, period);
+            }
+        }
+    };
+}
+adjust_by_inherent!(Player<'_, W, L>, W: TableWord, L: Layout);
+adjust_by_inherent!(Axis<'_, W, L>, W: TableWord, L: Layout);
+adjust_by_inherent!(Axes<'_, W, N, L>, W: TableWord, const N: usize, L: Layout);
 
 impl<W: TableWord, L: Layout> Steps for Player<'_, W, L> {
     type Word = W;
@@ -350,17 +390,10 @@ impl<S: Steps> Buffered<S> {
     }
 }
 
-impl<'a, W: TableWord, L: Layout> Buffered<Player<'a, W, L>> {
-    /// Starts a move of `steps` steps ([`Player::start`]): what to load as
-    /// the type's docs say (from rest, [`Buffered::begin`]).
-    pub fn start(&mut self, steps: u32) -> (Option<W>, Option<W>) {
-        let timer = self.timer();
-        self.inner.start(steps);
-        self.load(timer)
-    }
-
-    /// Decelerates to rest ([`Player::stop`]), from the first period not
-    /// yet in the timer's hands.
+impl<S: Adjust> Buffered<S> {
+    /// Decelerates to rest ([`Player::stop`], [`Axis::stop`],
+    /// [`Axes::stop`](crate::player::Axes::stop)), from the first period
+    /// not yet in the timer's hands.
     pub fn stop(&mut self) {
         self.inner.stop();
     }
@@ -374,8 +407,18 @@ impl<'a, W: TableWord, L: Layout> Buffered<Player<'a, W, L>> {
 
     /// Cruises at a period in ticks ([`Player::set_cruise_period`]), from
     /// the first period not yet in the timer's hands.
-    pub fn set_cruise_period(&mut self, period: W) {
+    pub fn set_cruise_period(&mut self, period: S::Word) {
         self.inner.set_cruise_period(period);
+    }
+}
+
+impl<'a, W: TableWord, L: Layout> Buffered<Player<'a, W, L>> {
+    /// Starts a move of `steps` steps ([`Player::start`]): what to load as
+    /// the type's docs say (from rest, [`Buffered::begin`]).
+    pub fn start(&mut self, steps: u32) -> (Option<W>, Option<W>) {
+        let timer = self.timer();
+        self.inner.start(steps);
+        self.load(timer)
     }
 
     /// Ends the move `steps` periods after those already handed out (one
@@ -466,23 +509,5 @@ impl<'a, W: TableWord, L: Layout> Buffered<Axis<'a, W, L>> {
         self.inner
             .position()
             .wrapping_sub(self.inner.direction().sign() * ahead)
-    }
-
-    /// Decelerates to rest ([`Axis::stop`]), from the first period not yet
-    /// in the timer's hands.
-    pub fn stop(&mut self) {
-        self.inner.stop();
-    }
-
-    /// Cruises slower or faster ([`Axis::set_cruise`]), from the first
-    /// period not yet in the timer's hands.
-    pub fn set_cruise(&mut self, pos: u32) {
-        self.inner.set_cruise(pos);
-    }
-
-    /// Cruises at a period in ticks ([`Axis::set_cruise_period`]), from
-    /// the first period not yet in the timer's hands.
-    pub fn set_cruise_period(&mut self, period: W) {
-        self.inner.set_cruise_period(period);
     }
 }

@@ -125,22 +125,4 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Buffered<Axes<'a, W, N, L>> {
         self.inner
             .position_after(played - u32::from(self.ahead != 0 && played > 0))
     }
-
-    /// Decelerates to rest ([`Axes::stop`]), from the first period not yet
-    /// in the timer's hands.
-    pub fn stop(&mut self) {
-        self.inner.stop();
-    }
-
-    /// Cruises slower or faster ([`Axes::set_cruise`]), from the first
-    /// period not yet in the timer's hands.
-    pub fn set_cruise(&mut self, pos: u32) {
-        self.inner.set_cruise(pos);
-    }
-
-    /// Cruises at a period in ticks ([`Axes::set_cruise_period`]), from
-    /// the first period not yet in the timer's hands.
-    pub fn set_cruise_period(&mut self, period: W) {
-        self.inner.set_cruise_period(period);
-    }
 }
