@@ -222,38 +222,25 @@ const RUNS: Templates = Templates {
 fn players(names: &Names, style: &CStyle, kinds: Kinds) -> Vec<(Fill, Templates)> {
     let prefix = &names.prefix;
     let storage = storage_word(style);
-    let mut out = Vec::new();
-    if kinds.u16 {
-        let fill = Fill {
-            name: format!("{prefix}_player"),
-            omit: omit(prefix, "player"),
-            word: "uint16_t",
-            storage: storage.clone(),
-            read: names.read(),
-        };
-        out.push((fill, STEPS));
-    }
-    if kinds.u32 {
-        let fill = Fill {
-            name: format!("{prefix}_player32"),
-            omit: omit(prefix, "player32"),
-            word: "uint32_t",
-            storage: storage.clone(),
-            read: names.read32(),
-        };
-        out.push((fill, STEPS));
-    }
-    if kinds.runs {
-        let fill = Fill {
-            name: format!("{prefix}_runs_player"),
-            omit: omit(prefix, "runs_player"),
-            word: "uint16_t",
-            storage,
-            read: names.read(),
-        };
-        out.push((fill, RUNS));
-    }
-    out
+    // (wanted, name after the prefix, word, read macro, templates)
+    let all = [
+        (kinds.u16, "player", "uint16_t", names.read(), STEPS),
+        (kinds.u32, "player32", "uint32_t", names.read32(), STEPS),
+        (kinds.runs, "runs_player", "uint16_t", names.read(), RUNS),
+    ];
+    all.into_iter()
+        .filter(|(wanted, ..)| *wanted)
+        .map(|(_, suffix, word, read, templates)| {
+            let fill = Fill {
+                name: format!("{prefix}_{suffix}"),
+                omit: omit(prefix, suffix),
+                word,
+                storage: storage.clone(),
+                read,
+            };
+            (fill, templates)
+        })
+        .collect()
 }
 
 /// The players' types, declarations and inline step paths, for the header,
