@@ -20,6 +20,12 @@ pub(crate) trait TimeCurve {
     fn ramp_end(&self) -> (f64, f64);
     /// The frequency held after the ramp.
     fn end_freq(&self) -> f64;
+    /// `(N(t), f(t))`, for curves whose two share their work. `N` is
+    /// exact; `f` only steers the solver, and may be off in its last few
+    /// digits.
+    fn steps_and_freq(&self, t: f64) -> (f64, f64) {
+        (self.steps(t), self.freq(t))
+    }
     /// The time of step `k` in closed form, where the curve has one.
     fn time_at(&self, _k: f64) -> Option<f64> {
         None
@@ -46,45 +52,62 @@ fn midpoint(lo: f64, hi: f64) -> f64 {
 }
 
 /// Solves `N(t) = target` for `t` in `[lo, hi]`, where `0 <= lo`,
-/// `N(lo) <= target <= N(hi)`.
+/// `N(lo) <= target <= N(hi)`, from `start` (its left end's Newton step
+/// when `start` is not inside the bracket).
 ///
 /// Newton's method on `N` (whose derivative is `f`), safeguarded as in
 /// `rtsafe`: a Newton step that leaves the bracket, or that is not at most
 /// half the step before it, gives way to bisection (over the floating-point
 /// numbers in the bracket). The bracket shrinks every iteration; the root is
-/// found to a few ulps or the bracket closes to adjacent numbers. Returns
-/// `None` if `max_iterations` pass without convergence, the bracket is not a
-/// finite interval of non-negative numbers, or the curve yields a non-finite
-/// value: never loops without bound.
+/// found to a few ulps or the bracket closes to adjacent numbers. A Newton
+/// step of at most `2^-32` of the bracket's first width `w` ends the solve
+/// without another evaluation: Newton's error after a step `h` is
+/// `|f'| h² / 2f`, at most `(|f'| w / f) w 2^-65`, below an ulp of the
+/// result while `f` changes by less than a factor of a thousand over the
+/// bracket (and it is never more than a step of `2^-32 w`). Returns `None`
+/// if `max_iterations` pass without convergence, the bracket is not a
+/// finite interval of non-negative numbers, the curve yields a
+/// non-finite value, or `start` is the bracket's right end and `N` falls
+/// short of `target` there (the bracket was wrong): never loops without
+/// bound. With the root, `f` where the curve was last evaluated, a step or
+/// less from it.
 pub(crate) fn pulse_time<C: TimeCurve + ?Sized>(
     curve: &C,
     target: f64,
-    mut lo: f64,
-    mut hi: f64,
+    (mut lo, mut hi): (f64, f64),
+    start: Option<f64>,
     max_iterations: u32,
-) -> Option<f64> {
+) -> Option<(f64, f64)> {
     if !(lo >= 0.0 && hi >= lo && hi.is_finite()) {
         return None;
     }
-    let mut t = midpoint(lo, hi);
-    // Start from the left end's Newton step: for the accelerating curves used
-    // here it lands close to the root.
-    let f_lo = curve.freq(lo);
-    if f_lo > 0.0 {
-        let guess = lo + (target - curve.steps(lo)) / f_lo;
-        if guess > lo && guess < hi {
-            t = guess;
+    let right = hi;
+    let close = (hi - lo) * TWO_POW_MINUS_32;
+    let mut t = match start {
+        Some(start) if start > lo && start <= hi => start,
+        _ => {
+            // The left end's Newton step: for the accelerating curves used
+            // here it lands close to the root.
+            counted();
+            let (n_lo, f_lo) = curve.steps_and_freq(lo);
+            let guess = lo + (target - n_lo) / f_lo;
+            if f_lo > 0.0 && guess > lo && guess < hi {
+                guess
+            } else {
+                midpoint(lo, hi)
+            }
         }
-    }
+    };
     let mut last_step = hi - lo;
     for _ in 0..max_iterations {
-        let g = curve.steps(t) - target;
-        let slope = curve.freq(t);
-        if !g.is_finite() || !slope.is_finite() {
+        counted();
+        let (n, slope) = curve.steps_and_freq(t);
+        let g = n - target;
+        if !g.is_finite() || !slope.is_finite() || (g < 0.0 && t == right) {
             return None;
         }
         if g == 0.0 {
-            return Some(t);
+            return Some((t, slope));
         }
         if g < 0.0 {
             lo = t;
@@ -92,25 +115,111 @@ pub(crate) fn pulse_time<C: TimeCurve + ?Sized>(
             hi = t;
         }
         let newton = t - g / slope;
+        if libm::fabs(newton - t) <= 4.0 * f64::EPSILON * libm::fabs(t) {
+            // The step is lost in the last digits of `t`: a root.
+            return Some((t, slope));
+        }
         let next = if newton > lo && newton < hi && libm::fabs(newton - t) <= 0.5 * last_step {
             newton
         } else {
             let mid = midpoint(lo, hi);
             if mid <= lo || mid >= hi {
                 // Adjacent numbers: the root lies between them.
-                return Some(if g < 0.0 { hi } else { lo });
+                return Some((if g < 0.0 { hi } else { lo }, slope));
             }
             mid
         };
         let step = libm::fabs(next - t);
-        if step <= 4.0 * f64::EPSILON * libm::fabs(t) {
-            return Some(next);
+        if step <= 4.0 * f64::EPSILON * libm::fabs(t) || (next == newton && step <= close) {
+            return Some((next, slope));
         }
         last_step = step;
         t = next;
     }
     None
 }
+
+#[cfg(test)]
+std::thread_local! {
+    /// The curve evaluations [`pulse_time`] has made on this thread.
+    pub(crate) static EVALUATIONS: core::cell::Cell<u32> = const { core::cell::Cell::new(0) };
+}
+
+/// Counts an evaluation, in tests.
+fn counted() {
+    #[cfg(test)]
+    EVALUATIONS.with(|n| n.set(n.get() + 1));
+}
+
+/// `2^-32`.
+const TWO_POW_MINUS_32: f64 = 1.0 / 4_294_967_296.0;
+
+/// The exact times of a curve's pulse edges in increasing order, each
+/// solved from the one before.
+///
+/// `f` is non-decreasing, so the step from the edge before (`N = k0`) to
+/// edge `k` takes no longer than `(k - k0) / f` at the edge before: the
+/// bracket is that narrow (a hair wider, for `f` is known a step or less
+/// from that edge). Newton's method, started at its right end, converges in
+/// two or three evaluations; where the bracket proves wrong, or the solve
+/// fails, the edge is solved on its own ([`edge_time`]).
+pub(crate) struct Edges<'c> {
+    curve: &'c dyn TimeCurve,
+    /// The edge before: its step count, its time and `f` there.
+    steps: f64,
+    time: f64,
+    freq: f64,
+}
+
+impl<'c> Edges<'c> {
+    /// The edges of `curve`, from its start.
+    pub(crate) fn new(curve: &'c dyn TimeCurve) -> Self {
+        Edges {
+            curve,
+            steps: 0.0,
+            time: 0.0,
+            freq: curve.freq(0.0),
+        }
+    }
+
+    /// The time of edge `k`, in s, `k` past the edge before.
+    pub(crate) fn time(&mut self, k: u32) -> Result<f64, Error> {
+        let c = self.curve;
+        let steps = k as f64;
+        let (ramp_time, ramp_steps) = c.ramp_end();
+        let t = if let Some(t) = c.time_at(steps) {
+            self.freq = f64::NAN;
+            t
+        } else if steps >= ramp_steps {
+            self.freq = f64::NAN;
+            time_after_ramp(c, steps)
+        } else {
+            if self.freq.is_nan() {
+                self.freq = c.freq(self.time);
+            }
+            let longest = (steps - self.steps) / self.freq;
+            let hi = ramp_time.min(self.time + longest * (1.0 + TWO_POW_MINUS_20));
+            let lo = (steps / c.end_freq()).max(self.time).min(hi);
+            let solved = (longest > 0.0 && hi.is_finite())
+                .then(|| pulse_time(c, steps, (lo, hi), Some(hi), MAX_ITERATIONS))
+                .flatten();
+            let (t, freq) = match solved {
+                Some(solved) => solved,
+                None => {
+                    let t = edge_time(c, k)?;
+                    (t, c.freq(t))
+                }
+            };
+            self.freq = freq;
+            t
+        };
+        (self.steps, self.time) = (steps, t);
+        Ok(t)
+    }
+}
+
+/// `2^-20`.
+const TWO_POW_MINUS_20: f64 = 1.0 / 1_048_576.0;
 
 /// The exact time of pulse edge `k` (when `N(t) = k`), in s.
 pub(crate) fn edge_time(c: &dyn TimeCurve, k: u32) -> Result<f64, Error> {
@@ -126,10 +235,12 @@ pub(crate) fn edge_time(c: &dyn TimeCurve, k: u32) -> Result<f64, Error> {
     // earlier than k / f_end and no later than k / f(0).
     let hi = ramp_time.min(steps / c.freq(0.0));
     let lo = (steps / c.end_freq()).min(hi);
-    pulse_time(c, steps, lo, hi, MAX_ITERATIONS).ok_or(Error::NoConvergence {
-        index: k,
-        iterations: MAX_ITERATIONS,
-    })
+    pulse_time(c, steps, (lo, hi), None, MAX_ITERATIONS)
+        .map(|(t, _)| t)
+        .ok_or(Error::NoConvergence {
+            index: k,
+            iterations: MAX_ITERATIONS,
+        })
 }
 
 #[cfg(test)]
@@ -173,19 +284,22 @@ mod tests {
     #[test]
     fn converges_to_the_closed_form() {
         // t + t²/2 = 3  =>  t = -1 + sqrt(7)
-        let t = pulse_time(&Ramp, 3.0, 0.0, 4.0, MAX_ITERATIONS).unwrap();
+        let (t, _) = pulse_time(&Ramp, 3.0, (0.0, 4.0), None, MAX_ITERATIONS).unwrap();
         assert!((t - (-1.0 + 7f64.sqrt())).abs() < 1e-15, "{t}");
     }
 
     #[test]
     fn iteration_bound_is_enforced() {
         // One iteration cannot reach f64 precision from a wide bracket.
-        assert_eq!(pulse_time(&Ramp, 3.0, 0.0, 4.0, 1), None);
-        assert!(pulse_time(&Ramp, 3.0, 0.0, 4.0, 8).is_some());
+        assert_eq!(pulse_time(&Ramp, 3.0, (0.0, 4.0), None, 1), None);
+        assert!(pulse_time(&Ramp, 3.0, (0.0, 4.0), None, 8).is_some());
     }
 
     #[test]
     fn non_finite_curve_is_an_error_not_a_hang() {
-        assert_eq!(pulse_time(&Broken, 0.5, 0.0, 1.0, MAX_ITERATIONS), None);
+        assert_eq!(
+            pulse_time(&Broken, 0.5, (0.0, 1.0), None, MAX_ITERATIONS),
+            None
+        );
     }
 }
