@@ -133,6 +133,7 @@ pub(crate) fn gap_after(a: f64, b: f64, x: f64, y: f64) -> f64 {
 pub(crate) struct SoftplusRise {
     s0: f64,
     logistic_s0: f64,
+    exp_s0: f64,
 }
 
 impl SoftplusRise {
@@ -140,15 +141,30 @@ impl SoftplusRise {
         SoftplusRise {
             s0,
             logistic_s0: logistic(s0),
+            exp_s0: libm::exp(s0),
         }
     }
 
     /// The rise over `[s0, s0 + d]`.
     pub(crate) fn over(&self, d: f64) -> f64 {
+        self.over_with_logistic(d).0
+    }
+
+    /// The rise over `[s0, s0 + d]` and the logistic at `s0 + d` (the
+    /// softplus's slope there), from one exponential: the rise exact, the
+    /// logistic within a few ulps.
+    pub(crate) fn over_with_logistic(&self, d: f64) -> (f64, f64) {
         if d < 700.0 {
-            libm::log1p(self.logistic_s0 * libm::expm1(d))
+            let rise = libm::expm1(d);
+            // e^(s0 + d) = e^s0 (1 + expm1(d)): finite below d = 700 for
+            // the s0 >= -500 of the curves.
+            let e = self.exp_s0 * (1.0 + rise);
+            (libm::log1p(self.logistic_s0 * rise), e / (1.0 + e))
         } else {
-            softplus(self.s0 + d) - softplus(self.s0)
+            (
+                softplus(self.s0 + d) - softplus(self.s0),
+                logistic(self.s0 + d),
+            )
         }
     }
 }

@@ -142,6 +142,20 @@ impl TimeCurve for ExponentialInTime {
         }
     }
 
+    /// One excess ratio for both: `(1 - e^-x) / x = 1 - x h(x)`.
+    fn steps_and_freq(&self, t: f64) -> (f64, f64) {
+        if t < self.rise {
+            let x = t / self.tau;
+            let h = crate::base::math::exp_excess_ratio(x);
+            (
+                self.fmin * t + self.accel * t * t * h,
+                self.fmin + self.accel * t * (1.0 - x * h),
+            )
+        } else {
+            (self.steps(t), self.fmax)
+        }
+    }
+
     fn ramp_end(&self) -> (f64, f64) {
         (self.rise, self.rise_steps)
     }

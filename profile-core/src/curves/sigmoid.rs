@@ -124,6 +124,18 @@ impl TimeCurve for SigmoidInTime {
         self.fmin * t + self.delt * (self.half / self.flexible) * rise
     }
 
+    /// One exponential for both: the logistic from the rise's `expm1`.
+    fn steps_and_freq(&self, t: f64) -> (f64, f64) {
+        if self.flexible < FLAT {
+            return (self.steps(t), self.freq(t));
+        }
+        let (rise, logistic) = self.rise.over_with_logistic(self.flexible * t / self.half);
+        (
+            self.fmin * t + self.delt * (self.half / self.flexible) * rise,
+            self.fmin + self.delt * logistic,
+        )
+    }
+
     fn ramp_end(&self) -> (f64, f64) {
         (self.duration, self.len)
     }

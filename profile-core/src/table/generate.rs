@@ -17,24 +17,31 @@ impl CheckedSpec {
     /// spec's word. No allocation, no panic: the same bits as `period_table!`
     /// on any target.
     pub fn generate<W: TableWord>(&self, out: &mut [W]) -> Result<Figures, Error> {
-        if W::WORD != self.word() {
-            return Err(Error::WordMismatch {
-                expected: self.word(),
-                got: W::WORD,
-            });
-        }
-        if out.len() != self.len() as usize {
-            return Err(Error::BufferLength {
-                expected: self.len(),
-                got: out.len(),
-            });
-        }
+        self.check_buffer::<W>(out.len())?;
         let spec = self.spec();
         self.for_each_period(|index, ticks| {
             if let Some(slot) = out.get_mut(index as usize) {
                 *slot = W::from_ticks(spec.stored(ticks));
             }
         })
+    }
+
+    /// A buffer of `len` words `W` for the table: the spec's word, its
+    /// length.
+    fn check_buffer<W: TableWord>(&self, len: usize) -> Result<(), Error> {
+        if W::WORD != self.word() {
+            return Err(Error::WordMismatch {
+                expected: self.word(),
+                got: W::WORD,
+            });
+        }
+        if len != self.len() as usize {
+            return Err(Error::BufferLength {
+                expected: self.len(),
+                got: len,
+            });
+        }
+        Ok(())
     }
 
     /// Computes the table's figures without storing it.
@@ -83,21 +90,47 @@ impl CheckedSpec {
     /// pass for both.
     pub fn for_each_period_and_edge<F: FnMut(u32, u32, f64)>(
         &self,
+        sink: F,
+    ) -> Result<Figures, Error> {
+        self.quantize(Quantizer::new(self.spec()), sink)
+    }
+
+    /// Computes the table into `out`, as [`generate`](Self::generate)
+    /// does, bit for bit, without its figures: what firmware that computes
+    /// its ramps at run time needs, in a fraction of the time where `f64`
+    /// is software (the figures' acceleration and jerk take a few divisions
+    /// an entry; `docs/performance.md` gives both on three cores).
+    pub fn generate_periods<W: TableWord>(&self, out: &mut [W]) -> Result<(), Error> {
+        self.check_buffer::<W>(out.len())?;
+        let spec = self.spec();
+        self.quantize(Quantizer::new(spec).without_figures(), |index, ticks, _| {
+            if let Some(slot) = out.get_mut(index as usize) {
+                *slot = W::from_ticks(spec.stored(ticks));
+            }
+        })?;
+        Ok(())
+    }
+
+    /// The table through `quantizer`, entry by entry to `sink`.
+    fn quantize<F: FnMut(u32, u32, f64)>(
+        &self,
+        mut quantizer: Quantizer,
         mut sink: F,
     ) -> Result<Figures, Error> {
         let spec = self.spec();
         let modes = self.modes();
         let scale = modes.scale();
-        let mut quantizer = Quantizer::new(spec);
         if spec.discretization == Discretization::Index {
-            // The windows of the acceleration figure are bounded by the
-            // ramp's duration: one pass over the entries.
-            let mut duration = 0.0;
-            spec.curve.index_entries(&modes, &mut |entry| {
-                duration += entry.exact;
-                Ok(())
-            })?;
-            quantizer.set_duration(duration);
+            if quantizer.keeps_figures() {
+                // The windows of the acceleration figure are bounded by the
+                // ramp's duration: one pass over the entries.
+                let mut duration = 0.0;
+                spec.curve.index_entries(&modes, &mut |entry| {
+                    duration += entry.exact;
+                    Ok(())
+                })?;
+                quantizer.set_duration(duration);
+            }
             let (mut k, mut t) = (0, 0.0);
             spec.curve.index_entries(&modes, &mut |entry| {
                 let ticks = match entry.rounded {
@@ -114,8 +147,10 @@ impl CheckedSpec {
         let model = spec.curve.time_model();
         let c = model.curve();
         quantizer.reachable(c.freq(0.0), c.end_freq())?;
-        let duration = edge_time(c, self.len())?;
-        quantizer.set_duration(duration * scale);
+        if quantizer.keeps_figures() {
+            let duration = edge_time(c, self.len())?;
+            quantizer.set_duration(duration * scale);
+        }
         let mut edges = Edges::new(c);
         let mut t = 0.0;
         for k in 0..self.len() {
@@ -153,6 +188,27 @@ impl Spec {
     /// ```
     pub fn generate<W: TableWord>(&self, out: &mut [W]) -> Result<Figures, Error> {
         self.check()?.generate(out)
+    }
+
+    /// Checks the spec and computes the table into `out` without its
+    /// figures ([`CheckedSpec::generate_periods`]): the same bits as
+    /// [`generate`](Self::generate).
+    ///
+    /// ```
+    /// use profile_core::{Curve, Sigmoid, Spec, Timer};
+    ///
+    /// let spec = Spec::new(
+    ///     Curve::Sigmoid(Sigmoid { fmin: 500.0, fmax: 64_000.0, flexible: 8.0, len: 1000 }),
+    ///     Timer::new(10_000_000),
+    /// );
+    /// let (mut fast, mut full) = ([0u16; 1000], [0u16; 1000]);
+    /// spec.generate_periods(&mut fast)?;
+    /// spec.generate(&mut full)?;
+    /// assert_eq!(fast, full);
+    /// # Ok::<(), profile_core::Error>(())
+    /// ```
+    pub fn generate_periods<W: TableWord>(&self, out: &mut [W]) -> Result<(), Error> {
+        self.check()?.generate_periods(out)
     }
 
     /// Checks the spec and computes the table's figures without storing it.

@@ -220,6 +220,8 @@ pub(crate) struct Quantizer {
     /// entry.
     curve: Slope,
     figures: Figures,
+    /// `false`: no figures are kept, the periods alone are checked.
+    keep: bool,
 }
 
 impl Quantizer {
@@ -250,7 +252,21 @@ impl Quantizer {
                 total_error_ticks: 0.0,
                 overflow_margin_ticks: 0,
             },
+            keep: true,
         }
+    }
+
+    /// The same quantizer, keeping no figures: the periods are rounded and
+    /// checked alike, and [`finish`](Self::finish) returns figures of
+    /// nothing.
+    pub(crate) fn without_figures(mut self) -> Self {
+        self.keep = false;
+        self
+    }
+
+    /// `true` unless made [`without_figures`](Self::without_figures).
+    pub(crate) fn keeps_figures(&self) -> bool {
+        self.keep
     }
 
     /// Bounds the windows of the table's acceleration to a quarter of a
@@ -374,6 +390,9 @@ impl Quantizer {
 
     /// Records entry `index`: `ticks` as emitted, `entry` unrounded.
     fn record(&mut self, index: u32, ticks: u32, entry: f64) {
+        if !self.keep {
+            return;
+        }
         let fig = &mut self.figures;
         let error = (self.emitted as f64 - self.exact_edge) * f64::from(self.timer.ticks_per_step);
         fig.max_edge_error_ticks = fig.max_edge_error_ticks.max(libm::fabs(error));

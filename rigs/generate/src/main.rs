@@ -291,21 +291,52 @@ fn entries(spec: &Spec, name: &str) -> usize {
     }
 }
 
-/// Times `Spec::generate` of `spec` into the first entries of `table`, and
-/// prints its instructions per entry.
+/// Times `Spec::generate` of `spec` into the first entries of `table`, then
+/// `Spec::generate_periods` (the periods alone, without the figures) into
+/// the same entries, prints the instructions per entry of each, and fails
+/// unless the two tables are the same bits (compared by a hash: a second
+/// buffer does not fit the micro:bit's stack beside the solver's).
 #[inline(never)]
 fn generate_case(clock: &Clock, case: u32, label: &str, spec: Spec, table: &mut [u16]) -> usize {
     let len = entries(&spec, label);
     let table = &mut table[..len];
     let mut result = Ok(());
-    clock.case(format_args!("{case} {label}, {len} entries"), len, || {
-        result = black_box(spec).generate(table).map(|_| ());
-    });
+    clock.case(
+        format_args!("{case} {label}, {len} entries, generate"),
+        len,
+        || {
+            result = black_box(spec).generate(table).map(|_| ());
+        },
+    );
     if let Err(e) = result {
         hprintln!("FAIL {}: {}", label, e);
         fail("generate");
     }
+    let full = hash(table);
+    table.fill(0);
+    clock.case(
+        format_args!("{case}p {label}, {len} entries, generate_periods"),
+        len,
+        || {
+            result = black_box(spec).generate_periods(table);
+        },
+    );
+    if let Err(e) = result {
+        hprintln!("FAIL {}: {}", label, e);
+        fail("generate_periods");
+    }
+    if hash(table) != full {
+        hprintln!("FAIL {}: generate_periods differs from generate", label);
+        fail("generate_periods");
+    }
     len
+}
+
+/// FNV-1a over a table's entries.
+fn hash(table: &[u16]) -> u64 {
+    table.iter().fold(0xcbf2_9ce4_8422_2325, |h, &p| {
+        (h ^ u64::from(p)).wrapping_mul(0x100_0000_01b3)
+    })
 }
 
 /// Compares the C table `period` with the Rust one, and prints how many
