@@ -26,6 +26,13 @@ pub(crate) trait TimeCurve {
     fn steps_and_freq(&self, t: f64) -> (f64, f64) {
         (self.steps(t), self.freq(t))
     }
+    /// A bound on `|f'(t)| / 2 f(u)` for any `t`, `u` of the ramp, in 1/s
+    /// (infinite where the curve knows none): after a Newton step of `h`
+    /// s on `N`, the solve is off by at most this times `h²`
+    /// ([`Edges`]).
+    fn newton_bound(&self) -> f64 {
+        f64::INFINITY
+    }
     /// The time of step `k` in closed form, where the curve has one.
     fn time_at(&self, _k: f64) -> Option<f64> {
         None
@@ -163,22 +170,74 @@ const TWO_POW_MINUS_32: f64 = 1.0 / 4_294_967_296.0;
 /// from that edge). Newton's method, started at its right end, converges in
 /// two or three evaluations; where the bracket proves wrong, or the solve
 /// fails, the edge is solved on its own ([`edge_time`]).
+///
+/// Where the curve bounds Newton's error ([`TimeCurve::newton_bound`],
+/// `K`), the solve starts from the edge the last two steps predict (each
+/// step as much longer or shorter than the one before as that one was than
+/// its own), and one Newton step `h` from there is the edge when `K h²` is
+/// at most `tolerance`: Newton's error after a step of `h` on `N`, whose
+/// second derivative is `f'`, is `|f'(ξ)| / 2 f(t) · e²` for the error `e`
+/// before it, and `e <= h + K e²`, so within `K h² (1 + O(K h))`.
 pub(crate) struct Edges<'c> {
     curve: &'c dyn TimeCurve,
     /// The edge before: its step count, its time and `f` there.
     steps: f64,
     time: f64,
     freq: f64,
+    /// The two steps before, in s (0 for none).
+    last: f64,
+    before_last: f64,
+    /// `K`, and the largest error `K h²` taken, in s.
+    bound: f64,
+    tolerance: f64,
 }
 
 impl<'c> Edges<'c> {
-    /// The edges of `curve`, from its start.
-    pub(crate) fn new(curve: &'c dyn TimeCurve) -> Self {
+    /// The edges of `curve`, from its start, each within `tolerance` s of
+    /// the root where one Newton step ends the solve (a few ulps of it
+    /// otherwise).
+    pub(crate) fn new(curve: &'c dyn TimeCurve, tolerance: f64) -> Self {
         Edges {
             curve,
             steps: 0.0,
             time: 0.0,
             freq: curve.freq(0.0),
+            last: 0.0,
+            before_last: 0.0,
+            bound: curve.newton_bound(),
+            tolerance,
+        }
+    }
+
+    /// Edge `steps` in the bracket `(lo, hi]` by one Newton step from the
+    /// predicted edge, when that step is short enough to end the solve;
+    /// else where the step landed, to start the safeguarded solve from.
+    fn predicted(&self, steps: f64, (lo, hi): (f64, f64)) -> Result<(f64, f64), Option<f64>> {
+        if !(self.bound.is_finite() && self.before_last > 0.0) {
+            return Err(None);
+        }
+        let step = self.last * (self.last / self.before_last) * (steps - self.steps);
+        let start = self.time + step;
+        if !(start > lo && start < hi) {
+            return Err(None);
+        }
+        counted();
+        let (n, f) = self.curve.steps_and_freq(start);
+        let h = (n - steps) / f;
+        let next = start - h;
+        if !(next > lo && next <= hi) {
+            return Err(None);
+        }
+        if self.bound * h * h <= self.tolerance {
+            // `f` at the edge is at least `f(start) / (1 + 2 K |start -
+            // edge|)` (`|f'| <= 2 K f`): the next bracket's right end must
+            // not fall short of the next edge.
+            Ok((
+                next,
+                f / (1.0 + 2.0 * self.bound * (libm::fabs(h) + self.tolerance)),
+            ))
+        } else {
+            Err(Some(next))
         }
     }
 
@@ -200,9 +259,12 @@ impl<'c> Edges<'c> {
             let longest = (steps - self.steps) / self.freq;
             let hi = ramp_time.min(self.time + longest * (1.0 + TWO_POW_MINUS_20));
             let lo = (steps / c.end_freq()).max(self.time).min(hi);
-            let solved = (longest > 0.0 && hi.is_finite())
-                .then(|| pulse_time(c, steps, (lo, hi), Some(hi), MAX_ITERATIONS))
-                .flatten();
+            let solved = match self.predicted(steps, (lo, hi)) {
+                Ok(solved) => Some(solved),
+                Err(start) => (longest > 0.0 && hi.is_finite())
+                    .then(|| pulse_time(c, steps, (lo, hi), start.or(Some(hi)), MAX_ITERATIONS))
+                    .flatten(),
+            };
             let (t, freq) = match solved {
                 Some(solved) => solved,
                 None => {
@@ -213,10 +275,16 @@ impl<'c> Edges<'c> {
             self.freq = freq;
             t
         };
+        (self.before_last, self.last) = (self.last, t - self.time);
         (self.steps, self.time) = (steps, t);
         Ok(t)
     }
 }
+
+/// How far from its root an edge may be where one Newton step ends its
+/// solve ([`Edges`]), in timer ticks: `2^-30`, a billionth of a tick. An
+/// edge rounds otherwise than at its root only within that of a half tick.
+pub(crate) const EDGE_TOLERANCE_TICKS: f64 = 1.0 / 1_073_741_824.0;
 
 /// `2^-20`.
 const TWO_POW_MINUS_20: f64 = 1.0 / 1_048_576.0;

@@ -142,6 +142,11 @@ impl TimeCurve for ExponentialInTime {
         }
     }
 
+    /// `f'` is largest at the start, `(f_inf - fmin) / tau`; `f >= fmin`.
+    fn newton_bound(&self) -> f64 {
+        self.accel / (2.0 * self.fmin)
+    }
+
     /// One excess ratio for both: `(1 - e^-x) / x = 1 - x h(x)`.
     fn steps_and_freq(&self, t: f64) -> (f64, f64) {
         if t < self.rise {

@@ -87,6 +87,11 @@ impl JerkInTime {
 }
 
 impl TimeCurve for JerkInTime {
+    /// `f'` is at most the peak acceleration; `f >= f0`.
+    fn newton_bound(&self) -> f64 {
+        self.peak / (2.0 * self.f0)
+    }
+
     fn freq(&self, t: f64) -> f64 {
         if t < self.t1 {
             self.f0 + self.jerk * t * t / 2.0

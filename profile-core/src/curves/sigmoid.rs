@@ -124,6 +124,12 @@ impl TimeCurve for SigmoidInTime {
         self.fmin * t + self.delt * (self.half / self.flexible) * rise
     }
 
+    /// `f' <= (fmax - fmin) flexible / 4 (T/2)` (the logistic's slope is
+    /// at most a quarter), `f >= fmin`.
+    fn newton_bound(&self) -> f64 {
+        self.delt * self.flexible / (4.0 * self.half) / (2.0 * self.fmin)
+    }
+
     /// One exponential for both: the logistic from the rise's `expm1`.
     fn steps_and_freq(&self, t: f64) -> (f64, f64) {
         if self.flexible < FLAT {

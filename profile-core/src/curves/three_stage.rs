@@ -106,7 +106,7 @@ impl ThreeStageInTime {
         curve.n1 = curve.stage1_steps(t1);
         let d = t2 - t1;
         curve.n2 = curve.n1 + f1 * d + a * d * d / 2.0;
-        curve.nc = curve.n2 + fc * (tc - t2) + curve.parabola_steps(t2 - tc);
+        curve.nc = curve.n2 + curve.parabola_steps(tc - t2);
         curve
     }
 
@@ -118,11 +118,14 @@ impl ThreeStageInTime {
         self.f0 * t + self.start * t * t * h
     }
 
-    /// `b d³ / 3`, the parabola's steps term `d` before `tc`, as
-    /// `(a d)³ / (12 a (fc - f2))`: finite wherever the ramp is.
+    /// The parabola's steps `d` after `t2`: `∫ fc - b (u - tc)² du` over
+    /// `[t2, t2 + d]`, as `d (f2 + a d / 2 - b d² / 3)` (with `fc - b (t2 -
+    /// tc)² = f2` and `2 b (tc - t2) = a`), and `b d²` as `(a d)² / 4 (fc -
+    /// f2)`: no cancellation of the two cubes `b (t - tc)³ / 3` where `fc`
+    /// is far above the ramp, and finite wherever the ramp is.
     fn parabola_steps(&self, d: f64) -> f64 {
         let ad = self.a * d;
-        ad * ad * ad / (12.0 * self.a * (self.fc - self.f2))
+        d * (self.f2 + ad / 2.0 - ad * ad / (12.0 * (self.fc - self.f2)))
     }
 
     /// Steps until `fmax`.
@@ -152,6 +155,13 @@ impl ThreeStageInTime {
 }
 
 impl TimeCurve for ThreeStageInTime {
+    /// `f'` runs from `start` (the exponential's slope at 0) to `a` over the
+    /// first stage, holds `a`, then falls to 0: at most the larger of the
+    /// two; `f >= f0`.
+    fn newton_bound(&self) -> f64 {
+        self.start.max(self.a) / (2.0 * self.f0)
+    }
+
     fn freq(&self, t: f64) -> f64 {
         if t < self.t1 {
             self.f0 - self.c * libm::expm1(-self.shape * t)
@@ -159,9 +169,18 @@ impl TimeCurve for ThreeStageInTime {
             self.f1 + self.a * (t - self.t1)
         } else if t < self.tc {
             // `b d²` as `(a d)² / 4 (fc - f2)`: `b` overflows for a huge `a`
-            // while `a d` stays within `2 (fc - f2)`.
-            let ad = self.a * (t - self.tc);
-            self.fc - ad * ad / (4.0 * (self.fc - self.f2))
+            // while `a d` stays within `2 (fc - f2)`. In the stage's first
+            // half from `f2` up (`f2 + a d - b d²`, `d` after `t2`), in its
+            // second from `fc` down: neither cancels where `fc` is far from
+            // `f`.
+            let four_gap = 4.0 * (self.fc - self.f2);
+            if t - self.t2 < self.tc - t {
+                let ad = self.a * (t - self.t2);
+                self.f2 + ad - ad * ad / four_gap
+            } else {
+                let ad = self.a * (t - self.tc);
+                self.fc - ad * ad / four_gap
+            }
         } else {
             self.fc
         }
@@ -174,8 +193,7 @@ impl TimeCurve for ThreeStageInTime {
             let d = t - self.t1;
             self.n1 + self.f1 * d + self.a * d * d / 2.0
         } else if t < self.tc {
-            self.n2 + self.fc * (t - self.t2) - self.parabola_steps(t - self.tc)
-                + self.parabola_steps(self.t2 - self.tc)
+            self.n2 + self.parabola_steps(t - self.t2)
         } else {
             self.nc + self.fc * (t - self.tc)
         }

@@ -3,7 +3,7 @@
 
 use crate::base::error::Error;
 use crate::base::modes::Discretization;
-use crate::base::solve::{Edges, edge_time};
+use crate::base::solve::{EDGE_TOLERANCE_TICKS, Edges, edge_time};
 use crate::base::timer::TableWord;
 use crate::table::quantize::{Figures, Quantizer};
 use crate::table::spec::{CheckedSpec, Spec};
@@ -69,7 +69,7 @@ impl CheckedSpec {
             });
         }
         let model = spec.curve.time_model();
-        let mut edges = Edges::new(model.curve());
+        let mut edges = Edges::new(model.curve(), EDGE_TOLERANCE_TICKS / self.modes().scale());
         for k in 1..=self.len() {
             sink(k, edges.time(k)?);
         }
@@ -151,7 +151,7 @@ impl CheckedSpec {
             let duration = edge_time(c, self.len())?;
             quantizer.set_duration(duration * scale);
         }
-        let mut edges = Edges::new(c);
+        let mut edges = Edges::new(c, EDGE_TOLERANCE_TICKS / scale);
         let mut t = 0.0;
         for k in 0..self.len() {
             let next = edges.time(k + 1)?;
@@ -254,7 +254,7 @@ mod tests {
         EVALUATIONS.with(|n| n.set(0));
         orange().figures().unwrap();
         let per_edge = EVALUATIONS.with(|n| n.get()) as f64 / 999.0;
-        assert!(per_edge < 2.5, "{per_edge} evaluations per edge");
+        assert!(per_edge < 1.5, "{per_edge} evaluations per edge");
     }
 
     #[test]

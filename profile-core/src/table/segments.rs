@@ -8,7 +8,7 @@
 use crate::base::error::Error;
 use crate::base::key::Key;
 use crate::base::modes::Discretization;
-use crate::base::solve::{Edges, edge_time};
+use crate::base::solve::{EDGE_TOLERANCE_TICKS, Edges, edge_time};
 use crate::base::timer::TableWord;
 use crate::table::quantize::Quantizer;
 use crate::table::runs::Expand;
@@ -162,7 +162,7 @@ impl CheckedSpec {
         let mut per_step = Quantizer::new(spec).without_offset();
         per_step.reachable(c.freq(0.0), c.end_freq())?;
         let mut step_start = 0.0;
-        let mut edges = Edges::new(c);
+        let mut edges = Edges::new(c, EDGE_TOLERANCE_TICKS / scale);
 
         let (mut steps_before, mut step, mut played) = (0u32, 0u32, 0u64);
         let (mut max_error, mut last_error) = (0.0f64, 0.0);
