@@ -26,11 +26,10 @@ pub(crate) trait TimeCurve {
     fn steps_and_freq(&self, t: f64) -> (f64, f64) {
         (self.steps(t), self.freq(t))
     }
-    /// A bound on `|f'(t)| / 2 f(u)` for any `t`, `u` of the ramp, in 1/s
-    /// (infinite where the curve knows none): after a Newton step of `h`
-    /// s on `N`, the solve is off by at most this times `h²`
-    /// ([`Edges`]).
-    fn newton_bound(&self) -> f64 {
+    /// A bound on `|f'|` over the ramp, in Hz/s (infinite where the curve
+    /// knows none): with `f >= f0` past an edge, a Newton step of `h` s on
+    /// `N` there ends within `|f'| / 2 f0 · h²` of the root ([`Edges`]).
+    fn max_slope(&self) -> f64 {
         f64::INFINITY
     }
     /// The time of step `k` in closed form, where the curve has one.
@@ -171,13 +170,15 @@ const TWO_POW_MINUS_32: f64 = 1.0 / 4_294_967_296.0;
 /// two or three evaluations; where the bracket proves wrong, or the solve
 /// fails, the edge is solved on its own ([`edge_time`]).
 ///
-/// Where the curve bounds Newton's error ([`TimeCurve::newton_bound`],
-/// `K`), the solve starts from the edge the last two steps predict (each
-/// step as much longer or shorter than the one before as that one was than
-/// its own), and one Newton step `h` from there is the edge when `K h²` is
-/// at most `tolerance`: Newton's error after a step of `h` on `N`, whose
-/// second derivative is `f'`, is `|f'(ξ)| / 2 f(t) · e²` for the error `e`
-/// before it, and `e <= h + K e²`, so within `K h² (1 + O(K h))`.
+/// Where the curve bounds its slope ([`TimeCurve::max_slope`], `S`), the
+/// solve starts from the edge the last two steps predict (each step as
+/// much longer or shorter than the one before as that one was than its
+/// own), and one Newton step `h` from there is the edge when `K h²` is at
+/// most `tolerance`, `K = S / 2 f0` with `f0` at most `f` at the edge
+/// before (so on the whole bracket, `f` being non-decreasing): Newton's
+/// error after a step of `h` on `N`, whose second derivative is `f'`, is
+/// `|f'(ξ)| / 2 f(t) · e²` for the error `e` before it, at most `K e²`, and
+/// `e <= h + K e²`, so within `K h² (1 + O(K h))`.
 pub(crate) struct Edges<'c> {
     curve: &'c dyn TimeCurve,
     /// The edge before: its step count, its time and `f` there.
@@ -187,8 +188,8 @@ pub(crate) struct Edges<'c> {
     /// The two steps before, in s (0 for none).
     last: f64,
     before_last: f64,
-    /// `K`, and the largest error `K h²` taken, in s.
-    bound: f64,
+    /// `S`, in Hz/s, and the largest error `K h²` taken, in s.
+    slope: f64,
     tolerance: f64,
 }
 
@@ -204,7 +205,7 @@ impl<'c> Edges<'c> {
             freq: curve.freq(0.0),
             last: 0.0,
             before_last: 0.0,
-            bound: curve.newton_bound(),
+            slope: curve.max_slope(),
             tolerance,
         }
     }
@@ -213,7 +214,7 @@ impl<'c> Edges<'c> {
     /// predicted edge, when that step is short enough to end the solve;
     /// else where the step landed, to start the safeguarded solve from.
     fn predicted(&self, steps: f64, (lo, hi): (f64, f64)) -> Result<(f64, f64), Option<f64>> {
-        if !(self.bound.is_finite() && self.before_last > 0.0) {
+        if !(self.slope.is_finite() && self.before_last > 0.0) {
             return Err(None);
         }
         let step = self.last * (self.last / self.before_last) * (steps - self.steps);
@@ -228,14 +229,12 @@ impl<'c> Edges<'c> {
         if !(next > lo && next <= hi) {
             return Err(None);
         }
-        if self.bound * h * h <= self.tolerance {
-            // `f` at the edge is at least `f(start) / (1 + 2 K |start -
-            // edge|)` (`|f'| <= 2 K f`): the next bracket's right end must
-            // not fall short of the next edge.
-            Ok((
-                next,
-                f / (1.0 + 2.0 * self.bound * (libm::fabs(h) + self.tolerance)),
-            ))
+        if self.slope / (2.0 * self.freq) * h * h <= self.tolerance {
+            // `f` at the edge is at least `f(start) - S |start - edge|`,
+            // and at least `f` at the edge before: the next bracket's
+            // right end must not fall short of the next edge.
+            let floor = f - self.slope * (libm::fabs(h) + self.tolerance);
+            Ok((next, floor.max(self.freq)))
         } else {
             Err(Some(next))
         }

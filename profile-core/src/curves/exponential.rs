@@ -142,9 +142,9 @@ impl TimeCurve for ExponentialInTime {
         }
     }
 
-    /// `f'` is largest at the start, `(f_inf - fmin) / tau`; `f >= fmin`.
-    fn newton_bound(&self) -> f64 {
-        self.accel / (2.0 * self.fmin)
+    /// `f'` is largest at the start, `(f_inf - fmin) / tau`.
+    fn max_slope(&self) -> f64 {
+        self.accel
     }
 
     /// One excess ratio for both: `(1 - e^-x) / x = 1 - x h(x)`.

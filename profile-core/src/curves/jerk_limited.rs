@@ -87,9 +87,9 @@ impl JerkInTime {
 }
 
 impl TimeCurve for JerkInTime {
-    /// `f'` is at most the peak acceleration; `f >= f0`.
-    fn newton_bound(&self) -> f64 {
-        self.peak / (2.0 * self.f0)
+    /// `f'` is at most the peak acceleration.
+    fn max_slope(&self) -> f64 {
+        self.peak
     }
 
     fn freq(&self, t: f64) -> f64 {

@@ -124,10 +124,10 @@ impl TimeCurve for SigmoidInTime {
         self.fmin * t + self.delt * (self.half / self.flexible) * rise
     }
 
-    /// `f' <= (fmax - fmin) flexible / 4 (T/2)` (the logistic's slope is
-    /// at most a quarter), `f >= fmin`.
-    fn newton_bound(&self) -> f64 {
-        self.delt * self.flexible / (4.0 * self.half) / (2.0 * self.fmin)
+    /// `f' <= (fmax - fmin) flexible / 4 (T/2)`: the logistic's slope is at
+    /// most a quarter.
+    fn max_slope(&self) -> f64 {
+        self.delt * self.flexible / (4.0 * self.half)
     }
 
     /// One exponential for both: the logistic from the rise's `expm1`.

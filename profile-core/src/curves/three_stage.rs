@@ -157,9 +157,9 @@ impl ThreeStageInTime {
 impl TimeCurve for ThreeStageInTime {
     /// `f'` runs from `start` (the exponential's slope at 0) to `a` over the
     /// first stage, holds `a`, then falls to 0: at most the larger of the
-    /// two; `f >= f0`.
-    fn newton_bound(&self) -> f64 {
-        self.start.max(self.a) / (2.0 * self.f0)
+    /// two.
+    fn max_slope(&self) -> f64 {
+        self.start.max(self.a)
     }
 
     fn freq(&self, t: f64) -> f64 {

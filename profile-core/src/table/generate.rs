@@ -254,7 +254,7 @@ mod tests {
         EVALUATIONS.with(|n| n.set(0));
         orange().figures().unwrap();
         let per_edge = EVALUATIONS.with(|n| n.get()) as f64 / 999.0;
-        assert!(per_edge < 1.5, "{per_edge} evaluations per edge");
+        assert!(per_edge < 1.3, "{per_edge} evaluations per edge");
     }
 
     #[test]
