@@ -114,7 +114,17 @@ impl AccelWindows {
     pub fn push(&mut self, ticks: f64, scale: f64, f: f64, accel: f64) -> Option<f64> {
         self.count += 1;
         self.ticks += ticks;
-        if self.ticks < self.needed(f, accel, scale) {
+        // `ticks < needed(..)`, without its square root and divisions: the
+        // window is open while shorter than `longest` and than
+        // `sqrt(40 f / (|accel| scale))` s, that is while `ticks² |accel|
+        // < 40 f scale` (always for a NaN, which `needed` reads as no
+        // bound).
+        let (lhs, rhs) = (
+            self.ticks * self.ticks * libm::fabs(accel),
+            40.0 * f * scale,
+        );
+        let unbounded = lhs.is_nan() || rhs.is_nan() || (lhs == 0.0 && rhs == 0.0);
+        if self.ticks < self.longest && (unbounded || lhs < rhs) {
             return None;
         }
         let mean = self.count as f64 * scale / self.ticks;
@@ -186,9 +196,10 @@ impl Slope {
         // The older window starts 2w periods back, the newer w back.
         let older = sum(self.count - 2 * w);
         let newer = sum(self.count - w);
-        let (f_old, f_new) = (w as f64 * scale / older, w as f64 * scale / newer);
-        let dt = (older + newer) / 2.0 / scale;
-        let accel = (f_new - f_old) / dt;
+        // `(f_new - f_old) / dt` with `f = w scale / ticks` and `dt = (older +
+        // newer) / 2 scale`, in one division.
+        let accel =
+            2.0 * w as f64 * scale * scale * (older - newer) / (older * newer * (older + newer));
         self.max_accel = self.max_accel.max(libm::fabs(accel));
         // The edge between the two windows, in seconds.
         let at = (self.now - newer) / scale;
