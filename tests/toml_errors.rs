@@ -86,6 +86,11 @@ const REQUIRED: &[&str] = &[
     "reload_offset_range",
     "reload_offset_entry_zero",
     "reload_offset_compress",
+    // The step driver's timing.
+    "driver_too_fast",
+    "driver_keys_too_fast",
+    "driver_unknown",
+    "driver_time_zero",
 ];
 
 /// The file named in messages, as `include_profiles!("profiles.toml")` names it.

@@ -8,9 +8,10 @@
 //! else computes a table, expands segments or runs the motor check.
 
 use std::format;
-use std::string::String;
+use std::string::{String, ToString};
 use std::vec::Vec;
 
+use crate::driver::Driver;
 use crate::motor::{Motor, TorqueFigures};
 use crate::schema::{self, Arg, Diagnostic, TableLayout, locate, locate_motor};
 use crate::table::computed::{Generated, SpecTables};
@@ -29,6 +30,9 @@ pub struct Compiled {
     pub motor: Option<Motor>,
     /// Where that motor has the least torque to spare.
     pub torque: Option<TorqueFigures>,
+    /// The step driver it plays into, when described: every period is
+    /// long enough for it.
+    pub driver: Option<Driver>,
 }
 
 /// Entries a set of tables (one profiles file) may still generate.
@@ -123,10 +127,35 @@ pub fn compile<L: Clone>(
                 .map_err(motor_at)?,
         ),
     };
+    if let Some(driver) = &request.driver {
+        driver
+            .check(&spec.spec().timer, &table.step_periods())
+            .map_err(|e| std::vec![driver_at(&e, args, whole, &prefix)])?;
+    }
     Ok(Compiled {
         spec,
         table,
         motor: request.motor,
         torque,
+        driver: request.driver,
     })
+}
+
+/// A table too fast for its driver, at `fmax` (what to lower), or at the
+/// whole argument list without one.
+fn driver_at<L: Clone>(
+    e: &crate::driver::DriverError,
+    args: &[Arg<L>],
+    whole: &L,
+    prefix: &str,
+) -> Diagnostic<L> {
+    let named = |key: Key| args.iter().find(|a| a.key == key.name());
+    let what = match named(Key::DRIVER) {
+        Some(arg) => format!("`driver = \"{}\"`", arg.value),
+        None => "`step_pulse` + `step_space`".to_string(),
+    };
+    Diagnostic {
+        loc: named(Key::FMAX).map_or(whole, |a| &a.value_loc).clone(),
+        message: format!("{prefix}{}", e.message(&what)),
+    }
 }

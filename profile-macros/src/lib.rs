@@ -46,6 +46,8 @@ mod include;
 /// | `segments` | N equal-time `(period, count)` pairs instead of one entry per step (a `[(u16, u16); N]`); each step's own period must fit the word | off |
 /// | `compress` | runs instead of one entry per step (an `[[u16; 5]; N]`, played by `runs::Expand` or the player), every step edge within this many timer ticks of the curve, from 0.5 (1 with `ticks_per_step = 2`) to 65535: about a tenth of the flash of a long ramp at 1 tick | off |
 /// | `motor` | in a profiles file, the `[motors.NAME]` table of the motor the profile drives; the macro takes the motor's keys inline (below) | none |
+/// | `driver` | the step driver, by name: `a4988`, `drv8825`, `tmc2209`, `dm542`; every period must last its `step_pulse` + `step_space` (the longer of the two with `ticks_per_step = 2`), or the table is an error at `fmax` | none |
+/// | `step_pulse`, `step_space`, `dir_setup` | the driver's times, s (`ns`, `us`, `ms`): STEP high, STEP low, DIR before the step edge; each replaces the preset's | the preset's, else 0 |
 ///
 /// Each curve's own keys:
 ///

@@ -21,7 +21,14 @@ pub(crate) const COMMON: &[Key] = &[
     Key::SEGMENTS,
     Key::COMPRESS,
     Key::MOTOR,
+    Key::DRIVER,
+    Key::STEP_PULSE,
+    Key::STEP_SPACE,
+    Key::DIR_SETUP,
 ];
+
+/// The keys of the step driver's timing (`driver` names a preset of them).
+pub(crate) const DRIVER_TIMING: [Key; 3] = [Key::STEP_PULSE, Key::STEP_SPACE, Key::DIR_SETUP];
 
 /// The keys that describe a motor (all but `motor` itself).
 pub(crate) const MOTOR_KEYS: &[Key] = &[

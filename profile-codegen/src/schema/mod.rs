@@ -150,10 +150,16 @@ pub fn keys_for(curve: &str) -> Vec<Key> {
         .collect()
 }
 
-/// Keys to list in messages: a curve's and the common ones, not the motor's.
+/// Keys to list in messages: a curve's and the common ones, not the
+/// motor's nor the driver's (suggestions still find them).
 pub(crate) fn listed(keys: &[Key]) -> impl Iterator<Item = &'static str> + '_ {
     keys.iter()
-        .filter(|k| !crate::schema::keys::is_motor(**k) && **k != Key::MOTOR)
+        .filter(|k| {
+            !crate::schema::keys::is_motor(**k)
+                && **k != Key::MOTOR
+                && **k != Key::DRIVER
+                && !crate::schema::keys::DRIVER_TIMING.contains(k)
+        })
         .map(|k| k.name())
 }
 
@@ -194,6 +200,7 @@ pub fn unit(key: Key) -> &'static str {
         Key::INDUCTANCE => "H",
         Key::RATED_CURRENT | Key::DRIVER_CURRENT => "A",
         Key::SUPPLY_VOLTAGE => "V",
+        Key::STEP_PULSE | Key::STEP_SPACE | Key::DIR_SETUP => "s",
         _ => CURVE_SCHEMAS
             .iter()
             .flat_map(|r| r.units)

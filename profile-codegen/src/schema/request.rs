@@ -6,8 +6,9 @@ use std::string::ToString;
 use std::vec::Vec;
 
 use super::suggest::{Hint, did_you_mean, suggest};
-use super::values::{Collector, motor};
+use super::values::{Collector, driver, motor};
 use super::{Arg, Diagnostic, TableLayout, Value, curve_names, keys_for, listed, quoted};
+use crate::driver::Driver;
 use crate::motor::{Motor, MotorError};
 use crate::schema::curves::CurveSchema;
 use crate::table::computed::SpecTables;
@@ -28,6 +29,8 @@ pub struct Request {
     pub layout: TableLayout,
     /// The motor it drives, when described.
     pub motor: Option<Motor>,
+    /// The step driver it plays into, when described.
+    pub driver: Option<Driver>,
 }
 
 /// Checks the keys, kinds and names of `args` and says what they ask for.
@@ -87,6 +90,7 @@ pub fn read<L: Clone>(
     }
     let mut curve = (schema.read)(&mut c);
     let motor = motor(&mut c, &suggested);
+    let driver = driver(&mut c);
     if let (Some(Curve::TorqueLimited(ramp)), Some(timer)) = (&mut curve, timer) {
         limited_by(&mut c, ramp, motor.as_ref(), timer);
     }
@@ -107,6 +111,7 @@ pub fn read<L: Clone>(
             (None, None) => TableLayout::Steps,
         },
         motor,
+        driver,
     })
 }
 

@@ -23,6 +23,8 @@ pub enum Quantity {
     Frequency,
     /// A time: `s`, `ms`, `us`.
     Time,
+    /// A driver's pulse or setup time: `s`, `ms`, `us`, `ns`.
+    Pulse,
     /// A moment of inertia: `kgm2` (kg·m²), `gcm2` (g·cm², 1e-7 kg·m²).
     Inertia,
     /// A torque: `Nm` (N·m), `Ncm` (N·cm), `mNm` (mN·m).
@@ -88,6 +90,7 @@ impl Quantity {
         match self {
             Quantity::Frequency => &[("Hz", 0), ("kHz", 3), ("MHz", 6)],
             Quantity::Time => &[("s", 0), ("ms", -3), ("us", -6)],
+            Quantity::Pulse => &[("s", 0), ("ms", -3), ("us", -6), ("ns", -9)],
             Quantity::Inertia => &[("kgm2", 0), ("gcm2", -7)],
             Quantity::Torque => &[("Nm", 0), ("Ncm", -2), ("mNm", -3)],
             Quantity::Resistance => &[("ohm", 0), ("mohm", -3)],
@@ -103,7 +106,7 @@ impl Quantity {
     /// times, shown in the largest unit that leaves a number of at least 1.
     fn shown_in(self) -> Option<(&'static str, i32)> {
         match self {
-            Quantity::Frequency | Quantity::Time => None,
+            Quantity::Frequency | Quantity::Time | Quantity::Pulse => None,
             Quantity::Inertia => Some(("g·cm²", -7)),
             Quantity::Torque => Some(("N·m", 0)),
             Quantity::Resistance => Some(("Ω", 0)),
@@ -185,6 +188,9 @@ impl Quantity {
 /// What `key` measures, if it takes a unit: read off the unit it is given
 /// in.
 pub fn quantity(key: Key) -> Option<Quantity> {
+    if super::keys::DRIVER_TIMING.contains(&key) {
+        return Some(Quantity::Pulse);
+    }
     match super::unit(key) {
         "Hz" | "Hz (steps/s)" => Some(Quantity::Frequency),
         "s" => Some(Quantity::Time),

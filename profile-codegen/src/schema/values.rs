@@ -7,11 +7,13 @@ use std::vec::Vec;
 
 use super::suggest::{Hint, did_you_mean};
 use super::{Arg, Diagnostic, Value, quoted, unit, units};
+use crate::driver::{Driver, PRESETS};
 use crate::motor::{
     CurrentSetting, Drive, MAX_CURVE_POINTS, MAX_MICROSTEPS, Motor, TorqueCurve, Windings,
 };
 use crate::numbers::Num;
 use crate::schema::curves::Reader;
+use crate::schema::keys::DRIVER_TIMING;
 use profile_core::Error;
 use profile_core::Key;
 use profile_core::MAX_LEN;
@@ -404,4 +406,51 @@ fn windings<L: Clone>(c: &mut Collector<'_, L>) -> Option<Option<Windings>> {
         supply_utilization: supply_utilization.unwrap_or(defaults.supply_utilization),
         iron_loss,
     }))
+}
+
+/// The step driver's timing: a preset by name (`driver`), each time given
+/// (`step_pulse`, `step_space`, `dir_setup`) over the preset's; a time
+/// neither gives is 0, no bound. `None` when none of the four is given, or
+/// one is in error (reported).
+pub(crate) fn driver<L: Clone>(c: &mut Collector<'_, L>) -> Option<Driver> {
+    let given = |c: &Collector<'_, L>, k: Key| c.find(k).is_some();
+    if !given(c, Key::DRIVER) && !DRIVER_TIMING.iter().any(|k| given(c, *k)) {
+        return None;
+    }
+    let choices = PRESETS.map(|(name, driver, _)| (name, driver));
+    let errors = c.diagnostics.len();
+    let mut driver = if given(c, Key::DRIVER) {
+        c.name(Key::DRIVER, &choices)
+    } else {
+        Some(Driver {
+            step_pulse: 0.0,
+            step_space: 0.0,
+            dir_setup: 0.0,
+        })
+    };
+    for key in DRIVER_TIMING {
+        let Some(time) = c.float(key) else {
+            continue;
+        };
+        if !(time > 0.0 && time < 1.0) {
+            let (i, _) = c.find(key)?;
+            c.at_arg(
+                i,
+                false,
+                format!(
+                    "`{key}` must be a time above 0 and below 1 s (got {})",
+                    Num(time)
+                ),
+            );
+            continue;
+        }
+        if let Some(d) = &mut driver {
+            match key {
+                Key::STEP_PULSE => d.step_pulse = time,
+                Key::STEP_SPACE => d.step_space = time,
+                _ => d.dir_setup = time,
+            }
+        }
+    }
+    driver.filter(|_| c.diagnostics.len() == errors)
 }

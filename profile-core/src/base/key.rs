@@ -91,6 +91,18 @@ impl Key {
     /// N·m.
     pub const IRON_LOSS: Key = Key("iron_loss");
 
+    /// `driver`: the step driver a profile plays into, by name.
+    pub const DRIVER: Key = Key("driver");
+    /// `step_pulse`: the shortest time the driver's STEP input may stay
+    /// high, s.
+    pub const STEP_PULSE: Key = Key("step_pulse");
+    /// `step_space`: the shortest time the driver's STEP input may stay
+    /// low between pulses, s.
+    pub const STEP_SPACE: Key = Key("step_space");
+    /// `dir_setup`: the shortest time from a change of the driver's DIR
+    /// input to the next step edge, s.
+    pub const DIR_SETUP: Key = Key("dir_setup");
+
     /// The key as written by users.
     pub const fn name(self) -> &'static str {
         self.0

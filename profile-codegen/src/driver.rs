@@ -1,0 +1,202 @@
+//! The step driver's timing: how long its STEP input must stay high and low,
+//! and how long before a step its DIR input must hold the new direction.
+//!
+//! A step pulse shorter than the driver's minimum, or a step too soon after
+//! the direction changed, loses the step without a sign. A profile that
+//! names its driver (`driver = "drv8825"`, or the times themselves:
+//! `step_pulse`, `step_space`, `dir_setup`) has every period of its table
+//! checked against them at compile time ([`Driver::check`]).
+//!
+//! ```
+//! use profile_codegen::driver::Driver;
+//!
+//! let drv8825 = Driver::preset("drv8825").unwrap();
+//! // 1.9 µs high and 1.9 µs low: at most 263 157 steps/s.
+//! assert_eq!(drv8825.max_rate(1) as u32, 263_157);
+//! ```
+
+use std::format;
+use std::string::String;
+
+use profile_core::Timer;
+
+/// A step driver's timing, in seconds.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Driver {
+    /// The shortest time STEP may stay high (`step_pulse`).
+    pub step_pulse: f64,
+    /// The shortest time STEP may stay low between two pulses
+    /// (`step_space`).
+    pub step_space: f64,
+    /// The shortest time from a change of DIR to the step edge that takes
+    /// the new direction (`dir_setup`).
+    pub dir_setup: f64,
+}
+
+/// The drivers `driver = NAME` names, with their datasheets' figures: the
+/// name, the timing, and where the figures come from.
+pub const PRESETS: [(&str, Driver, &str); 4] = [
+    (
+        "a4988",
+        Driver {
+            step_pulse: 1e-6,
+            step_space: 1e-6,
+            dir_setup: 200e-9,
+        },
+        "Allegro A4988 datasheet, logic interface timing: STEP high and low at least 1 µs, \
+         DIR set up 200 ns before the step",
+    ),
+    (
+        "drv8825",
+        Driver {
+            step_pulse: 1.9e-6,
+            step_space: 1.9e-6,
+            dir_setup: 650e-9,
+        },
+        "TI DRV8825 datasheet, timing requirements: STEP high and low at least 1.9 µs \
+         (250 kHz at most), DIR set up 650 ns before the step",
+    ),
+    (
+        "tmc2209",
+        Driver {
+            step_pulse: 100e-9,
+            step_space: 100e-9,
+            dir_setup: 20e-9,
+        },
+        "TRINAMIC TMC2209 datasheet, STEP/DIR timing: STEP high and low at least 100 ns, \
+         DIR set up 20 ns before the step",
+    ),
+    (
+        "dm542",
+        Driver {
+            step_pulse: 2.5e-6,
+            step_space: 2.5e-6,
+            dir_setup: 5e-6,
+        },
+        "Leadshine DM542 manual (and TB6600-class drivers built alike): PUL high and low at \
+         least 2.5 µs, DIR 5 µs ahead of the PUL edge",
+    ),
+];
+
+/// What a table does past its driver's timing.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DriverError {
+    /// The first entry too short for the driver.
+    pub index: usize,
+    /// Its period, in ticks.
+    pub ticks: u32,
+    /// The step rate it plays, in steps/s.
+    pub rate: f64,
+    /// The shortest period the driver takes, in ticks (rounded up).
+    pub shortest: u32,
+    /// The fastest step rate the driver takes, in steps/s.
+    pub max_rate: f64,
+}
+
+impl Driver {
+    /// The driver `name` names ([`PRESETS`]).
+    pub fn preset(name: &str) -> Option<Driver> {
+        PRESETS
+            .iter()
+            .find(|(n, _, _)| *n == name)
+            .map(|(_, d, _)| *d)
+    }
+
+    /// The shortest time from one step edge to the next, in seconds, when
+    /// each table entry is `ticks_per_step` times played: with one, the
+    /// pulse and the space share the period; with two, the timer toggles
+    /// STEP at every entry, which must then hold the longer of the two.
+    pub fn shortest_step(&self, ticks_per_step: u8) -> f64 {
+        if ticks_per_step >= 2 {
+            f64::from(ticks_per_step) * self.step_pulse.max(self.step_space)
+        } else {
+            self.step_pulse + self.step_space
+        }
+    }
+
+    /// The fastest step rate the driver takes, in steps/s.
+    pub fn max_rate(&self, ticks_per_step: u8) -> f64 {
+        1.0 / self.shortest_step(ticks_per_step)
+    }
+
+    /// Checks every entry of `periods` (ticks of `timer`) against the
+    /// driver: the first one shorter than the driver takes, or `Ok`.
+    pub fn check(&self, timer: &Timer, periods: &[u32]) -> Result<(), DriverError> {
+        let tick = f64::from(timer.ticks_per_step) / timer.timer_hz as f64;
+        // The shortest entry the driver takes, in ticks: a hair under the
+        // exact quotient counts as it (0.9999999 of a tick is a tick).
+        let needed = self.shortest_step(timer.ticks_per_step) / tick;
+        let shortest = libm::ceil(needed * (1.0 - 1e-12)) as u32;
+        match periods.iter().position(|&p| p < shortest) {
+            None => Ok(()),
+            Some(index) => {
+                let ticks = periods[index];
+                Err(DriverError {
+                    index,
+                    ticks,
+                    rate: 1.0 / (f64::from(ticks) * tick),
+                    shortest,
+                    max_rate: 1.0 / (f64::from(shortest) * tick),
+                })
+            }
+        }
+    }
+}
+
+impl DriverError {
+    /// The message, naming what the driver takes (`what`: "`driver =
+    /// \"drv8825\"`", or the keys).
+    pub fn message(&self, what: &str) -> String {
+        format!(
+            "entry {} is {} ticks, {} steps/s: the driver's timing ({what}) takes at least {} \
+             ticks a step, at most {} steps/s; lower `fmax`, or choose a faster driver",
+            self.index,
+            self.ticks,
+            crate::numbers::Significant(self.rate),
+            self.shortest,
+            crate::numbers::Num(libm::floor(self.max_rate)),
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn presets_carry_their_datasheets_figures() {
+        let a4988 = Driver::preset("a4988").unwrap();
+        assert_eq!((a4988.step_pulse, a4988.step_space), (1e-6, 1e-6));
+        assert_eq!(Driver::preset("tmc2209").unwrap().dir_setup, 20e-9);
+        assert!((Driver::preset("dm542").unwrap().max_rate(1) - 200_000.0).abs() < 1e-6);
+        assert_eq!(Driver::preset("l298"), None);
+    }
+
+    #[test]
+    fn the_first_entry_too_short_is_named_with_the_rate_the_driver_takes() {
+        // DRV8825 on a 10 MHz timer: 3.8 µs a step, 38 ticks.
+        let drv = Driver::preset("drv8825").unwrap();
+        let timer = Timer::new(10_000_000);
+        assert_eq!(drv.check(&timer, &[100, 50, 38]), Ok(()));
+        let e = drv.check(&timer, &[100, 50, 37, 30]).unwrap_err();
+        assert_eq!((e.index, e.ticks, e.shortest), (2, 37, 38));
+        assert_eq!(
+            e.message("`driver = \"drv8825\"`"),
+            "entry 2 is 37 ticks, 270270 steps/s: the driver's timing (`driver = \"drv8825\"`) \
+             takes at least 38 ticks a step, at most 263157 steps/s; lower `fmax`, or choose a \
+             faster driver"
+        );
+    }
+
+    #[test]
+    fn with_two_ticks_a_step_each_entry_holds_the_longer_of_pulse_and_space() {
+        // 2.5 µs high at 1 MHz: 3 ticks an entry, 6 µs a step.
+        let dm542 = Driver::preset("dm542").unwrap();
+        let timer = Timer {
+            ticks_per_step: 2,
+            ..Timer::new(1_000_000)
+        };
+        assert_eq!(dm542.check(&timer, &[3]), Ok(()));
+        assert_eq!(dm542.check(&timer, &[2]).unwrap_err().shortest, 3);
+    }
+}
