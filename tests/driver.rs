@@ -62,3 +62,32 @@ fn the_shortest_step_a_driver_takes_is_exact_to_the_tick() {
         "{e}"
     );
 }
+
+/// A profile's driver times, in ticks of its timer rounded up, are
+/// constants of its module and `#define`s of the C header: a DRV8825 at
+/// 10 MHz takes 19 ticks high, 19 low and DIR 7 ticks (650 ns) ahead.
+#[test]
+fn the_driver_times_are_emitted_in_ticks() {
+    use profile_codegen::profiles::Profiles;
+    let profiles = Profiles::parse(
+        "profiles.toml",
+        "[profiles.ramp]\ncurve = \"linear\"\nfmin = 500\nfmax = \"20kHz\"\naccel = 100_000\n\
+         timer_hz = \"10MHz\"\ndriver = \"drv8825\"\n",
+    )
+    .unwrap();
+    let rust = profiles.rust_source();
+    for constant in [
+        "STEP_PULSE_TICKS: u32 = 19",
+        "STEP_SPACE_TICKS: u32 = 19",
+        "DIR_SETUP_TICKS: u32 = 7",
+    ] {
+        assert!(rust.contains(constant), "{constant} in\n{rust}");
+    }
+    let header = profiles.c_header();
+    for define in [
+        "#define RAMP_STEP_PULSE_TICKS 19",
+        "#define RAMP_DIR_SETUP_TICKS 7",
+    ] {
+        assert!(header.contains(define), "{define} in\n{header}");
+    }
+}

@@ -119,6 +119,12 @@ impl Driver {
         1.0 / self.shortest_step(ticks_per_step)
     }
 
+    /// `seconds` in ticks of `timer` (its tick rate, not its steps),
+    /// rounded up: a hair under a whole tick counts as it.
+    pub fn ticks(&self, seconds: f64, timer: &Timer) -> u32 {
+        libm::ceil(seconds * timer.timer_hz as f64 * (1.0 - 1e-12)) as u32
+    }
+
     /// Checks every entry of `periods` (ticks of `timer`) against the
     /// driver: the first one shorter than the driver takes, or `Ok`.
     pub fn check(&self, timer: &Timer, periods: &[u32]) -> Result<(), DriverError> {

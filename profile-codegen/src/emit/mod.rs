@@ -15,6 +15,7 @@ use std::string::{String, ToString};
 use std::vec;
 use std::vec::Vec;
 
+use crate::driver::Driver;
 use crate::motor::{Motor, TorqueFigures};
 use crate::numbers::Fixed;
 use crate::pipeline::Compiled;
@@ -39,6 +40,10 @@ pub struct Profile {
     /// ([`Motor::check_with`](crate::motor::Motor::check_with),
     /// [`simulate::run`](crate::simulate::run)).
     pub motor: Option<Motor>,
+    /// The step driver it plays into, when it names one: its times, in
+    /// the table's ticks, are constants of the module and `#define`s of
+    /// the C header.
+    pub driver: Option<Driver>,
 }
 
 impl Profile {
@@ -49,6 +54,7 @@ impl Profile {
             table: compiled.table,
             torque: compiled.torque,
             motor: compiled.motor,
+            driver: compiled.driver,
         }
     }
 }
@@ -143,7 +149,33 @@ pub(crate) fn constants(profile: &Profile) -> Vec<Constant> {
     if let Some(t) = &profile.torque {
         c.extend(torque_constants(t));
     }
+    if let Some(d) = &profile.driver {
+        c.extend(driver_constants(d, &spec.timer));
+    }
     c
+}
+
+/// The step driver's times in ticks of the table's timer, rounded up.
+fn driver_constants(d: &Driver, timer: &profile_core::Timer) -> [Constant; 3] {
+    let ticks = |s: f64| Number::U32(d.ticks(s, timer));
+    [
+        Constant {
+            name: "STEP_PULSE_TICKS",
+            value: ticks(d.step_pulse),
+            doc: "The driver's shortest STEP high time, in ticks (rounded up).",
+        },
+        Constant {
+            name: "STEP_SPACE_TICKS",
+            value: ticks(d.step_space),
+            doc: "The driver's shortest STEP low time, in ticks (rounded up).",
+        },
+        Constant {
+            name: "DIR_SETUP_TICKS",
+            value: ticks(d.dir_setup),
+            doc: "Ticks (rounded up) from a change of DIR to the step edge that takes it, at \
+                  least: set the direction pin that long before a move's first step.",
+        },
+    ]
 }
 
 /// Where a motor has the least torque to spare.

@@ -433,15 +433,12 @@ pub(crate) fn driver<L: Clone>(c: &mut Collector<'_, L>) -> Option<Driver> {
             continue;
         };
         if !(time > 0.0 && time < 1.0) {
-            let (i, _) = c.find(key)?;
-            c.at_arg(
-                i,
-                false,
-                format!(
-                    "`{key}` must be a time above 0 and below 1 s (got {})",
-                    Num(time)
-                ),
+            let (i, arg) = c.find(key)?;
+            let message = format!(
+                "`{key}` must be a time above 0 and below 1 s (got `{}`)",
+                arg.value
             );
+            c.at_arg(i, false, message);
             continue;
         }
         if let Some(d) = &mut driver {
