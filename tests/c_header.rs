@@ -167,6 +167,18 @@ fn expected(profiles: &Profiles) -> BTreeMap<String, BTreeMap<String, Figure>> {
             m.insert("TORQUE_MARGIN_NM".into(), float(t.min_margin_nm));
             m.insert("TORQUE_MARGIN_STEP".into(), int(u64::from(t.step)));
         }
+        // A profile that names a driver: its times in ticks, rounded up,
+        // in whole nanoseconds and integers here.
+        if let Some(d) = &p.driver {
+            let hz = u64::from(p.table.spec().timer.timer_hz);
+            let ticks = |seconds: f64| {
+                let ns = (seconds * 1e9).round() as u64;
+                (ns * hz).div_ceil(1_000_000_000)
+            };
+            m.insert("STEP_PULSE_TICKS".into(), int(ticks(d.step_pulse)));
+            m.insert("STEP_SPACE_TICKS".into(), int(ticks(d.step_space)));
+            m.insert("DIR_SETUP_TICKS".into(), int(ticks(d.dir_setup)));
+        }
         all.insert(p.name.clone(), m);
     }
     all

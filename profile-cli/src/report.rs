@@ -24,7 +24,50 @@ pub fn text(path: &str, profiles: &Profiles) -> Result<String, Error> {
     print_table(&mut out, profiles.profiles())?;
     print_accuracy(&mut out, profiles.profiles())?;
     print_motors(&mut out, profiles.profiles());
+    print_drivers(&mut out, profiles.profiles());
     Ok(out)
+}
+
+/// For each profile that names a step driver: its times, the shortest step
+/// it takes against the table's shortest period, and the headroom.
+fn print_drivers(out: &mut String, profiles: &[Profile]) {
+    let bound: Vec<(&Profile, &profile_codegen::driver::Driver)> = profiles
+        .iter()
+        .filter_map(|p| Some((p, p.driver.as_ref()?)))
+        .collect();
+    if bound.is_empty() {
+        return;
+    }
+    let _ = writeln!(
+        out,
+        "\nStep drivers (profiles that name one; periods in ticks of the profile's timer):"
+    );
+    let _ = writeln!(
+        out,
+        "{:<21} {:>10} {:>10} {:>10} {:>14} {:>14} {:>9}",
+        "profile", "STEP high", "STEP low", "DIR setup", "driver's min", "table's min", "headroom"
+    );
+    for (p, d) in bound {
+        let spec = p.table.spec();
+        let shortest = d.shortest_entry(&spec.timer);
+        let table_min = p.table.step_periods().into_iter().min().unwrap_or(0);
+        let _ = writeln!(
+            out,
+            "{:<21} {:>10} {:>10} {:>10} {:>14} {:>14} {:>8.1}x",
+            p.name,
+            micros(d.step_pulse),
+            micros(d.step_space),
+            micros(d.dir_setup),
+            shortest,
+            table_min,
+            f64::from(table_min) / f64::from(shortest.max(1)),
+        );
+    }
+}
+
+/// A driver's time in µs, to the nanosecond.
+fn micros(seconds: f64) -> String {
+    format!("{:.3} µs", seconds * 1e6)
 }
 
 /// Every profile's parameters, with their units, defaults included.

@@ -125,14 +125,19 @@ impl Driver {
         libm::ceil(seconds * timer.timer_hz as f64 * (1.0 - 1e-12)) as u32
     }
 
+    /// The shortest table entry the driver takes, in ticks of `timer`: a
+    /// hair under a whole tick counts as it (0.9999999 of a tick is a
+    /// tick).
+    pub fn shortest_entry(&self, timer: &Timer) -> u32 {
+        let per_entry = self.shortest_step(timer.ticks_per_step) / f64::from(timer.ticks_per_step);
+        self.ticks(per_entry, timer)
+    }
+
     /// Checks every entry of `periods` (ticks of `timer`) against the
     /// driver: the first one shorter than the driver takes, or `Ok`.
     pub fn check(&self, timer: &Timer, periods: &[u32]) -> Result<(), DriverError> {
         let tick = f64::from(timer.ticks_per_step) / timer.timer_hz as f64;
-        // The shortest entry the driver takes, in ticks: a hair under the
-        // exact quotient counts as it (0.9999999 of a tick is a tick).
-        let needed = self.shortest_step(timer.ticks_per_step) / tick;
-        let shortest = libm::ceil(needed * (1.0 - 1e-12)) as u32;
+        let shortest = self.shortest_entry(timer);
         match periods.iter().position(|&p| p < shortest) {
             None => Ok(()),
             Some(index) => {
