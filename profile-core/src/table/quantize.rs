@@ -435,3 +435,31 @@ impl Quantizer {
         self.figures
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `push` closes a window by `ticks² |accel| < 40 f scale`, without the
+    /// square root of `needed`: the two rules must close the same windows.
+    #[test]
+    fn push_closes_a_window_where_needed_says() {
+        let scale = 10_000_000.0;
+        for (f, accel) in [
+            (500.0, 20_000.0),
+            (64_000.0, 3e6),
+            (1000.0, 0.0),
+            (2e5, -4e4),
+        ] {
+            for longest in [50.0, 1e9] {
+                let needed = AccelWindows::new(longest).needed(f, accel, scale);
+                for ticks in [1.0, 7.0, 100.0, 1e3, 1e4, 1e5, 1e6] {
+                    let mut w = AccelWindows::new(longest);
+                    w.push(ticks, scale, f, accel);
+                    let closed = w.open_ticks() == 0.0;
+                    assert_eq!(closed, ticks >= needed, "{f} {accel} {longest} {ticks}");
+                }
+            }
+        }
+    }
+}
