@@ -3,6 +3,7 @@
 //! solver). Nothing here knows a curve.
 
 pub(crate) mod error;
+pub(crate) mod expf;
 pub(crate) mod key;
 pub(crate) mod math;
 mod messages;

@@ -61,8 +61,39 @@ impl Modes {
 /// rounded one.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct IndexEntry {
-    pub(crate) exact: f64,
+    pub(crate) exact: Unrounded,
     pub(crate) rounded: Option<u64>,
+}
+
+/// An entry's unrounded length in ticks, or what it is computed from where
+/// the curve rounds by itself (the division costs thousands of
+/// instructions where `f64` is software, and only the figures need it).
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum Unrounded {
+    Ticks(f64),
+    /// `scale / freq`.
+    Over {
+        scale: f64,
+        freq: f32,
+    },
+}
+
+impl IndexEntry {
+    /// An entry the quantizer rounds, `ticks` long.
+    pub(crate) fn exact(ticks: f64) -> Self {
+        IndexEntry {
+            exact: Unrounded::Ticks(ticks),
+            rounded: None,
+        }
+    }
+
+    /// The unrounded length in ticks.
+    pub(crate) fn ticks(&self) -> f64 {
+        match self.exact {
+            Unrounded::Ticks(ticks) => ticks,
+            Unrounded::Over { scale, freq } => scale / freq as f64,
+        }
+    }
 }
 
 /// What every curve provides: the contract of its module.

@@ -2,7 +2,7 @@
 //! the index, and in the article's integer arithmetic.
 
 use super::check::{len, positive, range};
-use super::kind::{CurveKind, IndexEntry, Length, Modes};
+use super::kind::{CurveKind, IndexEntry, Length, Modes, Unrounded};
 use crate::base::error::Error;
 use crate::base::key::Key;
 use crate::base::modes::{Arithmetic, Discretization, Rounding};
@@ -318,16 +318,13 @@ impl CurveKind for Linear {
             let int = IntegerLinear::new(self, modes.len, t.ticks_per_step, t.timer_hz)?;
             for k in 0..modes.len {
                 sink(IndexEntry {
-                    exact: scale / int.freq(k) as f64,
+                    exact: Unrounded::Ticks(scale / int.freq(k) as f64),
                     rounded: Some(int.reload(k)),
                 })?;
             }
         } else {
             for k in 0..modes.len {
-                sink(IndexEntry {
-                    exact: scale / self.freq_at_index(k),
-                    rounded: None,
-                })?;
+                sink(IndexEntry::exact(scale / self.freq_at_index(k)))?;
             }
         }
         Ok(())

@@ -1,11 +1,12 @@
 //! The sigmoid S-curve of the S-curve articles, over the step index and over time.
 
 use super::check::{len, positive, range};
-use super::kind::{CurveKind, IndexEntry, Length, Modes};
+use super::kind::{CurveKind, IndexEntry, Length, Modes, Unrounded};
 use crate::base::error::Error;
+use crate::base::expf::{WholeScale, exp_f32, reciprocal_of_one_plus};
 use crate::base::key::Key;
 use crate::base::math::{SoftplusRise, logistic};
-use crate::base::modes::{Arithmetic, Discretization};
+use crate::base::modes::{Arithmetic, Discretization, Rounding};
 use crate::base::solve::TimeCurve;
 
 impl Key {
@@ -49,23 +50,47 @@ impl Sigmoid {
     /// does in C: single precision, a correctly rounded `expf`, and a
     /// double-precision `1.0 / ...`.
     pub fn freq_at_index_f32(&self, i: u32) -> f32 {
-        let len = self.len as f32;
-        let flexible = self.flexible as f32;
-        let fmin = self.fmin as f32;
-        let delt = self.fmax as f32 - fmin;
-        let melo = flexible * (i as f32 - len / 2.0) / (len / 2.0);
-        // C's `expf` is (nearly always) correctly rounded; `libm::expf` is off
-        // by one ulp for about 1% of inputs, which can flip a truncated
-        // period. `exp` in double precision rounded to float is correctly
-        // rounded but for rare double roundings, and identical on every target.
-        let e = libm::exp(-melo as f64) as f32;
-        let deno = (1.0f64 / (1.0f32 + e) as f64) as f32;
-        delt * deno + fmin
+        SingleSigmoid::new(self).at(i)
     }
 
     /// Ramp duration in time: `len / (fmin + (fmax - fmin) / 2)`, in s.
     pub fn duration(&self) -> f64 {
         self.len as f64 / (self.fmin + (self.fmax - self.fmin) / 2.0)
+    }
+}
+
+/// The sigmoid in the article's single precision, its parameters converted
+/// once (a conversion from `f64` is software on most targets).
+struct SingleSigmoid {
+    half: f32,
+    flexible: f32,
+    fmin: f32,
+    delt: f32,
+}
+
+impl SingleSigmoid {
+    fn new(s: &Sigmoid) -> Self {
+        let fmin = s.fmin as f32;
+        SingleSigmoid {
+            half: s.len as f32 / 2.0,
+            flexible: s.flexible as f32,
+            fmin,
+            delt: s.fmax as f32 - fmin,
+        }
+    }
+
+    /// The article's `fre[i]`.
+    fn at(&self, i: u32) -> f32 {
+        let melo = self.flexible * (i as f32 - self.half) / self.half;
+        // C's `expf` is (nearly always) correctly rounded; `libm::expf` is off
+        // by one ulp for about 1% of inputs, which can flip a truncated
+        // period. `exp_f32` is correctly rounded but for rare double
+        // roundings of `libm::exp`, whose bits it gives, and identical on
+        // every target; and `1.0 / (1 + e)` in `double` rounded to `float`
+        // is the `float` division.
+        let e = exp_f32(-melo);
+        let deno = reciprocal_of_one_plus(e);
+        self.delt * deno + self.fmin
     }
 }
 
@@ -203,15 +228,25 @@ impl CurveKind for Sigmoid {
         sink: &mut dyn FnMut(IndexEntry) -> Result<(), Error>,
     ) -> Result<(), Error> {
         let scale = modes.scale();
-        for k in 0..self.len {
-            let exact = match modes.arithmetic {
-                Arithmetic::F32 => scale / self.freq_at_index_f32(k) as f64,
-                _ => scale / self.freq_at_index(k),
+        if modes.arithmetic == Arithmetic::F32 {
+            let single = SingleSigmoid::new(self);
+            // The article's truncation, by integer division where the
+            // timer's rate is whole.
+            let whole = match modes.rounding {
+                Rounding::Truncate => WholeScale::new(scale),
+                _ => None,
             };
-            sink(IndexEntry {
-                exact,
-                rounded: None,
-            })?;
+            for k in 0..self.len {
+                let freq = single.at(k);
+                sink(IndexEntry {
+                    exact: Unrounded::Over { scale, freq },
+                    rounded: whole.and_then(|w| w.truncated_period(freq)),
+                })?;
+            }
+            return Ok(());
+        }
+        for k in 0..self.len {
+            sink(IndexEntry::exact(scale / self.freq_at_index(k)))?;
         }
         Ok(())
     }

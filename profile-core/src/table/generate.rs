@@ -63,7 +63,7 @@ impl CheckedSpec {
             // The f32 and integer modes keep their own arithmetic.
             return spec.curve.index_entries(&modes, &mut |entry| {
                 k += 1;
-                t += entry.exact / scale;
+                t += entry.ticks() / scale;
                 sink(k, t);
                 Ok(())
             });
@@ -92,7 +92,7 @@ impl CheckedSpec {
         &self,
         sink: F,
     ) -> Result<Figures, Error> {
-        self.quantize(Quantizer::new(self.spec()), sink)
+        self.quantize(Quantizer::new(self.spec()), true, sink)
     }
 
     /// Computes the table into `out`, as [`generate`](Self::generate)
@@ -103,18 +103,26 @@ impl CheckedSpec {
     pub fn generate_periods<W: TableWord>(&self, out: &mut [W]) -> Result<(), Error> {
         self.check_buffer::<W>(out.len())?;
         let spec = self.spec();
-        self.quantize(Quantizer::new(spec).without_figures(), |index, ticks, _| {
-            if let Some(slot) = out.get_mut(index as usize) {
-                *slot = W::from_ticks(spec.stored(ticks));
-            }
-        })?;
+        self.quantize(
+            Quantizer::new(spec).without_figures(),
+            false,
+            |index, ticks, _| {
+                if let Some(slot) = out.get_mut(index as usize) {
+                    *slot = W::from_ticks(spec.stored(ticks));
+                }
+            },
+        )?;
         Ok(())
     }
 
-    /// The table through `quantizer`, entry by entry to `sink`.
+    /// The table through `quantizer`, entry by entry to `sink` with the time
+    /// of the entry's closing edge; over the index that time is a division
+    /// an entry, summed only where `edges` asks for it (`sink` gets 0
+    /// otherwise).
     fn quantize<F: FnMut(u32, u32, f64)>(
         &self,
         mut quantizer: Quantizer,
+        edges: bool,
         mut sink: F,
     ) -> Result<Figures, Error> {
         let spec = self.spec();
@@ -126,7 +134,7 @@ impl CheckedSpec {
                 // ramp's duration: one pass over the entries.
                 let mut duration = 0.0;
                 spec.curve.index_entries(&modes, &mut |entry| {
-                    duration += entry.exact;
+                    duration += entry.ticks();
                     Ok(())
                 })?;
                 quantizer.set_duration(duration);
@@ -134,10 +142,12 @@ impl CheckedSpec {
             let (mut k, mut t) = (0, 0.0);
             spec.curve.index_entries(&modes, &mut |entry| {
                 let ticks = match entry.rounded {
-                    Some(ticks) => quantizer.push_rounded(k, ticks, entry.exact)?,
-                    None => quantizer.push(k, entry.exact, None)?,
+                    Some(ticks) => quantizer.push_rounded(k, ticks, || entry.ticks())?,
+                    None => quantizer.push(k, entry.ticks(), None)?,
                 };
-                t += entry.exact / scale;
+                if edges {
+                    t += entry.ticks() / scale;
+                }
                 sink(k, ticks, t);
                 k += 1;
                 Ok(())

@@ -348,18 +348,26 @@ impl Quantizer {
         Ok(())
     }
 
-    /// Records entry `index` already rounded by the curve's own arithmetic.
+    /// Records entry `index` already rounded by the curve's own arithmetic;
+    /// `entry` gives its unrounded length, asked for only by the figures
+    /// and the errors.
     pub(crate) fn push_rounded(
         &mut self,
         index: u32,
         ticks: u64,
-        entry: f64,
+        entry: impl Fn() -> f64,
     ) -> Result<u32, Error> {
-        self.exact_edge += entry;
-        let ticks = self.check(index, ticks as f64, entry)?;
+        let ticks = match u32::try_from(ticks) {
+            Ok(t) if t >= 1 && t <= self.timer.word.max() => t,
+            _ => self.check(index, ticks as f64, entry())?,
+        };
         self.stored(index, ticks, "entry")?;
         self.emitted += ticks as u64;
-        self.record(index, ticks, entry);
+        if self.keep {
+            let entry = entry();
+            self.exact_edge += entry;
+            self.record(index, ticks, entry);
+        }
         Ok(ticks)
     }
 
