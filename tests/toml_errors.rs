@@ -91,6 +91,11 @@ const REQUIRED: &[&str] = &[
     "driver_keys_too_fast",
     "driver_unknown",
     "driver_time_zero",
+    // The step interrupt's budget.
+    "cpu_too_fast",
+    "cpu_unknown_core",
+    "cpu_without_clock",
+    "cpu_load_above_one",
 ];
 
 /// The file named in messages, as `include_profiles!("profiles.toml")` names it.

@@ -25,6 +25,7 @@ pub fn text(path: &str, profiles: &Profiles) -> Result<String, Error> {
     print_accuracy(&mut out, profiles.profiles())?;
     print_motors(&mut out, profiles.profiles());
     print_drivers(&mut out, profiles.profiles());
+    print_cpu(&mut out, profiles.profiles());
     Ok(out)
 }
 
@@ -61,6 +62,56 @@ fn print_drivers(out: &mut String, profiles: &[Profile]) {
             shortest,
             table_min,
             f64::from(table_min) / f64::from(shortest.max(1)),
+        );
+    }
+}
+
+/// For each profile that names its core and clock: the step interrupt's
+/// cycles and the CPU's load at the table's fastest entry.
+fn print_cpu(out: &mut String, profiles: &[Profile]) {
+    let bound: Vec<(&Profile, &profile_codegen::cpu::Cpu)> = profiles
+        .iter()
+        .filter_map(|p| Some((p, p.cpu.as_ref()?)))
+        .collect();
+    if bound.is_empty() {
+        return;
+    }
+    let _ = writeln!(
+        out,
+        "\nStep interrupt (profiles that name their core; cycles a step, mean and largest, \
+         from the measured figures; the load at the fastest entry):"
+    );
+    let _ = writeln!(
+        out,
+        "{:<21} {:>11} {:>9} {:>5} {:>7} {:>8} {:>10} {:>9} {:>16}",
+        "profile",
+        "core",
+        "cpu",
+        "axes",
+        "cycles",
+        "largest",
+        "min ticks",
+        "load",
+        "serves, steps/s"
+    );
+    for (p, cpu) in bound {
+        let spec = p.table.spec();
+        let layout = profile_codegen::cpu::Layout::of(&p.table);
+        let cost = cpu.cost(layout);
+        let table_min = p.table.step_periods().into_iter().min().unwrap_or(0);
+        let per_step = f64::from(spec.timer.ticks_per_step);
+        let _ = writeln!(
+            out,
+            "{:<21} {:>11} {:>5} MHz {:>5} {:>7.1} {:>8.0} {:>10} {:>8.1}% {:>16.0}",
+            p.name,
+            cpu.core.name(),
+            cpu.cpu_hz / 1e6,
+            cpu.axes,
+            cost.mean,
+            cost.largest,
+            table_min,
+            100.0 * cpu.load(&spec.timer, layout, table_min),
+            (cpu.max_rate(layout) / per_step).floor(),
         );
     }
 }

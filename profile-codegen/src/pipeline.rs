@@ -11,6 +11,7 @@ use std::format;
 use std::string::{String, ToString};
 use std::vec::Vec;
 
+use crate::cpu::{Cpu, Layout};
 use crate::driver::Driver;
 use crate::motor::{Motor, TorqueFigures};
 use crate::schema::{self, Arg, Diagnostic, TableLayout, locate, locate_motor};
@@ -33,6 +34,9 @@ pub struct Compiled {
     /// The step driver it plays into, when described: every period is
     /// long enough for it.
     pub driver: Option<Driver>,
+    /// The step interrupt's core and clock, when described: the interrupt
+    /// serves every period.
+    pub cpu: Option<Cpu>,
 }
 
 /// Entries a set of tables (one profiles file) may still generate.
@@ -132,13 +136,44 @@ pub fn compile<L: Clone>(
             .check(&spec.spec().timer, &table.step_periods())
             .map_err(|e| std::vec![driver_at(&e, args, whole, &prefix)])?;
     }
+    if let Some(cpu) = &request.cpu {
+        cpu.check(
+            &spec.spec().timer,
+            Layout::of(&table),
+            &table.step_periods(),
+        )
+        .map_err(|e| std::vec![cpu_at(&e, cpu, args, whole, &prefix)])?;
+    }
     Ok(Compiled {
         spec,
         table,
         motor: request.motor,
         torque,
         driver: request.driver,
+        cpu: request.cpu,
     })
+}
+
+/// A table too fast for its step interrupt, at `fmax`, or at the whole
+/// argument list without one.
+fn cpu_at<L: Clone>(
+    e: &crate::cpu::CpuError,
+    cpu: &Cpu,
+    args: &[Arg<L>],
+    whole: &L,
+    prefix: &str,
+) -> Diagnostic<L> {
+    let fmax = args.iter().find(|a| a.key == Key::FMAX.name());
+    let clock = if cpu.cpu_hz >= 1e6 {
+        format!("{} MHz", crate::numbers::Num(cpu.cpu_hz / 1e6))
+    } else {
+        format!("{} kHz", crate::numbers::Num(cpu.cpu_hz / 1e3))
+    };
+    let what = format!("`core = \"{}\"` at {clock}", cpu.core.name());
+    Diagnostic {
+        loc: fmax.map_or(whole, |a| &a.value_loc).clone(),
+        message: format!("{prefix}{}", e.message(&what, cpu)),
+    }
 }
 
 /// A table too fast for its driver, at `fmax` (what to lower), or at the

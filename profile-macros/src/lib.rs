@@ -48,6 +48,10 @@ mod include;
 /// | `motor` | in a profiles file, the `[motors.NAME]` table of the motor the profile drives; the macro takes the motor's keys inline (below) | none |
 /// | `driver` | the step driver, by name: `a4988`, `drv8825`, `tmc2209`, `dm542`; every period must last its `step_pulse` + `step_space` (the longer of the two with `ticks_per_step = 2`), or the table is an error at `fmax` | none |
 /// | `step_pulse`, `step_space`, `dir_setup` | the driver's times, s (`ns`, `us`, `ms`): STEP high, STEP low, DIR before the step edge; each replaces the preset's | the preset's, else 0 |
+/// | `core` | the core whose step interrupt plays the table: `"cortex-m0"`, `"cortex-m3"`, `"cortex-m4f"`, `"avr"` (the C player); with `cpu_hz`, every period must leave the interrupt's measured cost within `cpu_load` of the CPU and its largest step within the period, or the table is an error at `fmax` | none |
+/// | `cpu_hz` | the core's clock, Hz (`kHz`, `MHz`) | none |
+/// | `cpu_load` | the largest share of the CPU the step interrupt may take at any entry, above 0 and at most 1 | 0.5 |
+/// | `axes` | the axes one step interrupt steps (`Axes`: each follower adds its measured cost), 1 to 16; 1 on the AVR | 1 |
 ///
 /// Each curve's own keys:
 ///

@@ -44,6 +44,9 @@ pub struct Profile {
     /// the table's ticks, are constants of the module and `#define`s of
     /// the C header.
     pub driver: Option<Driver>,
+    /// The step interrupt's core and clock, when it names them: the report
+    /// prints the CPU's load at the top speed.
+    pub cpu: Option<crate::cpu::Cpu>,
 }
 
 impl Profile {
@@ -55,6 +58,7 @@ impl Profile {
             torque: compiled.torque,
             motor: compiled.motor,
             driver: compiled.driver,
+            cpu: compiled.cpu,
         }
     }
 }

@@ -25,7 +25,14 @@ pub(crate) const COMMON: &[Key] = &[
     Key::STEP_PULSE,
     Key::STEP_SPACE,
     Key::DIR_SETUP,
+    Key::CORE,
+    Key::CPU_HZ,
+    Key::CPU_LOAD,
+    Key::AXES,
 ];
+
+/// The keys of the step interrupt's budget (`core` and `cpu_hz` name it).
+pub(crate) const BUDGET: [Key; 4] = [Key::CORE, Key::CPU_HZ, Key::CPU_LOAD, Key::AXES];
 
 /// The keys of the step driver's timing (`driver` names a preset of them).
 pub(crate) const DRIVER_TIMING: [Key; 3] = [Key::STEP_PULSE, Key::STEP_SPACE, Key::DIR_SETUP];

@@ -151,7 +151,8 @@ pub fn keys_for(curve: &str) -> Vec<Key> {
 }
 
 /// Keys to list in messages: a curve's and the common ones, not the
-/// motor's nor the driver's (suggestions still find them).
+/// motor's, the driver's nor the step interrupt's (suggestions still find
+/// them).
 pub(crate) fn listed(keys: &[Key]) -> impl Iterator<Item = &'static str> + '_ {
     keys.iter()
         .filter(|k| {
@@ -159,6 +160,7 @@ pub(crate) fn listed(keys: &[Key]) -> impl Iterator<Item = &'static str> + '_ {
                 && **k != Key::MOTOR
                 && **k != Key::DRIVER
                 && !crate::schema::keys::DRIVER_TIMING.contains(k)
+                && !crate::schema::keys::BUDGET.contains(k)
         })
         .map(|k| k.name())
 }
@@ -201,6 +203,7 @@ pub fn unit(key: Key) -> &'static str {
         Key::RATED_CURRENT | Key::DRIVER_CURRENT => "A",
         Key::SUPPLY_VOLTAGE => "V",
         Key::STEP_PULSE | Key::STEP_SPACE | Key::DIR_SETUP => "s",
+        Key::CPU_HZ => "Hz",
         _ => CURVE_SCHEMAS
             .iter()
             .flat_map(|r| r.units)

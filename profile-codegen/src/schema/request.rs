@@ -6,8 +6,9 @@ use std::string::ToString;
 use std::vec::Vec;
 
 use super::suggest::{Hint, did_you_mean, suggest};
-use super::values::{Collector, driver, motor};
+use super::values::{Collector, cpu, driver, motor};
 use super::{Arg, Diagnostic, TableLayout, Value, curve_names, keys_for, listed, quoted};
+use crate::cpu::Cpu;
 use crate::driver::Driver;
 use crate::motor::{Motor, MotorError};
 use crate::schema::curves::CurveSchema;
@@ -31,6 +32,8 @@ pub struct Request {
     pub motor: Option<Motor>,
     /// The step driver it plays into, when described.
     pub driver: Option<Driver>,
+    /// The step interrupt's core and clock, when described.
+    pub cpu: Option<Cpu>,
 }
 
 /// Checks the keys, kinds and names of `args` and says what they ask for.
@@ -91,6 +94,7 @@ pub fn read<L: Clone>(
     let mut curve = (schema.read)(&mut c);
     let motor = motor(&mut c, &suggested);
     let driver = driver(&mut c);
+    let cpu = cpu(&mut c);
     if let (Some(Curve::TorqueLimited(ramp)), Some(timer)) = (&mut curve, timer) {
         limited_by(&mut c, ramp, motor.as_ref(), timer);
     }
@@ -112,6 +116,7 @@ pub fn read<L: Clone>(
         },
         motor,
         driver,
+        cpu,
     })
 }
 

@@ -7,13 +7,14 @@ use std::vec::Vec;
 
 use super::suggest::{Hint, did_you_mean};
 use super::{Arg, Diagnostic, Value, quoted, unit, units};
+use crate::cpu::{CORES, Core, Cpu, MAX_AXES};
 use crate::driver::{Driver, PRESETS};
 use crate::motor::{
     CurrentSetting, Drive, MAX_CURVE_POINTS, MAX_MICROSTEPS, Motor, TorqueCurve, Windings,
 };
 use crate::numbers::Num;
 use crate::schema::curves::Reader;
-use crate::schema::keys::DRIVER_TIMING;
+use crate::schema::keys::{BUDGET, DRIVER_TIMING};
 use profile_core::Error;
 use profile_core::Key;
 use profile_core::MAX_LEN;
@@ -450,4 +451,86 @@ pub(crate) fn driver<L: Clone>(c: &mut Collector<'_, L>) -> Option<Driver> {
         }
     }
     driver.filter(|_| c.diagnostics.len() == errors)
+}
+
+/// The step interrupt's budget: the core (`core`) and its clock (`cpu_hz`),
+/// both needed, with the axes it steps (`axes`, 1) and the share of the CPU
+/// it may take (`cpu_load`, 0.5). `None` when none of the four is given, or
+/// one is in error (reported).
+pub(crate) fn cpu<L: Clone>(c: &mut Collector<'_, L>) -> Option<Cpu> {
+    if !BUDGET.iter().any(|k| c.find(*k).is_some()) {
+        return None;
+    }
+    let errors = c.diagnostics.len();
+    let core = c.name(Key::CORE, &CORES);
+    let cpu_hz = c.float(Key::CPU_HZ);
+    if let Some(hz) = cpu_hz {
+        if !(1e3..=1e10).contains(&hz) {
+            let (i, _) = c.find(Key::CPU_HZ)?;
+            c.at_arg(
+                i,
+                false,
+                format!("`cpu_hz` must be from 1 kHz to 10 GHz (got {} Hz)", Num(hz)),
+            );
+        }
+    }
+    let axes = c.ranged(Key::AXES, "an integer number of axes", |v| {
+        u32::try_from(v)
+            .ok()
+            .filter(|a| (1..=MAX_AXES).contains(a))
+            .ok_or_else(|| format!("`axes` must be from 1 to {MAX_AXES} (got {v})"))
+    });
+    let load = c.float(Key::CPU_LOAD);
+    if let Some(load) = load {
+        if !(load > 0.0 && load <= 1.0) {
+            let (i, _) = c.find(Key::CPU_LOAD)?;
+            c.at_arg(
+                i,
+                false,
+                format!(
+                    "`cpu_load` must be a share of the CPU above 0 and at most 1 (got {})",
+                    Num(load)
+                ),
+            );
+        }
+    }
+    if c.diagnostics.len() != errors {
+        return None;
+    }
+    let (core, cpu_hz) = match (core, cpu_hz) {
+        (Some(core), Some(hz)) => (core, hz),
+        (core, _) => {
+            let (given, missing) = match core {
+                Some(_) => (Key::CORE, "`cpu_hz`, the core's clock"),
+                None => {
+                    let given = BUDGET.into_iter().find(|k| c.find(*k).is_some())?;
+                    (
+                        given,
+                        "`core` (one of \"cortex-m0\", \"cortex-m3\", \"cortex-m4f\", \"avr\") and `cpu_hz`",
+                    )
+                }
+            };
+            let (i, _) = c.find(given)?;
+            c.at_arg(
+                i,
+                true,
+                format!("`{given}` checks the step interrupt's budget, which needs {missing}"),
+            );
+            return None;
+        }
+    };
+    if core == Core::Avr && axes.is_some_and(|a| a > 1) {
+        let (i, _) = c.find(Key::AXES)?;
+        c.at_arg(
+            i,
+            false,
+            "`core = \"avr\"` measures the C player, which steps one axis".to_string(),
+        );
+        return None;
+    }
+    Some(Cpu {
+        axes: axes.unwrap_or(1),
+        max_load: load.unwrap_or(0.5),
+        ..Cpu::new(core, cpu_hz)
+    })
 }

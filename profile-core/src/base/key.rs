@@ -103,6 +103,16 @@ impl Key {
     /// input to the next step edge, s.
     pub const DIR_SETUP: Key = Key("dir_setup");
 
+    /// `core`: the core whose step interrupt plays the table, by name.
+    pub const CORE: Key = Key("core");
+    /// `cpu_hz`: the core's clock, Hz.
+    pub const CPU_HZ: Key = Key("cpu_hz");
+    /// `cpu_load`: the largest share of the CPU the step interrupt may take
+    /// at the table's fastest entry, from 0 to 1.
+    pub const CPU_LOAD: Key = Key("cpu_load");
+    /// `axes`: the axes one step interrupt steps.
+    pub const AXES: Key = Key("axes");
+
     /// The key as written by users.
     pub const fn name(self) -> &'static str {
         self.0
