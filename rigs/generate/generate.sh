@@ -34,11 +34,12 @@ declare -A machine=([M0]="-cpu cortex-m0 -machine microbit" [M3]="-cpu cortex-m3
 # most[case,core]; a case without a bound is only checked to parse. Each is
 # 5 % above the figure measured, rounded up to a hundred: bounds against
 # regressions, not goals (docs/performance.md gives the figures beside the
-# article's C function, case 7, which has no bound).
+# article's C function, case 7, which has no bound); but for case 6p on
+# the M4F, held at the article's C (261), the goal its mode meets.
 declare -A most=(
     [1,M0]=55400 [1p,M0]=44400 [2,M0]=50700 [2p,M0]=39400 [3,M0]=42500 [3p,M0]=30700 [4,M0]=29900 [4p,M0]=18000 [5,M0]=18300 [5p,M0]=6900 [6,M0]=20600 [6p,M0]=2200 [8,M0]=42400
     [1,M3]=18900 [1p,M3]=15600 [2,M3]=16500 [2p,M3]=13100 [3,M3]=14200 [3p,M3]=10800 [4,M3]=9900 [4p,M3]=6400 [5,M3]=5700 [5p,M3]=2300 [6,M3]=6400 [6p,M3]=1000 [8,M3]=14700
-    [1,M4F]=19400 [1p,M4F]=16000 [2,M4F]=16800 [2p,M4F]=13400 [3,M4F]=14600 [3p,M4F]=11100 [4,M4F]=10200 [4p,M4F]=6600 [5,M4F]=5800 [5p,M4F]=2400 [6,M4F]=5200 [6p,M4F]=400 [8,M4F]=15100
+    [1,M4F]=19400 [1p,M4F]=16000 [2,M4F]=16800 [2p,M4F]=13400 [3,M4F]=14600 [3p,M4F]=11100 [4,M4F]=10200 [4p,M4F]=6600 [5,M4F]=5800 [5p,M4F]=2400 [6,M4F]=5100 [6p,M4F]=260 [8,M4F]=15100
 )
 
 status=0

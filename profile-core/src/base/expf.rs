@@ -67,10 +67,112 @@ const BELOW_TIE: u32 = (1 << 9) - 1;
 /// bound of a tie (one input in 2000), or the result is not a normal
 /// float; there the `f64` route decides.
 pub(crate) fn exp_f32(x: f32) -> f32 {
-    match exp_f32_fixed(x) {
+    // Where single precision is hardware, its route first; both routes
+    // give the `f64` route's bits wherever they decide.
+    let single = if cfg!(target_abi = "eabihf") {
+        exp_f32_single(x)
+    } else {
+        None
+    };
+    match single.or_else(|| exp_f32_fixed(x)) {
         Some(y) => y,
         None => libm::exp(x as f64) as f32,
     }
+}
+
+/// `32 / ln 2`, rounded to `f32`.
+const INV_LN2_32_F32: f32 = f32::from_bits(0x4238_aa3b);
+/// `1.5 · 2^23`: added to a float below `2^22` in magnitude, leaves the
+/// nearest integer in the low bits of the sum.
+const SHIFTER: f32 = 12_582_912.0;
+/// `ln 2 / 32` in two parts: the first of 12 significant bits (so that `k`
+/// times it, `|k| <= 4087`, is exact), the second the rest rounded.
+const LN2_32_HIGH: f32 = f32::from_bits(0x3cb1_7000);
+const LN2_32_LOW: f32 = f32::from_bits(0x3585_fdf4);
+
+/// `2^(j/32)` as the sum of two `f32` (the nearest, then the nearest to
+/// what remains), as bits.
+const EXP2_32_PAIRS: [(u32, u32); 32] = [
+    (0x3f800000, 0x00000000),
+    (0x3f82cd87, 0xb34ea7a9),
+    (0x3f85aac3, 0x334f9891),
+    (0x3f88980f, 0xb37eda4b),
+    (0x3f8b95c2, 0xb260aba1),
+    (0x3f8ea43a, 0xb3697465),
+    (0x3f91c3d3, 0x33675624),
+    (0x3f94f4f0, 0xb32e0212),
+    (0x3f9837f0, 0x33231b71),
+    (0x3f9b8d3a, 0xb30c5563),
+    (0x3f9ef532, 0x33412342),
+    (0x3fa27043, 0x30c3125a),
+    (0x3fa5fed7, 0xb32c9d5e),
+    (0x3fa9a15b, 0xb3162b08),
+    (0x3fad583f, 0xb22deaf6),
+    (0x3fb123f6, 0xb37c5aa8),
+    (0x3fb504f3, 0x32cfe77a),
+    (0x3fb8fbaf, 0x330ec5f7),
+    (0x3fbd08a4, 0xb3414fe8),
+    (0x3fc12c4d, 0xb2d6663e),
+    (0x3fc5672a, 0x320aa837),
+    (0x3fc9b9be, 0xb37323a2),
+    (0x3fce248c, 0x3228fc24),
+    (0x3fd2a81e, 0xb35c1daa),
+    (0x3fd744fd, 0xb2d4a58a),
+    (0x3fdbfbb8, 0xb3504a1c),
+    (0x3fe0ccdf, 0xb21eab59),
+    (0x3fe5b907, 0xb2441be6),
+    (0x3feac0c7, 0xb24116de),
+    (0x3fefe4ba, 0xb348464a),
+    (0x3ff5257d, 0x32292436),
+    (0x3ffa83b3, 0xb2923758),
+];
+
+/// `e^x` rounded to the nearest `f32` from single-precision arithmetic, for
+/// cores whose FPU computes it: `None` where it cannot prove the rounding
+/// (one input in 30, then [`exp_f32_fixed`] decides), outside `-87 ..=
+/// 88.5` and for NaN.
+///
+/// `x = k ln2/32 + r` (`k ln2/32`'s high part exact, so `r` is within
+/// `2^-29.4` of its value), `e^r - 1 = p = r + r^2 (1/2 + r/6 + r^2/24)`,
+/// then `e^x = 2^(k >> 5) (T + T p)` with `T = 2^((k & 31)/32)` a pair of
+/// floats. The sum `y = T_high + c`, `c = T_high p + T_low`, is the one
+/// rounding that matters: its error is computed exactly (`|T_high| >=
+/// |c|`), and `c` is within `2^-28.8` of the exact correction relative to
+/// the result (`r`'s error, `p`'s and `c`'s roundings, `r^5/120`), less
+/// than an eighth of half an ulp (`2^-25` of the result at least): where
+/// the rounding error lies within seven eighths of half an ulp, `y` is the
+/// exact value rounded. The tests check every input.
+pub(crate) fn exp_f32_single(x: f32) -> Option<f32> {
+    if !(-87.0..=88.5).contains(&x) {
+        return None;
+    }
+    if (x.to_bits() >> 23) & 0xff < 102 {
+        // |x| < 2^-25: as in `exp_f32_fixed`.
+        return Some(1.0);
+    }
+    let shifted = x * INV_LN2_32_F32 + SHIFTER;
+    let k = shifted.to_bits() as i32 - SHIFTER.to_bits() as i32;
+    let kf = shifted - SHIFTER;
+    let r = (x - kf * LN2_32_HIGH) - kf * LN2_32_LOW;
+    let p = r + r * r * (0.5 + r * (1.0 / 6.0 + r * (1.0 / 24.0)));
+    let (high, low) = EXP2_32_PAIRS[(k & 31) as usize];
+    let (high, low) = (f32::from_bits(high), f32::from_bits(low));
+    let c = high * p + low;
+    let y = high + c;
+    let error = (high - y) + c;
+    let bits = y.to_bits();
+    // Seven eighths of half an ulp of y (y is in [0.98, 2), a normal
+    // float): 1.75 times 2^-25 of y's power of two.
+    let bound = f32::from_bits(((bits & 0x7f80_0000) - (25 << 23)) | 0x60_0000);
+    if bits & 0x7f_ffff == 0 || error.abs() >= bound {
+        // At a power of two the ulp below is half the one above.
+        return None;
+    }
+    let exponent = ((bits >> 23) as i32) + (k >> 5);
+    if !(1..255).contains(&exponent) {
+        return None;
+    }
+    Some(f32::from_bits(bits.wrapping_add(((k >> 5) as u32) << 23)))
 }
 
 /// The fixed-point route of [`exp_f32`]: `None` where it cannot prove the
@@ -300,6 +402,48 @@ mod tests {
             undecided * 1000 < inputs,
             "{undecided} of {inputs} undecided"
         );
+    }
+
+    /// The single-precision route, on every input from -87 to 88.5: where
+    /// it decides, the bits of the `f64` route.
+    #[test]
+    fn the_single_precision_route_agrees_on_every_input() {
+        let (mut undecided, mut inputs) = (0u64, 0u64);
+        for (from, to) in [
+            (0u32, 88.5f32.to_bits()),
+            (1u32 << 31, (-87.0f32).to_bits()),
+        ] {
+            for bits in (from..=to).step_by(stride()) {
+                let x = f32::from_bits(bits);
+                inputs += 1;
+                match exp_f32_single(x) {
+                    Some(y) => {
+                        let want = libm::exp(x as f64) as f32;
+                        assert_eq!(y.to_bits(), want.to_bits(), "e^{x:e}");
+                    }
+                    None => undecided += 1,
+                }
+            }
+        }
+        // One in 25 undecided at most (the bound's margin against half an
+        // ulp, on either side of a tie).
+        assert!(undecided * 25 < inputs, "{undecided} of {inputs} undecided");
+    }
+
+    #[test]
+    fn the_pairs_are_two_to_the_thirty_seconds() {
+        for (j, &(high, low)) in EXP2_32_PAIRS.iter().enumerate() {
+            let (high, low) = (f32::from_bits(high), f32::from_bits(low));
+            // The fixed-point table, in units of 2^-63: within 2^-47.
+            let sum = high as f64 + low as f64;
+            let fixed = EXP2_32[j] as f64 / 9_223_372_036_854_775_808.0;
+            assert!((sum - fixed).abs() < 2f64.powi(-47), "{j}");
+            assert_eq!(high, (libm::exp2(j as f64 / 32.0)) as f32, "{j}");
+        }
+        assert_eq!(LN2_32_HIGH.to_bits() & 0xfff, 0);
+        let ln2_32 = core::f64::consts::LN_2 / 32.0;
+        assert!((LN2_32_HIGH as f64 + LN2_32_LOW as f64 - ln2_32).abs() < 1e-13);
+        assert!((INV_LN2_32_F32 as f64 - 1.0 / ln2_32).abs() < 4e-6);
     }
 
     #[test]
