@@ -91,6 +91,7 @@ const REQUIRED: &[&str] = &[
     "driver_keys_too_fast",
     "driver_unknown",
     "driver_time_zero",
+    "driver_dir_setup",
     // The step interrupt's budget.
     "cpu_too_fast",
     "cpu_unknown_core",

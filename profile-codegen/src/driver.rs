@@ -91,6 +91,12 @@ pub struct DriverError {
     pub shortest: u32,
     /// The fastest step rate the driver takes, in steps/s.
     pub max_rate: f64,
+    /// `Some((wait, setup))` where the entries are long enough for the
+    /// steps but not for a reversal: the players reverse through the
+    /// table's first entry, so the firmware sets DIR one step of it
+    /// (`wait` ticks) ahead of the step that takes it, and the driver
+    /// needs `setup` ticks (`dir_setup`).
+    pub dir_setup: Option<(u32, u32)>,
 }
 
 impl Driver {
@@ -134,23 +140,41 @@ impl Driver {
     }
 
     /// Checks every entry of `periods` (ticks of `timer`) against the
-    /// driver: the first one shorter than the driver takes, or `Ok`.
+    /// driver: the first one shorter than the driver takes, or `Ok`. Then
+    /// the first entry against `dir_setup`: a player reverses through rest,
+    /// at the first entry, and the firmware sets DIR for the next step
+    /// right after it pulses a step, so the step that takes a new
+    /// direction comes one step of the first entry (`ticks_per_step`
+    /// entries) after DIR changed.
     pub fn check(&self, timer: &Timer, periods: &[u32]) -> Result<(), DriverError> {
         let tick = f64::from(timer.ticks_per_step) / timer.timer_hz as f64;
         let shortest = self.shortest_entry(timer);
-        match periods.iter().position(|&p| p < shortest) {
-            None => Ok(()),
-            Some(index) => {
-                let ticks = periods[index];
-                Err(DriverError {
-                    index,
-                    ticks,
-                    rate: 1.0 / (f64::from(ticks) * tick),
-                    shortest,
-                    max_rate: 1.0 / (f64::from(shortest) * tick),
-                })
-            }
+        let error = |index: usize, dir_setup: Option<(u32, u32)>| {
+            let ticks = periods[index];
+            Err(DriverError {
+                index,
+                ticks,
+                rate: 1.0 / (f64::from(ticks) * tick),
+                shortest,
+                max_rate: 1.0 / (f64::from(shortest) * tick),
+                dir_setup,
+            })
+        };
+        if let Some(index) = periods.iter().position(|&p| p < shortest) {
+            return error(index, None);
         }
+        let setup = self.dir_setup_ticks(timer);
+        match periods.first() {
+            Some(&first) if first * u32::from(timer.ticks_per_step) < setup => {
+                error(0, Some((first * u32::from(timer.ticks_per_step), setup)))
+            }
+            _ => Ok(()),
+        }
+    }
+
+    /// `dir_setup` in ticks of `timer`, rounded up.
+    pub fn dir_setup_ticks(&self, timer: &Timer) -> u32 {
+        self.ticks(self.dir_setup, timer)
     }
 }
 
@@ -158,6 +182,14 @@ impl DriverError {
     /// The message, naming what the driver takes (`what`: "`driver =
     /// \"drv8825\"`", or the keys).
     pub fn message(&self, what: &str) -> String {
+        if let Some((wait, setup)) = self.dir_setup {
+            return format!(
+                "entry {} is {} ticks: a reversal sets DIR a step of it ({wait} ticks) ahead of \
+                 the step that takes the new direction, and the driver's timing ({what}) needs \
+                 {setup}; lower `fmin`, or choose a faster driver",
+                self.index, self.ticks,
+            );
+        }
         format!(
             "entry {} is {} ticks, {} steps/s: the driver's timing ({what}) takes at least {} \
              ticks a step, at most {} steps/s; lower `fmax`, or choose a faster driver",
@@ -209,5 +241,33 @@ mod tests {
         };
         assert_eq!(dm542.check(&timer, &[3]), Ok(()));
         assert_eq!(dm542.check(&timer, &[2]).unwrap_err().shortest, 3);
+    }
+
+    #[test]
+    fn a_first_entry_shorter_than_the_direction_setup_is_refused() {
+        // 1 µs high and low, DIR 5 µs ahead, at 1 MHz: 2 ticks a step, 5
+        // ticks at a reversal.
+        let driver = Driver {
+            step_pulse: 1e-6,
+            step_space: 1e-6,
+            dir_setup: 5e-6,
+        };
+        let timer = Timer::new(1_000_000);
+        assert_eq!(driver.dir_setup_ticks(&timer), 5);
+        assert_eq!(driver.check(&timer, &[5, 3, 2]), Ok(()));
+        let e = driver.check(&timer, &[4, 3, 2]).unwrap_err();
+        assert_eq!((e.index, e.ticks, e.dir_setup), (0, 4, Some((4, 5))));
+        assert_eq!(
+            e.message("`dir_setup`"),
+            "entry 0 is 4 ticks: a reversal sets DIR a step of it (4 ticks) ahead of the step \
+             that takes the new direction, and the driver's timing (`dir_setup`) needs 5; lower \
+             `fmin`, or choose a faster driver"
+        );
+        // Two entries a step: the step of the first entry is 8 ticks.
+        let two = Timer {
+            ticks_per_step: 2,
+            ..timer
+        };
+        assert_eq!(driver.check(&two, &[4, 3, 2]), Ok(()));
     }
 }

@@ -185,12 +185,19 @@ fn driver_at<L: Clone>(
     prefix: &str,
 ) -> Diagnostic<L> {
     let named = |key: Key| args.iter().find(|a| a.key == key.name());
-    let what = match named(Key::DRIVER) {
-        Some(arg) => format!("`driver = \"{}\"`", arg.value),
-        None => "`step_pulse` + `step_space`".to_string(),
+    let what = match (named(Key::DRIVER), e.dir_setup) {
+        (Some(arg), _) => format!("`driver = \"{}\"`", arg.value),
+        (None, None) => "`step_pulse` + `step_space`".to_string(),
+        (None, Some(_)) => "`dir_setup`".to_string(),
+    };
+    // What to change: `fmax` for a step too short, `fmin` for a reversal.
+    let at = if e.dir_setup.is_some() {
+        Key::FMIN
+    } else {
+        Key::FMAX
     };
     Diagnostic {
-        loc: named(Key::FMAX).map_or(whole, |a| &a.value_loc).clone(),
+        loc: named(at).map_or(whole, |a| &a.value_loc).clone(),
         message: format!("{prefix}{}", e.message(&what)),
     }
 }

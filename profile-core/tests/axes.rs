@@ -419,3 +419,49 @@ fn a_new_target_stops_and_goes_on_from_rest() {
     assert!(axes.set_position([1, 2, 3]).is_ok());
     assert_eq!(axes.position(), [1, 2, 3]);
 }
+
+/// New targets at pseudo-random edges, reversing some axes through rest:
+/// the directions `next_directions` gives before each edge are those the
+/// axes that step on it take.
+#[test]
+fn the_next_directions_are_the_next_edges() {
+    static ACCEL: [u16; 12] = [900, 700, 560, 460, 390, 340, 300, 270, 250, 235, 225, 220];
+    let mut seed = 0x2545_f491_4f6c_dd1du64;
+    let mut next = |m: u64| {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        seed % m
+    };
+    let mut reversals = 0;
+    for _ in 0..200 {
+        let mut axes = Axes::new(Player::new(Ramp::steps(&ACCEL)), [0i64; 3]);
+        let target = |next: &mut dyn FnMut(u64) -> u64| [0, 1, 2].map(|_| next(401) as i64 - 200);
+        axes.move_to(target(&mut next));
+        let (mut edges, mut last) = (0, [None; 3]);
+        let retarget_at = next(150) as usize;
+        loop {
+            if edges == retarget_at {
+                axes.move_to(target(&mut next));
+            }
+            let pins = axes.next_directions();
+            let mut mask = 0;
+            if !axes.step(|_, m| mask = m) {
+                break;
+            }
+            edges += 1;
+            let now = axes.directions();
+            for i in 0..3 {
+                if mask >> i & 1 == 1 {
+                    assert_eq!(now[i], pins[i], "axis {i} at edge {edges}");
+                    if last[i].is_some_and(|d| d != now[i]) {
+                        reversals += 1;
+                    }
+                    last[i] = Some(now[i]);
+                }
+            }
+        }
+    }
+    // The new targets reverse axes: the asserts hold at those steps.
+    assert!(reversals > 100, "{reversals} reversals");
+}

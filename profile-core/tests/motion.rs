@@ -121,9 +121,18 @@ fn play(axis: &mut Axis<'_, u16>, watch: &mut Watch<'_>, n: u32) -> Result<Vec<u
     let mut periods = vec![];
     for _ in 0..n {
         let mut period = 0;
+        // What the direction pin is set to a period ahead of the step.
+        let pin = axis.next_direction();
         if !axis.step(|p| period = p) {
             watch.rest()?;
             break;
+        }
+        if axis.direction() != pin {
+            return Err(format!(
+                "step {}: next_direction said {pin:?} a step ahead, the step went {:?}",
+                periods.len(),
+                axis.direction()
+            ));
         }
         watch.step(period, axis.direction(), axis.position())?;
         periods.push(period);

@@ -16,7 +16,7 @@ use cortex_m_semihosting::hprintln;
 use stepper_profiles::player::{Axes, Buffered, Player};
 
 use crate::Report;
-use crate::moves::{Event, Model, Table, check_pin};
+use crate::moves::{Event, Model, Table, check_pin, check_turns};
 use crate::profiles::sigmoid_exact;
 use crate::step::{self, Players, Stepper};
 
@@ -148,6 +148,7 @@ fn play(
         }
     }
     check_pin(m.name, loaded, s.taken, report);
+    check_turns(m.name, s.taken, report);
     let position = s.player.axes_position();
     let pins_now = step::step_pins() ^ pins_before;
     for i in 0..3 {

@@ -352,6 +352,9 @@ pub fn play(
         s.taken,
         report,
     );
+    if m.axis.is_some() {
+        check_turns(m.name, s.taken, report);
+    }
     hprintln!(
         "  {:<34} {:>6} steps {:>9} ticks  top {:>5}  end {:>5}",
         m.name,
@@ -377,6 +380,59 @@ fn check_axis(m: &Move<'static>, player: &Players, steps: u32, report: &mut Repo
     report.equal("axis position after the move", position as u64, to as u64);
     report.equal("axis direction", (direction == want).into(), 1);
     report.equal("axis steps", steps.into(), from.abs_diff(to));
+}
+
+/// The driver's `dir_setup` at the pins: every change of the direction
+/// pins at least [`step::DIR_SETUP_TICKS`] before the step that takes it
+/// (the clock read after the write, the step's stamp before its pulse), and
+/// every step pulsed with its own direction on the pins. Prints the changes:
+/// the one before the first step (the start waits `dir_setup`) and those
+/// of reversals while moving (a whole period of the ramp's slowest entry).
+pub fn check_turns(name: &str, taken: usize, report: &mut Report) {
+    let (mut start, mut turns, mut shortest, mut first_short) = (None, 0u32, u32::MAX, None);
+    let wrong = step::turns(taken, |k, setup| {
+        if k == 0 {
+            start = Some(setup);
+        } else {
+            turns += 1;
+            shortest = shortest.min(setup);
+        }
+        if setup < step::DIR_SETUP_TICKS {
+            first_short.get_or_insert((k, setup));
+        }
+    });
+    if let Some((k, setup)) = first_short {
+        hprintln!(
+            "FAIL {}: the direction pins changed {} ticks before step {} ({} needed)",
+            name,
+            setup,
+            k,
+            step::DIR_SETUP_TICKS
+        );
+    }
+    report.equal(
+        "direction changes too late for dir_setup",
+        first_short.map_or(0, |_| 1),
+        0,
+    );
+    report.equal("steps pulsed in the wrong direction", u64::from(wrong), 0);
+    match start {
+        Some(setup) => hprintln!(
+            "  {:<34} DIR set {} ticks before the first step (dir_setup {})",
+            name,
+            setup,
+            step::DIR_SETUP_TICKS
+        ),
+        None => hprintln!("  {:<34} DIR unchanged at the start", name),
+    }
+    if turns > 0 {
+        hprintln!(
+            "  {:<34} DIR turned {} time(s) while moving, at least {} ticks before its step",
+            name,
+            turns,
+            shortest
+        );
+    }
 }
 
 /// Every step, timed at the pin by the clock the player does not drive: step

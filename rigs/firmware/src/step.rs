@@ -49,6 +49,32 @@ const CLOCK_RELOAD: usize = 0x4000_0008;
 /// SysTick counts the core clock, the stamping clock's: one tick each.
 pub const CLOCK_PER_TICK: u32 = 1;
 
+/// The direction pins: bits 4, 5 and 6 of the same register, one an axis
+/// (set: backward).
+const DIR_SHIFT: u32 = 4;
+
+/// The driver's `dir_setup` the firmware keeps: 5 µs, a DM542's, in ticks
+/// of the 25 MHz clock. The interrupt sets the direction pins for the next
+/// step right after the step it pulses (the axes' own directions are one
+/// step ahead of the pins'), so the step that takes a new direction comes a
+/// whole period later: at a reversal, the ramp's slowest entry. A move from
+/// rest sets them and waits this long before its first step.
+pub const DIR_SETUP_TICKS: u32 = 125;
+
+/// The most direction changes a move records.
+pub const MAX_TURNS: usize = 16;
+
+/// Direction changes: each as the step that takes the new direction and
+/// the clock's value just after the pins were written; and how many.
+type Turns = ([(usize, u32); MAX_TURNS], usize);
+
+/// The direction changes of the move playing.
+pub static TURNS: Mutex<RefCell<Turns>> = Mutex::new(RefCell::new(([(0, 0); MAX_TURNS], 0)));
+
+/// Steps whose direction pins did not say the step's direction when it
+/// was pulsed.
+pub static WRONG_DIRECTION: Mutex<RefCell<u32>> = Mutex::new(RefCell::new(0));
+
 /// The stamps of the steps of the move playing: the clock's value at each.
 pub static STAMPS: Mutex<RefCell<[u32; MAX_STEPS]>> = Mutex::new(RefCell::new([0; MAX_STEPS]));
 
@@ -82,21 +108,47 @@ macro_rules! with_player {
 
 impl Players {
     /// Starts a move (of `steps` steps; the axes make theirs): the first
-    /// two periods and the pins the first step toggles.
-    pub fn start(&mut self, steps: u32) -> (Option<u16>, Option<u16>, u32) {
-        let (first, next) = match self {
-            Players::Any(p) => p.start(steps),
-            Players::Compressed(p) => p.start(steps),
+    /// two periods, the pins the first step toggles and the direction pins
+    /// it takes.
+    pub fn start(&mut self, steps: u32) -> (Option<u16>, Option<u16>, u32, u32) {
+        let (first, next, dirs) = match self {
+            Players::Any(p) => {
+                let (first, next) = p.start(steps);
+                (first, next, 0)
+            }
+            Players::Compressed(p) => {
+                let (first, next) = p.start(steps);
+                (first, next, 0)
+            }
             Players::Axes(p, delta) => {
                 let s = p.move_by(*delta);
-                return (s.first, s.next, s.mask);
+                return (s.first, s.next, s.mask, dir_bits(&s.directions));
             }
             Players::Axis(p, target) => {
-                let (_, first, next) = p.move_to(*target);
-                (first, next)
+                let (direction, first, next) = p.move_to(*target);
+                (first, next, dir_bits(&[direction]))
             }
         };
-        (first, next, u32::from(first.is_some()))
+        (first, next, u32::from(first.is_some()), dirs)
+    }
+
+    /// The direction pins of the step the pins take now.
+    fn directions_now(&self) -> u32 {
+        match self {
+            Players::Axes(p, _) => dir_bits(&p.directions()),
+            Players::Axis(p, _) => dir_bits(&[p.direction()]),
+            _ => 0,
+        }
+    }
+
+    /// The direction pins of the next step: the axes' own, one step ahead
+    /// of the pins'.
+    fn directions_next(&self) -> u32 {
+        match self {
+            Players::Axes(p, _) => dir_bits(&p.inner().directions()),
+            Players::Axis(p, _) => dir_bits(&[p.inner().direction()]),
+            _ => 0,
+        }
     }
 
     /// From the interrupt: the pins that step now (0: the move is over),
@@ -231,6 +283,44 @@ pub fn step_pins() -> u32 {
     unsafe { ptr::read_volatile(STEP_PINS as *const u32) }
 }
 
+/// Directions as the direction pins' bits.
+fn dir_bits(directions: &[Direction]) -> u32 {
+    directions
+        .iter()
+        .enumerate()
+        .map(|(i, d)| u32::from(*d == Direction::Backward) << (DIR_SHIFT + i as u32))
+        .fold(0, |a, b| a | b)
+}
+
+/// Writes the direction pins (bits 4 to 6) to `dirs`; `true` if they
+/// changed.
+fn set_dir_pins(dirs: u32) -> bool {
+    const MASK: u32 = 0b111 << DIR_SHIFT;
+    // SAFETY: the SCC's LED register, its direction bits replaced.
+    unsafe {
+        let reg = STEP_PINS as *mut u32;
+        let was = ptr::read_volatile(reg);
+        if was & MASK == dirs {
+            return false;
+        }
+        ptr::write_volatile(reg, (was & !MASK) | dirs);
+    }
+    true
+}
+
+/// Records that the direction pins changed for step `step`.
+fn record_turn(step: usize) {
+    let stamp = clock();
+    critical_section::with(|cs| {
+        let mut turns = TURNS.borrow_ref_mut(cs);
+        let n = turns.1;
+        if let Some(slot) = turns.0.get_mut(n) {
+            *slot = (step, stamp);
+        }
+        turns.1 = n + 1;
+    });
+}
+
 /// The step interrupt.
 #[exception]
 fn SysTick() {
@@ -285,7 +375,18 @@ fn SysTick() {
         };
         let pins = s.player.step(load);
         if pins != 0 {
+            let dirs = step_pins() & (0b111 << DIR_SHIFT);
             toggle_step_pins(pins);
+            // Only the axes that step now: the others' pins may already
+            // say their next step's direction.
+            let stepping = (pins & 0b111) << DIR_SHIFT;
+            if (dirs ^ s.player.directions_now()) & stepping != 0 {
+                critical_section::with(|cs| *WRONG_DIRECTION.borrow_ref_mut(cs) += 1);
+            }
+            // The next step's directions, a whole period ahead of it.
+            if set_dir_pins(s.player.directions_next()) {
+                record_turn(s.taken + 1);
+            }
             critical_section::with(|cs| {
                 if let Some(stamp) = STAMPS.borrow_ref_mut(cs).get_mut(s.taken) {
                     *stamp = now;
@@ -311,11 +412,21 @@ fn SysTick() {
 /// stamped with that tick), loads the second, and waits, spinning, for the
 /// handler to end the move. Returns the stepper, with what it recorded.
 pub fn run(mut stepper: Stepper, steps: u32) -> Stepper {
-    let (first, next, pins) = stepper.player.start(steps);
+    critical_section::with(|cs| {
+        TURNS.borrow_ref_mut(cs).1 = 0;
+        *WRONG_DIRECTION.borrow_ref_mut(cs) = 0;
+    });
+    let (first, next, pins, dirs) = stepper.player.start(steps);
     let Some(first) = first else {
         stepper.finished = true;
         return stepper;
     };
+    // The first step's directions, `dir_setup` ahead of it.
+    if set_dir_pins(dirs) {
+        record_turn(0);
+    }
+    let set = clock();
+    while set.wrapping_sub(clock()) < DIR_SETUP_TICKS {}
     stepper.log[0] = first;
     stepper.steps = 1;
     stepper.timer.set_clock_source(SystClkSource::Core);
@@ -357,6 +468,22 @@ pub fn run(mut stepper: Stepper, steps: u32) -> Stepper {
     // SAFETY: the handler has disabled its interrupt and given the stepper
     // back.
     unsafe { STEPPER.take() }
+}
+
+/// The direction changes of the last move, each as the step that took the
+/// new direction and the time from the change to that step, in ticks of
+/// the stamping clock; and the steps pulsed with the wrong direction.
+pub fn turns(taken: usize, mut each: impl FnMut(usize, u32)) -> u32 {
+    critical_section::with(|cs| {
+        let stamps = STAMPS.borrow_ref(cs);
+        let turns = TURNS.borrow_ref(cs);
+        for &(step, at) in &turns.0[..turns.1.min(MAX_TURNS)] {
+            if step < taken.min(MAX_STEPS) {
+                each(step, at.wrapping_sub(stamps[step]));
+            }
+        }
+        *WRONG_DIRECTION.borrow_ref(cs)
+    })
 }
 
 /// Each step's time from the move's start, in ticks of the stamping clock:

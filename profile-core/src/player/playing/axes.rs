@@ -328,6 +328,27 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
         self.directions
     }
 
+    /// The directions of the edge the next [`Axes::step`] hands out: the
+    /// move's, or a queued move's where the move has ended. Set the pins to
+    /// them right after pulsing an edge: an axis that turns steps the other
+    /// way a period of the ramp's slowest entry later
+    /// ([`Axis::next_direction`](crate::player::Axis::next_direction)).
+    pub fn next_directions(&self) -> [Direction; N] {
+        match self.then {
+            Some(target) if self.player.remaining() == 0 => {
+                let position = self.position();
+                let mut directions = [Direction::Forward; N];
+                for ((d, t), p) in directions.iter_mut().zip(target).zip(position) {
+                    if t < p {
+                        *d = Direction::Backward;
+                    }
+                }
+                directions
+            }
+            _ => self.directions,
+        }
+    }
+
     /// The index of the axis leading the move playing, or the last one.
     pub fn lead(&self) -> usize {
         self.lead

@@ -172,6 +172,47 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
         self.direction
     }
 
+    /// The direction of the step the next [`Axis::step`] plays: the
+    /// move's, but where the move has ended and one the other way follows
+    /// (a target behind, a run the other way). Set the driver's direction
+    /// pin to it right after pulsing a step, and the step that takes a new
+    /// direction comes a whole period later: a reversal passes through
+    /// rest, so that period is the ramp's slowest entry, which the table's
+    /// `dir_setup` check holds against the driver.
+    ///
+    /// ```
+    /// use profile_core::player::{Axis, Direction, Player, Ramp};
+    ///
+    /// static RAMP: [u16; 4] = [4000, 3000, 2000, 1500];
+    /// let mut axis = Axis::new(Player::new(Ramp::steps(&RAMP)), 0);
+    /// axis.move_to(-10);
+    /// for _ in 0..4 {
+    ///     axis.step(|_| {});
+    /// }
+    /// axis.move_to(0); // a stop, then the way back
+    /// let mut pin = axis.next_direction();
+    /// while axis.step(|_| {}) {
+    ///     // The pin was set a period ahead of this step.
+    ///     assert_eq!(axis.direction(), pin);
+    ///     pin = axis.next_direction();
+    /// }
+    /// assert_eq!(axis.position(), 0);
+    /// ```
+    pub fn next_direction(&self) -> Direction {
+        if self.player.remaining() > 0 {
+            return self.direction;
+        }
+        match self.then {
+            Then::Rest => self.direction,
+            Then::Run(direction) => direction,
+            Then::To(target) => match target.cmp(&self.position()) {
+                core::cmp::Ordering::Greater => Direction::Forward,
+                core::cmp::Ordering::Less => Direction::Backward,
+                core::cmp::Ordering::Equal => self.direction,
+            },
+        }
+    }
+
     /// Moves to `target` and returns the direction to set now. From rest,
     /// starts the move (a move to the position itself has no steps and
     /// keeps the direction; one of more than `u32::MAX` steps stops
