@@ -97,6 +97,10 @@ const REQUIRED: &[&str] = &[
     "cpu_unknown_core",
     "cpu_without_clock",
     "cpu_load_above_one",
+    // Resonance bands.
+    "avoid_top_in_band",
+    "avoid_band_reversed",
+    "avoid_band_unit",
 ];
 
 /// The file named in messages, as `include_profiles!("profiles.toml")` names it.

@@ -26,6 +26,7 @@ pub fn text(path: &str, profiles: &Profiles) -> Result<String, Error> {
     print_motors(&mut out, profiles.profiles());
     print_drivers(&mut out, profiles.profiles());
     print_cpu(&mut out, profiles.profiles());
+    print_bands(&mut out, profiles.profiles());
     Ok(out)
 }
 
@@ -113,6 +114,42 @@ fn print_cpu(out: &mut String, profiles: &[Profile]) {
             100.0 * cpu.load(&spec.timer, layout, table_min),
             (cpu.max_rate(layout) / per_step).floor(),
         );
+    }
+}
+
+/// For each profile that names resonance bands: each band, in full steps/s
+/// and in the table's steps/s, and the time the ramp spends in it.
+fn print_bands(out: &mut String, profiles: &[Profile]) {
+    let bound: Vec<(&Profile, &profile_codegen::bands::Bands)> = profiles
+        .iter()
+        .filter_map(|p| Some((p, p.avoid.as_ref()?)))
+        .collect();
+    if bound.is_empty() {
+        return;
+    }
+    let _ = writeln!(
+        out,
+        "\nResonance bands (profiles that name them; the ramp crosses them, its top is outside):"
+    );
+    let _ = writeln!(
+        out,
+        "{:<21} {:>24} {:>24} {:>14}",
+        "profile", "band, full steps/s", "band, steps/s", "ramp in it"
+    );
+    for (p, bands) in bound {
+        let spec = p.table.spec();
+        let periods = p.table.step_periods();
+        let times = bands.time_in(&spec.timer, &periods);
+        for ((full, steps), time) in bands.full_steps().iter().zip(bands.steps()).zip(times) {
+            let _ = writeln!(
+                out,
+                "{:<21} {:>24} {:>24} {:>11.3} ms",
+                p.name,
+                format!("{} .. {}", full.0, full.1),
+                format!("{} .. {}", steps.0, steps.1),
+                time * 1e3,
+            );
+        }
     }
 }
 

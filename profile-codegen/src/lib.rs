@@ -35,6 +35,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod bands;
 pub mod cpu;
 pub mod driver;
 mod emit;

@@ -11,6 +11,7 @@ use std::format;
 use std::string::{String, ToString};
 use std::vec::Vec;
 
+use crate::bands::Bands;
 use crate::cpu::{Cpu, Layout};
 use crate::driver::Driver;
 use crate::motor::{Motor, TorqueFigures};
@@ -37,6 +38,8 @@ pub struct Compiled {
     /// The step interrupt's core and clock, when described: the interrupt
     /// serves every period.
     pub cpu: Option<Cpu>,
+    /// The speed bands its top stays out of, when given.
+    pub avoid: Option<Bands>,
 }
 
 /// Entries a set of tables (one profiles file) may still generate.
@@ -144,6 +147,17 @@ pub fn compile<L: Clone>(
         )
         .map_err(|e| std::vec![cpu_at(&e, cpu, args, whole, &prefix)])?;
     }
+    if let Some(bands) = &request.avoid {
+        bands
+            .check(&spec.spec().timer, &table.step_periods())
+            .map_err(|e| {
+                let fmax = args.iter().find(|a| a.key == Key::FMAX.name());
+                std::vec![Diagnostic {
+                    loc: fmax.map_or(whole, |a| &a.value_loc).clone(),
+                    message: format!("{prefix}{}", e.message()),
+                }]
+            })?;
+    }
     Ok(Compiled {
         spec,
         table,
@@ -151,6 +165,7 @@ pub fn compile<L: Clone>(
         torque,
         driver: request.driver,
         cpu: request.cpu,
+        avoid: request.avoid,
     })
 }
 

@@ -43,7 +43,7 @@ impl Parse for Pair {
 
 /// A value, where it is, and where each of its elements is (a list's).
 fn parse_value(input: ParseStream, key: &Ident) -> syn::Result<(Value, Loc, Vec<Loc>)> {
-    if input.peek(syn::token::Bracket) && key == profile_core::Key::TORQUE_CURVE.name() {
+    if input.peek(syn::token::Bracket) && units::pair(&key.to_string()).is_some() {
         return parse_points(input, key);
     }
     let (value, loc) = parse_scalar(input, key)?;
@@ -165,10 +165,12 @@ fn parse_points(input: ParseStream, key: &Ident) -> syn::Result<(Value, Loc, Vec
     let loc = group.to_token_stream();
     let expected =
         || format!("`{key}` expects a list of number pairs, such as `[(0, 0.4), (1000, 0.3)]`");
+    let name = key.to_string();
+    let (qx, qy) = units::pair(&name).unwrap_or((Quantity::Frequency, Quantity::Torque));
     let pair = |inner: ParseStream| -> syn::Result<(f64, f64)> {
-        let x = number(inner, Quantity::Frequency)?;
+        let x = number(inner, &name, qx)?;
         inner.parse::<Token![,]>()?;
-        let y = number(inner, Quantity::Torque)?;
+        let y = number(inner, &name, qy)?;
         let _: Option<Token![,]> = inner.parse()?;
         if !inner.is_empty() {
             return Err(inner.error("expected a pair"));
@@ -194,7 +196,7 @@ fn parse_points(input: ParseStream, key: &Ident) -> syn::Result<(Value, Loc, Vec
     let (points, parts) = pairs.parse2(group.stream()).map_err(|e| {
         // A unit's error names the key and stands at the literal; any
         // other mistake is the list's.
-        if e.to_string().starts_with("`torque_curve`") {
+        if e.to_string().starts_with(&format!("`{key}`")) {
             e
         } else {
             syn::Error::new_spanned(&loc, expected())
@@ -207,12 +209,12 @@ fn parse_points(input: ParseStream, key: &Ident) -> syn::Result<(Value, Loc, Vec
 /// (a frequency or a torque), which it may carry, with or without a space
 /// (`1kHz`, `40 Ncm`), or a string of both, as in a profiles file
 /// (`"40 N·cm"`). A word or a literal that is no number is an error at it.
-fn number(input: ParseStream, q: Quantity) -> syn::Result<f64> {
+fn number(input: ParseStream, key: &str, q: Quantity) -> syn::Result<f64> {
     if input.peek(Ident) {
         let word: Ident = input.parse()?;
         return Err(syn::Error::new(
             word.span(),
-            units::not_a_point(q, &format!("`{word}`")),
+            units::not_a_point(key, q, &format!("`{word}`")),
         ));
     }
     let minus: Option<Token![-]> = input.parse()?;
@@ -226,15 +228,18 @@ fn number(input: ParseStream, q: Quantity) -> syn::Result<f64> {
     let (text, suffix) = match Lit::new(lit.clone()) {
         Lit::Int(i) => (i.base10_digits().to_string(), i.suffix().to_string()),
         Lit::Float(f) => (f.base10_digits().to_string(), f.suffix().to_string()),
-        Lit::Str(s) if minus.is_none() => return quoted_point(q, &s, loc),
+        Lit::Str(s) if minus.is_none() => return quoted_point(key, q, &s, loc),
         _ => {
             let got = format!("`{sign}{lit}`");
-            return Err(syn::Error::new_spanned(loc, units::not_a_point(q, &got)));
+            return Err(syn::Error::new_spanned(
+                loc,
+                units::not_a_point(key, q, &got),
+            ));
         }
     };
     let count = text.chars().filter(char::is_ascii_digit).count();
     if count > MAX_DIGITS {
-        let message = schema::too_many_digits(profile_core::Key::TORQUE_CURVE.name(), count);
+        let message = schema::too_many_digits(key, count);
         return Err(syn::Error::new_spanned(loc, message));
     }
     let number = format!("{sign}{text}");
@@ -247,16 +252,19 @@ fn number(input: ParseStream, q: Quantity) -> syn::Result<f64> {
     } else {
         (q.units()[0].0.to_string(), number.clone())
     };
-    units::curve_point(q, &number, &unit, &written).map_err(|m| syn::Error::new_spanned(loc, m))
+    units::curve_point(key, q, &number, &unit, &written)
+        .map_err(|m| syn::Error::new_spanned(loc, m))
 }
 
 /// A torque curve's frequency or torque written as a string with its unit,
 /// `"1 kHz"`, `"40 N·cm"`, read as a profiles file reads it.
-fn quoted_point(q: Quantity, s: &syn::LitStr, loc: Loc) -> syn::Result<f64> {
+fn quoted_point(key: &str, q: Quantity, s: &syn::LitStr, loc: Loc) -> syn::Result<f64> {
     let text = s.value();
     let point = match units::split(&text) {
-        Some((number, unit)) => units::curve_point(q, &number.replace('_', ""), unit, text.trim()),
-        None => Err(units::not_a_point(q, &format!("`{}`", s.token()))),
+        Some((number, unit)) => {
+            units::curve_point(key, q, &number.replace('_', ""), unit, text.trim())
+        }
+        None => Err(units::not_a_point(key, q, &format!("`{}`", s.token()))),
     };
     point.map_err(|m| syn::Error::new_spanned(loc, m))
 }

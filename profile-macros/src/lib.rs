@@ -52,6 +52,7 @@ mod include;
 /// | `cpu_hz` | the core's clock, Hz (`kHz`, `MHz`) | none |
 /// | `cpu_load` | the largest share of the CPU the step interrupt may take at any entry, above 0 and at most 1 | 0.5 |
 /// | `axes` | the axes one step interrupt steps (`Axes`: each follower adds its measured cost), 1 to 16; 1 on the AVR | 1 |
+/// | `avoid` | speed bands where the motor rings, `[(lowest, highest), ...]` in full steps/s (`Hz`, `kHz`; a motor's `microsteps` table steps a full step): the ramp's top, where the player cruises, must lie outside every band, or the table is an error at `fmax`; the report gives the time the ramp spends in each | none |
 ///
 /// Each curve's own keys:
 ///

@@ -47,6 +47,9 @@ pub struct Profile {
     /// The step interrupt's core and clock, when it names them: the report
     /// prints the CPU's load at the top speed.
     pub cpu: Option<crate::cpu::Cpu>,
+    /// The speed bands it stays out of, when it names them: the report
+    /// prints the time the ramp spends in each.
+    pub avoid: Option<crate::bands::Bands>,
 }
 
 impl Profile {
@@ -59,6 +62,7 @@ impl Profile {
             motor: compiled.motor,
             driver: compiled.driver,
             cpu: compiled.cpu,
+            avoid: compiled.avoid,
         }
     }
 }

@@ -81,14 +81,14 @@ fn bad_name(name: &str) -> Option<String> {
 
 /// A TOML value as an argument value; kinds no key takes are described, so
 /// the schema can say what the key expects instead.
-fn value(v: &Spanned<toml::Value>) -> Value {
+fn value(key: &str, v: &Spanned<toml::Value>) -> Value {
     match v.get_ref() {
         toml::Value::Integer(i) => Value::Int(*i as i128),
         toml::Value::Float(f) => Value::Float(*f),
         toml::Value::String(s) => Value::Name(s.clone()),
         toml::Value::Boolean(_) => Value::Other("a boolean".into()),
         toml::Value::Datetime(_) => Value::Other("a date".into()),
-        toml::Value::Array(items) => match points(items) {
+        toml::Value::Array(items) => match points(key, items) {
             Ok(Some(points)) => Value::Points(points),
             Ok(None) => Value::Other("an array".into()),
             Err((part, message)) => Value::Refused { message, part },
@@ -101,36 +101,38 @@ fn value(v: &Spanned<toml::Value>) -> Value {
 type AtElement = (usize, String);
 
 /// `[[x, y], ...]` as number pairs, if that is what the array holds; a
-/// frequency `x` or a torque `y` may be a string with a unit, `"1.5 kHz"`,
-/// `"40 N·cm"`. A pair holding what is not a number (`["fast", 0.3]`), or
-/// a unit it does not take, is an error at its element.
-fn points(items: &[toml::Value]) -> Result<Option<Vec<(f64, f64)>>, AtElement> {
+/// frequency or a torque may be a string with a unit, `"1.5 kHz"`, `"40
+/// N·cm"`, as `key` takes them ([`units::pair`]). A pair holding what is
+/// not a number (`["fast", 0.3]`), or a unit it does not take, is an error
+/// at its element.
+fn points(key: &str, items: &[toml::Value]) -> Result<Option<Vec<(f64, f64)>>, AtElement> {
+    let (qx, qy) = units::pair(key).unwrap_or((Quantity::Frequency, Quantity::Torque));
     let number = |v: &toml::Value, q: Quantity| match v {
         toml::Value::Integer(i) => Ok(*i as f64),
         toml::Value::Float(f) => Ok(*f),
         toml::Value::String(s) => match units::split(s) {
-            Some((n, unit)) => units::curve_point(q, &n.replace('_', ""), unit, s.trim()),
-            None => Err(units::not_a_point(q, &format!("`{s:?}`"))),
+            Some((n, unit)) => units::curve_point(key, q, &n.replace('_', ""), unit, s.trim()),
+            None => Err(units::not_a_point(key, q, &format!("`{s:?}`"))),
         },
-        toml::Value::Boolean(b) => Err(units::not_a_point(q, &format!("`{b}`"))),
-        toml::Value::Datetime(d) => Err(units::not_a_point(q, &format!("`{d}`"))),
-        toml::Value::Array(_) => Err(units::not_a_point(q, "an array")),
-        toml::Value::Table(_) => Err(units::not_a_point(q, "a table")),
+        toml::Value::Boolean(b) => Err(units::not_a_point(key, q, &format!("`{b}`"))),
+        toml::Value::Datetime(d) => Err(units::not_a_point(key, q, &format!("`{d}`"))),
+        toml::Value::Array(_) => Err(units::not_a_point(key, q, "an array")),
+        toml::Value::Table(_) => Err(units::not_a_point(key, q, "a table")),
     };
     let mut points = Vec::new();
     for (part, item) in items.iter().enumerate() {
         let Some([x, y]) = item.as_array().map(|a| a.as_slice()) else {
             return Ok(None);
         };
-        let x = number(x, Quantity::Frequency).map_err(|m| (part, m))?;
-        let y = number(y, Quantity::Torque).map_err(|m| (part, m))?;
+        let x = number(x, qx).map_err(|m| (part, m))?;
+        let y = number(y, qy).map_err(|m| (part, m))?;
         points.push((x, y));
     }
     Ok(Some(points))
 }
 
 fn arg(source: &str, key: &Spanned<String>, v: &Spanned<toml::Value>) -> Arg<Range<usize>> {
-    let value = value(v);
+    let value = value(key.get_ref(), v);
     // Each point's place, where the reading finds one for each.
     let count = match (&value, v.get_ref()) {
         (Value::Points(points), _) => points.len(),

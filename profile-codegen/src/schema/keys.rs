@@ -29,6 +29,7 @@ pub(crate) const COMMON: &[Key] = &[
     Key::CPU_HZ,
     Key::CPU_LOAD,
     Key::AXES,
+    Key::AVOID,
 ];
 
 /// The keys of the step interrupt's budget (`core` and `cpu_hz` name it).

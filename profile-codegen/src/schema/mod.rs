@@ -161,6 +161,7 @@ pub(crate) fn listed(keys: &[Key]) -> impl Iterator<Item = &'static str> + '_ {
                 && **k != Key::DRIVER
                 && !crate::schema::keys::DRIVER_TIMING.contains(k)
                 && !crate::schema::keys::BUDGET.contains(k)
+                && **k != Key::AVOID
         })
         .map(|k| k.name())
 }
@@ -204,6 +205,7 @@ pub fn unit(key: Key) -> &'static str {
         Key::SUPPLY_VOLTAGE => "V",
         Key::STEP_PULSE | Key::STEP_SPACE | Key::DIR_SETUP => "s",
         Key::CPU_HZ => "Hz",
+        Key::AVOID => "full steps/s",
         _ => CURVE_SCHEMAS
             .iter()
             .flat_map(|r| r.units)

@@ -6,8 +6,9 @@ use std::string::ToString;
 use std::vec::Vec;
 
 use super::suggest::{Hint, did_you_mean, suggest};
-use super::values::{Collector, cpu, driver, motor};
+use super::values::{Collector, avoid, cpu, driver, motor};
 use super::{Arg, Diagnostic, TableLayout, Value, curve_names, keys_for, listed, quoted};
+use crate::bands::Bands;
 use crate::cpu::Cpu;
 use crate::driver::Driver;
 use crate::motor::{Motor, MotorError};
@@ -34,6 +35,8 @@ pub struct Request {
     pub driver: Option<Driver>,
     /// The step interrupt's core and clock, when described.
     pub cpu: Option<Cpu>,
+    /// The speed bands to keep the top out of, when given.
+    pub avoid: Option<Bands>,
 }
 
 /// Checks the keys, kinds and names of `args` and says what they ask for.
@@ -95,6 +98,7 @@ pub fn read<L: Clone>(
     let motor = motor(&mut c, &suggested);
     let driver = driver(&mut c);
     let cpu = cpu(&mut c);
+    let avoid = avoid(&mut c, motor.as_ref());
     if let (Some(Curve::TorqueLimited(ramp)), Some(timer)) = (&mut curve, timer) {
         limited_by(&mut c, ramp, motor.as_ref(), timer);
     }
@@ -117,6 +121,7 @@ pub fn read<L: Clone>(
         motor,
         driver,
         cpu,
+        avoid,
     })
 }
 

@@ -462,7 +462,13 @@ fn shift_decimal(s: &str, k: i32) -> Option<String> {
 /// A torque curve's frequency (in Hz) or torque (in N·m) written
 /// `number` `unit` (`written` as the source has it, for messages), or what
 /// is wrong.
-pub fn curve_point(q: Quantity, number: &str, unit: &str, written: &str) -> Result<f64, String> {
+pub fn curve_point(
+    key: &str,
+    q: Quantity,
+    number: &str,
+    unit: &str,
+    written: &str,
+) -> Result<f64, String> {
     let (what, one) = match q {
         Quantity::Frequency => ("frequencies", "frequency"),
         _ => ("torques", "torque"),
@@ -470,31 +476,45 @@ pub fn curve_point(q: Quantity, number: &str, unit: &str, written: &str) -> Resu
     let Some(exponent) = q.exponent(unit) else {
         let hint = q.hint(unit);
         return Err(format!(
-            "`torque_curve` {what} accept the units {} (got `{written}`){hint}",
+            "`{key}` {what} accept the units {} (got `{written}`){hint}",
             q.listed()
         ));
     };
     match scaled(number, exponent) {
         Ok(Value::Int(v)) => Ok(v as f64),
         Ok(Value::Float(v)) => Ok(v),
-        Err(Unscaled::Digits(digits)) => Err(super::too_many_digits("torque_curve", digits)),
+        Err(Unscaled::Digits(digits)) => Err(super::too_many_digits(key, digits)),
         Err(Unscaled::TooLarge) => Err(format!(
-            "`torque_curve` has a {one} too large for a 64-bit float (at most about 1.8e308 \
+            "`{key}` has a {one} too large for a 64-bit float (at most about 1.8e308 \
              {}), got `{written}`",
             q.units()[0].0
         )),
-        _ => Err(not_a_point(q, &format!("`{written}`"))),
+        _ => Err(not_a_point(key, q, &format!("`{written}`"))),
     }
 }
 
-/// The message for a torque curve's frequency (`q` a frequency) or torque
-/// that is not a number; `got` is what it is: `` `"fast"` ``, `an array`.
-pub fn not_a_point(q: Quantity, got: &str) -> String {
+/// What the pairs of `key`'s list hold, if it takes a list of pairs: a
+/// torque curve's (step frequency, torque), resonance bands' (lowest,
+/// highest frequency).
+pub fn pair(key: &str) -> Option<(Quantity, Quantity)> {
+    if key == Key::TORQUE_CURVE.name() {
+        Some((Quantity::Frequency, Quantity::Torque))
+    } else if key == Key::AVOID.name() {
+        Some((Quantity::Frequency, Quantity::Frequency))
+    } else {
+        None
+    }
+}
+
+/// The message for a pair's frequency (`q` a frequency) or torque that is
+/// not a number, in `key`'s list; `got` is what it is: `` `"fast"` ``, `an
+/// array`.
+pub fn not_a_point(key: &str, q: Quantity, got: &str) -> String {
     let (what, examples) = match q {
         Quantity::Frequency => ("frequencies", "`1000`, `\"1 kHz\"`"),
         _ => ("torques", "`0.4`, `\"40 N·cm\"`"),
     };
-    format!("`torque_curve` {what} are numbers, with or without a unit ({examples}), got {got}")
+    format!("`{key}` {what} are numbers, with or without a unit ({examples}), got {got}")
 }
 
 #[cfg(test)]

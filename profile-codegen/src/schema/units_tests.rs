@@ -46,7 +46,7 @@ fn a_number_too_long_or_too_large_says_so() {
         Ok(Value::Float(0.005))
     );
     assert_eq!(
-        curve_point(Quantity::Frequency, long, "kHz", "x"),
+        curve_point("torque_curve", Quantity::Frequency, long, "kHz", "x"),
         Err(
             "`torque_curve` has a number of 44 digits, more than the 40 any key takes: write it \
              with an exponent, as in `1.5e9`"
@@ -54,7 +54,7 @@ fn a_number_too_long_or_too_large_says_so() {
         )
     );
     assert_eq!(
-        curve_point(Quantity::Torque, "1e400", "Nm", "1e400 Nm"),
+        curve_point("torque_curve", Quantity::Torque, "1e400", "Nm", "1e400 Nm"),
         Err(
             "`torque_curve` has a torque too large for a 64-bit float (at most about 1.8e308 \
              Nm), got `1e400 Nm`"
@@ -210,7 +210,7 @@ fn a_suggestion_keeps_the_scale() {
     assert_eq!(hint(Key::TAU, "min"), "");
     // The torque curve's points say the same.
     assert_eq!(
-        curve_point(Quantity::Torque, "20", "MNm", "20 MNm"),
+        curve_point("torque_curve", Quantity::Torque, "20", "MNm", "20 MNm"),
         Err(
             "`torque_curve` torques accept the units `Nm` (`N·m`), `Ncm` (`N·cm`), `mNm` \
              (`mN·m`) (got `20 MNm`); the prefix `M` (mega, 1e6) is not accepted"
@@ -218,7 +218,7 @@ fn a_suggestion_keeps_the_scale() {
         )
     );
     assert_eq!(
-        curve_point(Quantity::Frequency, "2", "mhz", "2 mhz"),
+        curve_point("torque_curve", Quantity::Frequency, "2", "mhz", "2 mhz"),
         Err(
             "`torque_curve` frequencies accept the units `Hz`, `kHz`, `MHz` (got `2 mhz`); \
              the prefix `m` (milli, 1e-3) is not accepted"

@@ -7,6 +7,7 @@ use std::vec::Vec;
 
 use super::suggest::{Hint, did_you_mean};
 use super::{Arg, Diagnostic, Value, quoted, unit, units};
+use crate::bands::{Bands, MAX_BANDS};
 use crate::cpu::{CORES, Core, Cpu, MAX_AXES};
 use crate::driver::{Driver, PRESETS};
 use crate::motor::{
@@ -533,4 +534,49 @@ pub(crate) fn cpu<L: Clone>(c: &mut Collector<'_, L>) -> Option<Cpu> {
         max_load: load.unwrap_or(0.5),
         ..Cpu::new(core, cpu_hz)
     })
+}
+
+/// Resonance bands (`avoid`), full steps/s, in a table of the motor's
+/// `microsteps` (1 without a motor). `None` without the key, or with an
+/// error (reported).
+pub(crate) fn avoid<L: Clone>(c: &mut Collector<'_, L>, motor: Option<&Motor>) -> Option<Bands> {
+    let (i, arg) = c.find(Key::AVOID)?;
+    let points = match &arg.value {
+        Value::Points(points) => points.clone(),
+        Value::Refused { message, part } => {
+            let (message, part) = (message.clone(), *part);
+            c.at_part(i, part, message);
+            return None;
+        }
+        other => {
+            let message = format!(
+                "`avoid` expects a list of (lowest, highest) full steps/s bands, such as \
+                 `[(80, 120)]` in the macro or `[[80, 120]]` in a profiles file, got {}",
+                other.quoted()
+            );
+            c.at_arg(i, false, message);
+            return None;
+        }
+    };
+    if points.is_empty() || points.len() > MAX_BANDS {
+        let message = format!(
+            "`avoid` must have from 1 to {MAX_BANDS} bands (got {})",
+            points.len()
+        );
+        c.at_arg(i, false, message);
+        return None;
+    }
+    for (part, &(lo, hi)) in points.iter().enumerate() {
+        if !(lo.is_finite() && hi.is_finite() && lo >= 0.0 && lo < hi) {
+            let message = format!(
+                "`avoid` bands are (lowest, highest) full steps/s, from 0 up, the lowest below \
+                 the highest (got ({}, {}))",
+                Num(lo),
+                Num(hi)
+            );
+            c.at_part(i, part, message);
+            return None;
+        }
+    }
+    Some(Bands::new(&points, motor.map_or(1, |m| m.microsteps)))
 }

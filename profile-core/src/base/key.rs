@@ -113,6 +113,9 @@ impl Key {
     /// `axes`: the axes one step interrupt steps.
     pub const AXES: Key = Key("axes");
 
+    /// `avoid`: speed bands where the motor rings, in full steps/s.
+    pub const AVOID: Key = Key("avoid");
+
     /// The key as written by users.
     pub const fn name(self) -> &'static str {
         self.0
