@@ -181,7 +181,15 @@ pub fn write_plots(
         let spec = p.table.spec();
         let tps = spec.timer.timer_hz as f64 / spec.timer.ticks_per_step as f64;
         let s = Series::new(&p.name, color, &periods, tps, spec);
-        plots::profile(&out.path(format!("{}.svg", p.name)), &p.name, &s)?;
+        let bands: Vec<plots::Band> = p.avoid.map_or_else(Vec::new, |b| {
+            let times = b.time_in(&spec.timer, &periods);
+            b.steps()
+                .into_iter()
+                .zip(times)
+                .map(|((lo, hi), t)| (lo, hi, t))
+                .collect()
+        });
+        plots::profile(&out.path(format!("{}.svg", p.name)), &p.name, &s, &bands)?;
         let mut csv = String::from("step,period_ticks,start_s,frequency_hz\n");
         for (k, (&period, &(t, f))) in periods.iter().zip(&s.steps).enumerate() {
             csv.push_str(&format!("{k},{period},{t:.9},{f:.6}\n"));

@@ -232,7 +232,11 @@ where
 }
 
 /// One profile: frequency against time, against step, acceleration against time.
-pub fn profile(path: &Path, title: &str, s: &Series) -> PlotResult {
+/// A profile's resonance band on its charts: `(lowest, highest)` steps/s
+/// and the seconds the ramp spends inside.
+pub type Band = (f64, f64, f64);
+
+pub fn profile(path: &Path, title: &str, s: &Series, bands: &[Band]) -> PlotResult {
     let root = SVGBackend::new(path, (900, 1000)).into_drawing_area();
     root.fill(&WHITE)?;
     let areas = root.split_evenly((3, 1));
@@ -242,12 +246,29 @@ pub fn profile(path: &Path, title: &str, s: &Series) -> PlotResult {
         .enumerate()
         .map(|(i, p)| (i as f64, p.1))
         .collect();
-    chart(
+    let mut frequency = vec![Line {
+        label: s.label.clone(),
+        color: s.color,
+        points: s.steps.clone(),
+    }];
+    let end = s.duration();
+    for &(lo, hi, inside) in bands {
+        frequency.push(Line {
+            label: format!(
+                "avoid {lo}..{hi} steps/s: the ramp {:.3} ms inside",
+                inside * 1e3
+            ),
+            color: RED,
+            points: vec![(0.0, lo), (end, lo), (end, hi), (0.0, hi), (0.0, lo)],
+        });
+    }
+    chart_lines(
         &areas[0],
         &format!("{title}: frequency against time"),
         "time (s)",
         "step frequency (Hz)",
-        &[(s, s.steps.clone())],
+        &frequency,
+        Some(SeriesLabelPosition::LowerRight),
     )?;
     chart(
         &areas[1],

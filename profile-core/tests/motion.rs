@@ -309,3 +309,74 @@ fn the_position_wraps_at_the_ends_of_i64() {
         assert_eq!(axis.position(), start.wrapping_add(sign * steps), "{start}");
     }
 }
+
+/// A cruise set inside a band the player avoids: the fastest entry not
+/// shorter than asked and outside every band (the slowest where none is),
+/// by `set_cruise_period` and `set_cruise`, against that rule written
+/// directly, on pseudo-random tables, bands and speeds.
+#[test]
+fn a_cruise_keeps_out_of_the_bands_on_the_slow_side() {
+    let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+    let mut next = |m: u64| {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        seed % m
+    };
+    let mut moved = 0;
+    for _ in 0..2000 {
+        // Strictly falling periods from about 6000.
+        let len = 2 + next(30) as usize;
+        let mut table = vec![6000u16];
+        for _ in 1..len {
+            let last = *table.last().unwrap();
+            table.push(last - 1 - next(200) as u16);
+        }
+        let bands: Vec<(u32, u32)> = (0..1 + next(3))
+            .map(|_| {
+                let a = 100 + next(6000) as u32;
+                (a, a + next(1500) as u32)
+            })
+            .collect();
+        let inside = |p: u16| bands.iter().any(|&(s, l)| (s..=l).contains(&u32::from(p)));
+        // The rule: the shortest period not shorter than `ticks` outside
+        // every band; the slowest entry where none is.
+        let rule = |ticks: u32| {
+            table
+                .iter()
+                .copied()
+                .filter(|&p| u32::from(p) >= ticks && !inside(p))
+                .min()
+                .unwrap_or(table[0])
+        };
+        let cruise = |player: &mut Player<'_, u16>| {
+            player.run();
+            let mut last = 0;
+            for _ in 0..len + 3 {
+                last = player.next_period().unwrap();
+            }
+            last
+        };
+        let ticks = u32::from(table[len - 1]) + next(6500) as u32;
+        let mut player = Player::new(Ramp::steps(&table)).avoiding(&bands);
+        player.set_cruise_period(ticks.min(u32::from(u16::MAX)) as u16);
+        let want = rule(ticks.min(u32::from(u16::MAX)));
+        assert_eq!(cruise(&mut player), want, "{table:?} {bands:?} {ticks}");
+        // By index: the entry itself, or past its band.
+        let pos = next(len as u64) as usize;
+        let mut player = Player::new(Ramp::steps(&table)).avoiding(&bands);
+        player.set_cruise(pos as u32);
+        let want = match bands
+            .iter()
+            .find(|&&(s, l)| (s..=l).contains(&u32::from(table[pos])))
+        {
+            Some(&(_, longest)) => rule(longest + 1),
+            None => table[pos],
+        };
+        if want != table[pos] {
+            moved += 1;
+        }
+        assert_eq!(cruise(&mut player), want, "{table:?} {bands:?} at {pos}");
+    }
+    assert!(moved > 200, "{moved} cruises moved out of a band");
+}

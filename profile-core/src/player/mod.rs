@@ -58,6 +58,7 @@ mod ramps;
 use core::marker::PhantomData;
 
 use crate::base::timer::TableWord;
+pub use planning::motion::band_periods;
 use planning::plan::{Known, Plan, Run, Sides, Source};
 use planning::reader::{Reader, RunRead};
 pub use playing::axes::Axes;
@@ -137,6 +138,8 @@ pub struct Player<'a, W, L = AnyLayout> {
     /// played yet; set on the buffered step's path past its run, where
     /// the move has ended, so that the run's own path does not pay for it.
     rested: bool,
+    /// Period bands a cruise keeps out of ([`Player::avoiding`]).
+    avoid: &'a [(u32, u32)],
     layout: PhantomData<L>,
 }
 
@@ -202,7 +205,10 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// ```
     #[must_use]
     pub fn with_decel<R: IntoRamp<'a, W, Layout = L>>(self, decel: R) -> Self {
-        Self::build(self.accel, decel.into_ramp())
+        Self {
+            avoid: self.avoid,
+            ..Self::build(self.accel, decel.into_ramp())
+        }
     }
 }
 
@@ -267,6 +273,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             before: 0,
             plan: Plan::EMPTY,
             rested: true,
+            avoid: &[],
             layout: PhantomData,
         }
     }
@@ -340,8 +347,13 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
 
     /// Cruises at step `pos` of the acceleration ramp (the entry index for a
     /// table without divider) instead of its top; takes effect by walking the
-    /// ramp up or down one step per step. Clamped to the ramp.
+    /// ramp up or down one step per step. Clamped to the ramp. An entry
+    /// inside a band the player avoids ([`Player::avoiding`]) gives way to
+    /// the fastest entry slower than the band.
     pub fn set_cruise(&mut self, pos: u32) {
+        if !self.avoid.is_empty() {
+            return self.set_cruise_avoiding(pos);
+        }
         self.cruise_at(pos, false);
     }
 

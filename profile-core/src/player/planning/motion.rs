@@ -97,10 +97,87 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// let jog: Vec<u16> = (0..4).map(|_| player.next_period().unwrap()).collect();
     /// assert_eq!(jog, [4000, 3000, 3000, 3000]);
     /// ```
+    ///
+    /// An entry inside a band the player avoids ([`Player::avoiding`])
+    /// gives way to the fastest entry slower than the band.
     pub fn set_cruise_period(&mut self, period: W) {
+        if !self.avoid.is_empty() {
+            return self.cruise_outside_bands(period.into_ticks());
+        }
         match self.cruise_position(period.into_ticks()) {
             (_, _, Some(held)) => self.cruise_at_found(held),
             (pos, none_later, None) => self.cruise_at(pos, none_later),
+        }
+    }
+
+    /// The same player keeping its cruise out of `bands` of periods,
+    /// `(shortest, longest)` inclusive as the table holds them
+    /// ([`band_periods`] makes them from step
+    /// rates): a cruise that [`Player::set_cruise`] or
+    /// [`Player::set_cruise_period`] would set inside a band is the fastest
+    /// entry slower than the band instead, the side never faster than
+    /// asked (the slowest entry where no entry is slower). Moves still
+    /// cross the bands as they accelerate and decelerate; the ramp's top,
+    /// where [`Player::start`] cruises, is the table's to keep out of them
+    /// (a profile's `avoid` checks it at compile time).
+    ///
+    /// ```
+    /// use profile_core::player::{Player, Ramp};
+    ///
+    /// static RAMP: [u16; 5] = [4000, 3000, 2000, 1500, 1200];
+    /// // The motor rings between 1800 and 3200 ticks a step.
+    /// static AVOID: [(u32, u32); 1] = [(1800, 3200)];
+    /// let mut player = Player::new(Ramp::steps(&RAMP)).avoiding(&AVOID);
+    /// player.set_cruise_period(2000); // 2000 and 3000 are in the band
+    /// player.run();
+    /// let jog: Vec<u16> = (0..3).map(|_| player.next_period().unwrap()).collect();
+    /// assert_eq!(jog, [4000, 4000, 4000]);
+    /// ```
+    #[must_use]
+    pub fn avoiding(mut self, bands: &'a [(u32, u32)]) -> Self {
+        self.avoid = bands;
+        self
+    }
+
+    /// The longest period of the band the entry at `pos` lies in, if any.
+    fn band_at(&self, pos: u32) -> Option<u32> {
+        let period = self.accel.period_at(pos)?.into_ticks();
+        self.avoid
+            .iter()
+            .find(|&&(shortest, longest)| period >= shortest && period <= longest)
+            .map(|&(_, longest)| longest)
+    }
+
+    /// The period to search from instead of `ticks` so that the entry found
+    /// lies outside every band: past each band the search lands in.
+    fn outside_bands(&self, mut ticks: u32) -> u32 {
+        for _ in 0..self.avoid.len() {
+            match self.band_at(self.cruise_position(ticks).0) {
+                Some(longest) if longest >= ticks && longest < u32::MAX => ticks = longest + 1,
+                _ => break,
+            }
+        }
+        ticks
+    }
+
+    /// [`Player::set_cruise_period`] with bands to avoid.
+    #[cold]
+    #[inline(never)]
+    fn cruise_outside_bands(&mut self, ticks: u32) {
+        let ticks = self.outside_bands(ticks);
+        match self.cruise_position(ticks) {
+            (_, _, Some(held)) => self.cruise_at_found(held),
+            (pos, none_later, None) => self.cruise_at(pos, none_later),
+        }
+    }
+
+    /// [`Player::set_cruise`] with bands to avoid.
+    #[cold]
+    #[inline(never)]
+    pub(in crate::player) fn set_cruise_avoiding(&mut self, pos: u32) {
+        match self.band_at(pos.min(self.accel_last)) {
+            Some(longest) if longest < u32::MAX => self.cruise_outside_bands(longest + 1),
+            _ => self.cruise_at(pos, false),
         }
     }
 
@@ -255,6 +332,33 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             }
         }
     }
+}
+
+/// A band of step rates, `lowest` to `highest` steps/s, as the periods of a
+/// timer of `steps_hz` ticks a step (its rate over `ticks_per_step`) that
+/// play in it, `(shortest, longest)` inclusive: what
+/// [`Player::avoiding`] takes. A resonance band in full steps/s is its
+/// motor's microsteps times faster in table steps; add a table's
+/// `reload_offset` to both where it stores one. `lowest = 0` reaches every
+/// period.
+///
+/// ```
+/// use profile_core::player::band_periods;
+///
+/// // 100 to 150 full steps/s in 1/8 steps on a 1 MHz timer.
+/// const AVOID: [(u32, u32); 1] = [band_periods(1_000_000, 800, 1200)];
+/// assert_eq!(AVOID, [(834, 1250)]);
+/// ```
+pub const fn band_periods(steps_hz: u32, lowest: u32, highest: u32) -> (u32, u32) {
+    let shortest = match highest {
+        0 => u32::MAX,
+        h => steps_hz.div_ceil(h),
+    };
+    let longest = match lowest {
+        0 => u32::MAX,
+        l => steps_hz / l,
+    };
+    (shortest, longest)
 }
 
 #[cfg(test)]
