@@ -33,10 +33,7 @@ pub fn text(path: &str, profiles: &Profiles) -> Result<String, Error> {
 /// For each profile that names a step driver: its times, the shortest step
 /// it takes against the table's shortest period, and the headroom.
 fn print_drivers(out: &mut String, profiles: &[Profile]) {
-    let bound: Vec<(&Profile, &profile_codegen::driver::Driver)> = profiles
-        .iter()
-        .filter_map(|p| Some((p, p.driver.as_ref()?)))
-        .collect();
+    let bound = naming(profiles, |p| p.driver.as_ref());
     if bound.is_empty() {
         return;
     }
@@ -70,10 +67,7 @@ fn print_drivers(out: &mut String, profiles: &[Profile]) {
 /// For each profile that names its core and clock: the step interrupt's
 /// cycles and the CPU's load at the table's fastest entry.
 fn print_cpu(out: &mut String, profiles: &[Profile]) {
-    let bound: Vec<(&Profile, &profile_codegen::cpu::Cpu)> = profiles
-        .iter()
-        .filter_map(|p| Some((p, p.cpu.as_ref()?)))
-        .collect();
+    let bound = naming(profiles, |p| p.cpu.as_ref());
     if bound.is_empty() {
         return;
     }
@@ -120,10 +114,7 @@ fn print_cpu(out: &mut String, profiles: &[Profile]) {
 /// For each profile that names resonance bands: each band, in full steps/s
 /// and in the table's steps/s, and the time the ramp spends in it.
 fn print_bands(out: &mut String, profiles: &[Profile]) {
-    let bound: Vec<(&Profile, &profile_codegen::bands::Bands)> = profiles
-        .iter()
-        .filter_map(|p| Some((p, p.avoid.as_ref()?)))
-        .collect();
+    let bound = naming(profiles, |p| p.avoid.as_ref());
     if bound.is_empty() {
         return;
     }
@@ -151,6 +142,17 @@ fn print_bands(out: &mut String, profiles: &[Profile]) {
             );
         }
     }
+}
+
+/// The profiles that name what `field` reads, with it.
+fn naming<'a, T>(
+    profiles: &'a [Profile],
+    field: impl Fn(&'a Profile) -> Option<&'a T>,
+) -> Vec<(&'a Profile, &'a T)> {
+    profiles
+        .iter()
+        .filter_map(|p| Some((p, field(p)?)))
+        .collect()
 }
 
 /// A driver's time in µs, to the nanosecond.

@@ -426,13 +426,7 @@ fn a_new_target_stops_and_goes_on_from_rest() {
 #[test]
 fn the_next_directions_are_the_next_edges() {
     static ACCEL: [u16; 12] = [900, 700, 560, 460, 390, 340, 300, 270, 250, 235, 225, 220];
-    let mut seed = 0x2545_f491_4f6c_dd1du64;
-    let mut next = |m: u64| {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        seed % m
-    };
+    let mut next = common::xorshift(0x2545_f491_4f6c_dd1du64);
     let mut reversals = 0;
     for _ in 0..200 {
         let mut axes = Axes::new(Player::new(Ramp::steps(&ACCEL)), [0i64; 3]);

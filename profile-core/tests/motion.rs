@@ -316,13 +316,7 @@ fn the_position_wraps_at_the_ends_of_i64() {
 /// directly, on pseudo-random tables, bands and speeds.
 #[test]
 fn a_cruise_keeps_out_of_the_bands_on_the_slow_side() {
-    let mut seed = 0x9e37_79b9_7f4a_7c15u64;
-    let mut next = |m: u64| {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        seed % m
-    };
+    let mut next = common::xorshift(0x9e37_79b9_7f4a_7c15u64);
     let mut moved = 0;
     for _ in 0..2000 {
         // Strictly falling periods from about 6000.

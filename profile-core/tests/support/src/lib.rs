@@ -178,3 +178,15 @@ pub fn shape(max_len: usize, max_count: u32, runs: u32) -> impl Strategy<Value =
         runs => any_runs().prop_map(Shape::Runs),
     ]
 }
+
+/// A small deterministic generator (xorshift64) for tests that walk many
+/// cases without proptest: each call gives a number below `m`.
+pub fn xorshift(seed: u64) -> impl FnMut(u64) -> u64 {
+    let mut state = seed.max(1);
+    move |m: u64| {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        state % m
+    }
+}
