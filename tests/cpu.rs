@@ -60,4 +60,15 @@ fn the_fastest_entry_is_exact_to_the_tick() {
     // ticks are 176 cycles).
     let whole = format!("{}cpu_load = 1\n", file("90909"));
     assert!(Profiles::parse("profiles.toml", &whole).is_ok());
+    // A clock without its core: the message names every core.
+    let clock_only = "[profiles.p]\ncurve = \"linear\"\nfmin = 1000\nfmax = 2000\naccel = 10_000\n\
+                      timer_hz = \"2MHz\"\ncpu_hz = \"16MHz\"\n";
+    let e = Profiles::parse("profiles.toml", clock_only).unwrap_err();
+    assert!(
+        e.to_string().contains(
+            "`cpu_hz` checks the step interrupt's budget, which needs `core` (one of \
+             \"cortex-m0\", \"cortex-m3\", \"cortex-m4f\", \"avr\") and `cpu_hz`"
+        ),
+        "{e}"
+    );
 }

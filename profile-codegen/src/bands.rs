@@ -76,11 +76,11 @@ impl Bands {
 
     /// The band a rate (steps/s) lies in, bounds included.
     pub fn containing(&self, rate: f64) -> Option<(f64, f64)> {
-        let m = f64::from(self.microsteps);
         self.full_steps()
             .iter()
-            .copied()
-            .find(|&(lo, hi)| rate >= lo * m && rate <= hi * m)
+            .zip(self.steps())
+            .find(|(_, (lo, hi))| (*lo..=*hi).contains(&rate))
+            .map(|(full, _)| *full)
     }
 
     /// The ramp's top (its shortest period, `ticks` of `timer`), where the
@@ -104,16 +104,12 @@ impl Bands {
     /// periods of the steps whose rate lies in it, summed.
     pub fn time_in(&self, timer: &Timer, periods: &[u32]) -> Vec<f64> {
         let tick = f64::from(timer.ticks_per_step) / timer.timer_hz as f64;
-        let m = f64::from(self.microsteps);
-        self.full_steps()
-            .iter()
-            .map(|&(lo, hi)| {
+        self.steps()
+            .into_iter()
+            .map(|(lo, hi)| {
                 periods
                     .iter()
-                    .filter(|&&p| {
-                        let r = rate(timer, p);
-                        r >= lo * m && r <= hi * m
-                    })
+                    .filter(|&&p| (lo..=hi).contains(&rate(timer, p)))
                     .map(|&p| f64::from(p) * tick)
                     .sum()
             })

@@ -126,37 +126,28 @@ pub fn compile<L: Clone>(
         TableLayout::Runs(e) => spec.run_table(e).map(Generated::Runs),
     }
     .map_err(at)?;
+    // The table one period a step, for the checks that read it: made once.
+    let periods = std::cell::OnceCell::new();
+    let periods = || periods.get_or_init(|| table.step_periods());
+    let timer = &spec.spec().timer;
     let torque = match &request.motor {
         None => None,
-        Some(motor) => Some(
-            motor
-                .check(spec.spec(), &table.step_periods())
-                .map_err(motor_at)?,
-        ),
+        Some(motor) => Some(motor.check(spec.spec(), periods()).map_err(motor_at)?),
     };
     if let Some(driver) = &request.driver {
         driver
-            .check(&spec.spec().timer, &table.step_periods())
+            .check(timer, periods())
             .map_err(|e| std::vec![driver_at(&e, args, whole, &prefix)])?;
     }
     if let Some(cpu) = &request.cpu {
-        cpu.check(
-            &spec.spec().timer,
-            Layout::of(&table),
-            &table.step_periods(),
-        )
-        .map_err(|e| std::vec![cpu_at(&e, cpu, args, whole, &prefix)])?;
+        cpu.check(timer, Layout::of(&table), periods())
+            .map_err(|e| std::vec![cpu_at(&e, cpu, args, whole, &prefix)])?;
     }
     if let Some(bands) = &request.avoid {
-        bands
-            .check(&spec.spec().timer, &table.step_periods())
-            .map_err(|e| {
-                let fmax = args.iter().find(|a| a.key == Key::FMAX.name());
-                std::vec![Diagnostic {
-                    loc: fmax.map_or(whole, |a| &a.value_loc).clone(),
-                    message: format!("{prefix}{}", e.message()),
-                }]
-            })?;
+        bands.check(timer, periods()).map_err(|e| {
+            let message = format!("{prefix}{}", e.message());
+            std::vec![schema::at_value(Some(Key::FMAX), args, whole, message)]
+        })?;
     }
     Ok(Compiled {
         spec,
@@ -178,17 +169,14 @@ fn cpu_at<L: Clone>(
     whole: &L,
     prefix: &str,
 ) -> Diagnostic<L> {
-    let fmax = args.iter().find(|a| a.key == Key::FMAX.name());
     let clock = if cpu.cpu_hz >= 1e6 {
         format!("{} MHz", crate::numbers::Num(cpu.cpu_hz / 1e6))
     } else {
         format!("{} kHz", crate::numbers::Num(cpu.cpu_hz / 1e3))
     };
     let what = format!("`core = \"{}\"` at {clock}", cpu.core.name());
-    Diagnostic {
-        loc: fmax.map_or(whole, |a| &a.value_loc).clone(),
-        message: format!("{prefix}{}", e.message(&what, cpu)),
-    }
+    let message = format!("{prefix}{}", e.message(&what, cpu));
+    schema::at_value(Some(Key::FMAX), args, whole, message)
 }
 
 /// A table too fast for its driver, at `fmax` (what to lower), or at the
@@ -199,8 +187,10 @@ fn driver_at<L: Clone>(
     whole: &L,
     prefix: &str,
 ) -> Diagnostic<L> {
-    let named = |key: Key| args.iter().find(|a| a.key == key.name());
-    let what = match (named(Key::DRIVER), e.dir_setup) {
+    let what = match (
+        args.iter().find(|a| a.key == Key::DRIVER.name()),
+        e.dir_setup,
+    ) {
         (Some(arg), _) => format!("`driver = \"{}\"`", arg.value),
         (None, None) => "`step_pulse` + `step_space`".to_string(),
         (None, Some(_)) => "`dir_setup`".to_string(),
@@ -211,8 +201,6 @@ fn driver_at<L: Clone>(
     } else {
         Key::FMAX
     };
-    Diagnostic {
-        loc: named(at).map_or(whole, |a| &a.value_loc).clone(),
-        message: format!("{prefix}{}", e.message(&what)),
-    }
+    let message = format!("{prefix}{}", e.message(&what));
+    schema::at_value(Some(at), args, whole, message)
 }

@@ -154,15 +154,22 @@ pub fn locate_motor<L: Clone>(error: &MotorError, args: &[Arg<L>], whole: &L) ->
 
 /// Places a core error at the value of the key it blames (or on `whole`).
 pub fn locate<L: Clone>(error: &Error, args: &[Arg<L>], whole: &L) -> Diagnostic<L> {
-    let loc = error
-        .key()
+    at_value(error.key(), args, whole, error.to_string())
+}
+
+/// `message` at the value of `key` among `args`, or on `whole` where the
+/// key is not given.
+pub(crate) fn at_value<L: Clone>(
+    key: Option<Key>,
+    args: &[Arg<L>],
+    whole: &L,
+    message: String,
+) -> Diagnostic<L> {
+    let loc = key
         .and_then(|k| args.iter().find(|a| a.key == k.name()))
-        .map(|a| a.value_loc.clone())
-        .unwrap_or_else(|| whole.clone());
-    Diagnostic {
-        loc,
-        message: error.to_string(),
-    }
+        .map_or(whole, |a| &a.value_loc)
+        .clone();
+    Diagnostic { loc, message }
 }
 
 /// `v` to six significant digits, as messages print figures.

@@ -25,6 +25,7 @@ pub mod units;
 mod values;
 
 pub(crate) use curves::curve_keys;
+pub(crate) use describe::at_value;
 pub use describe::{describe, describe_motor, locate, locate_motor};
 pub(crate) use request::value_problems;
 pub use request::{Request, read};

@@ -502,13 +502,13 @@ pub(crate) fn cpu<L: Clone>(c: &mut Collector<'_, L>) -> Option<Cpu> {
         (Some(core), Some(hz)) => (core, hz),
         (core, _) => {
             let (given, missing) = match core {
-                Some(_) => (Key::CORE, "`cpu_hz`, the core's clock"),
+                Some(_) => (Key::CORE, "`cpu_hz`, the core's clock".to_string()),
                 None => {
                     let given = BUDGET.into_iter().find(|k| c.find(*k).is_some())?;
-                    (
-                        given,
-                        "`core` (one of \"cortex-m0\", \"cortex-m3\", \"cortex-m4f\", \"avr\") and `cpu_hz`",
-                    )
+                    let names: Vec<String> =
+                        CORES.iter().map(|(n, _)| format!("\"{n}\"")).collect();
+                    let missing = format!("`core` (one of {}) and `cpu_hz`", names.join(", "));
+                    (given, missing)
                 }
             };
             let (i, _) = c.find(given)?;

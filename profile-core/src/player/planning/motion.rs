@@ -101,10 +101,18 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// An entry inside a band the player avoids ([`Player::avoiding`])
     /// gives way to the fastest entry slower than the band.
     pub fn set_cruise_period(&mut self, period: W) {
-        if !self.avoid.is_empty() {
-            return self.cruise_outside_bands(period.into_ticks());
-        }
-        match self.cruise_position(period.into_ticks()) {
+        self.cruise_from(period.into_ticks());
+    }
+
+    /// Cruises at the last entry not shorter than `ticks` outside every
+    /// band ([`Player::set_cruise_period`] in ticks).
+    #[inline(always)]
+    fn cruise_from(&mut self, ticks: u32) {
+        let ticks = match self.avoid.is_empty() {
+            true => ticks,
+            false => self.outside_bands(ticks),
+        };
+        match self.cruise_position(ticks) {
             (_, _, Some(held)) => self.cruise_at_found(held),
             (pos, none_later, None) => self.cruise_at(pos, none_later),
         }
@@ -150,6 +158,8 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
 
     /// The period to search from instead of `ticks` so that the entry found
     /// lies outside every band: past each band the search lands in.
+    #[cold]
+    #[inline(never)]
     fn outside_bands(&self, mut ticks: u32) -> u32 {
         for _ in 0..self.avoid.len() {
             match self.band_at(self.cruise_position(ticks).0) {
@@ -160,23 +170,12 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         ticks
     }
 
-    /// [`Player::set_cruise_period`] with bands to avoid.
-    #[cold]
-    #[inline(never)]
-    fn cruise_outside_bands(&mut self, ticks: u32) {
-        let ticks = self.outside_bands(ticks);
-        match self.cruise_position(ticks) {
-            (_, _, Some(held)) => self.cruise_at_found(held),
-            (pos, none_later, None) => self.cruise_at(pos, none_later),
-        }
-    }
-
     /// [`Player::set_cruise`] with bands to avoid.
     #[cold]
     #[inline(never)]
     pub(in crate::player) fn set_cruise_avoiding(&mut self, pos: u32) {
         match self.band_at(pos.min(self.accel_last)) {
-            Some(longest) if longest < u32::MAX => self.cruise_outside_bands(longest + 1),
+            Some(longest) if longest < u32::MAX => self.cruise_from(longest + 1),
             _ => self.cruise_at(pos, false),
         }
     }

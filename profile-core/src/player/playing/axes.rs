@@ -336,14 +336,9 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     pub fn next_directions(&self) -> [Direction; N] {
         match self.then {
             Some(target) if self.player.remaining() == 0 => {
+                // As the move to it will start ([`Axes::start_by`]).
                 let position = self.position();
-                let mut directions = [Direction::Forward; N];
-                for ((d, t), p) in directions.iter_mut().zip(target).zip(position) {
-                    if t < p {
-                        *d = Direction::Backward;
-                    }
-                }
-                directions
+                core::array::from_fn(|i| Direction::of(target[i].saturating_sub(position[i])))
             }
             _ => self.directions,
         }
@@ -420,11 +415,7 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
         let mut lead = 0;
         for (i, &d) in delta.iter().enumerate() {
             self.steps[i] = u32::try_from(d.unsigned_abs()).unwrap_or(u32::MAX);
-            self.directions[i] = if d < 0 {
-                Direction::Backward
-            } else {
-                Direction::Forward
-            };
+            self.directions[i] = Direction::of(d);
             if self.steps[i] > self.steps[lead] {
                 lead = i;
             }

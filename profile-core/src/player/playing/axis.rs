@@ -20,6 +20,15 @@ impl Direction {
             Direction::Backward => -1,
         }
     }
+
+    /// The way a move of `delta` steps turns (forward for none).
+    pub(crate) const fn of(delta: i64) -> Self {
+        if delta < 0 {
+            Direction::Backward
+        } else {
+            Direction::Forward
+        }
+    }
 }
 
 /// A move was asked for while another is playing.
@@ -205,10 +214,10 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
         match self.then {
             Then::Rest => self.direction,
             Then::Run(direction) => direction,
-            Then::To(target) => match target.cmp(&self.position()) {
-                core::cmp::Ordering::Greater => Direction::Forward,
-                core::cmp::Ordering::Less => Direction::Backward,
-                core::cmp::Ordering::Equal => self.direction,
+            // As the move to it will start ([`Axis::start_to`]).
+            Then::To(target) => match target.saturating_sub(self.position()) {
+                0 => self.direction,
+                delta => Direction::of(delta),
             },
         }
     }
@@ -323,11 +332,7 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
         let delta = target.saturating_sub(position);
         let steps = u32::try_from(delta.unsigned_abs()).unwrap_or(u32::MAX);
         if delta != 0 {
-            self.direction = if delta < 0 {
-                Direction::Backward
-            } else {
-                Direction::Forward
-            };
+            self.direction = Direction::of(delta);
         }
         self.player.begin(steps);
         self.end = position.wrapping_add(self.direction.sign() * i64::from(steps));
