@@ -121,9 +121,9 @@ fn judged(motor: &Motor, curve: Curve) -> Option<f64> {
 }
 
 /// The shortest time of `family(scale)` over the scales at which the
-/// check passes: bisection on the scale (in its logarithm, 24 halvings: to
-/// a millionth of it) between `lo`, which passes, and `hi`, which does
-/// not.
+/// check passes: bisection on the scale (in its logarithm, 16 halvings:
+/// to a twenty-thousandth of it, finer than the times' printed tenth of a
+/// millisecond) between `lo`, which passes, and `hi`, which does not.
 fn steepest(
     motor: &Motor,
     (mut lo, mut hi): (f64, f64),
@@ -134,7 +134,7 @@ fn steepest(
     if passes(hi).is_some() {
         return passes(hi);
     }
-    for _ in 0..24 {
+    for _ in 0..16 {
         let mid = (lo * hi).sqrt();
         if passes(mid).is_some() {
             lo = mid;
@@ -171,54 +171,63 @@ fn floor(motor: &Motor, fmin: f64, fmax: f64) -> f64 {
     sum * h / 3.0
 }
 
-#[test]
-fn the_fastest_ramp_against_the_steepest_of_each_shape() {
-    println!(
-        "{:<42} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9}",
-        "motor", "torque_l", "linear", "3-stage", "jerk_lim", "shorter", "floor", "at most"
-    );
-    let mut quarter_shorter = 0;
-    for case in cases() {
-        let motor = &case.motor;
-        let fmax = case.fmax;
-        // The ramp: its own start, as a profile without `fmin` takes it.
-        let mut fmin = motor.start_limit(fmax).hz() * MARGIN;
-        let mut ramp = None;
-        for _ in 0..20 {
-            let r = motor
-                .torque_limited(Some(fmin), fmax, MARGIN, Timer::new(TIMER_HZ))
-                .unwrap();
-            if judged(motor, Curve::TorqueLimited(r)).is_some() {
-                ramp = Some(r);
-                break;
-            }
-            fmin *= 0.8;
+/// One motor's figures: the fastest ramp's time, the steepest of each
+/// other shape that passes (`None` where none does), and the floor.
+struct Row {
+    time: f64,
+    others: [Option<f64>; 3],
+    least: f64,
+}
+
+fn row(case: &Case) -> Row {
+    let motor = &case.motor;
+    let fmax = case.fmax;
+    // The ramp: its own start, as a profile without `fmin` takes it.
+    let mut fmin = motor.start_limit(fmax).hz() * MARGIN;
+    let mut ramp = None;
+    for _ in 0..20 {
+        let r = motor
+            .torque_limited(Some(fmin), fmax, MARGIN, Timer::new(TIMER_HZ))
+            .unwrap();
+        if judged(motor, Curve::TorqueLimited(r)).is_some() {
+            ramp = Some(r);
+            break;
         }
-        let ramp = ramp.unwrap_or_else(|| panic!("{}: no start the check accepts", case.name));
-        let time = judged(motor, Curve::TorqueLimited(ramp)).unwrap();
-        let span = fmax - fmin;
-        // The others' accelerations, in spans a second, from an eighth
-        // to three times the fastest ramp's mean.
-        let mean = 1.0 / time;
-        let bracket = (mean / 8.0, 3.0 * mean);
-        let linear = steepest(motor, bracket, &|a| {
-            Some(Curve::Linear(Linear {
-                fmin,
-                fmax,
-                extent: LinearExtent::Accel(a * span),
-            }))
-        });
-        // Three stages: where they meet, and the exponential's shape, a
-        // few ways; the peak acceleration scaled.
-        let mut three = None::<f64>;
-        for (f1, f2, shape) in [
+        fmin *= 0.8;
+    }
+    let ramp = ramp.unwrap_or_else(|| panic!("{}: no start the check accepts", case.name));
+    let time = judged(motor, Curve::TorqueLimited(ramp)).unwrap();
+    let span = fmax - fmin;
+    // The others' accelerations, in spans a second, from an eighth to
+    // three times the fastest ramp's mean.
+    let mean = 1.0 / time;
+    let bracket = (mean / 8.0, 3.0 * mean);
+    let shortest = |families: &mut dyn Iterator<Item = Option<f64>>| {
+        families.fold(None::<f64>, |best, t| match (best, t) {
+            (Some(a), Some(b)) => Some(a.min(b)),
+            (a, b) => a.or(b),
+        })
+    };
+    let linear = steepest(motor, bracket, &|a| {
+        Some(Curve::Linear(Linear {
+            fmin,
+            fmax,
+            extent: LinearExtent::Accel(a * span),
+        }))
+    });
+    // Three stages: where they meet, and the exponential's shape, a few
+    // ways; the peak acceleration scaled.
+    let three = shortest(
+        &mut [
             (0.1, 0.5, 1.0),
             (0.2, 0.6, 2.0),
             (0.3, 0.7, 4.0),
             (0.1, 0.8, 8.0),
             (0.05, 0.9, 2.0),
-        ] {
-            let t = steepest(motor, bracket, &|a| {
+        ]
+        .into_iter()
+        .map(|(f1, f2, shape)| {
+            steepest(motor, bracket, &|a| {
                 let accel = a * span;
                 Some(Curve::ThreeStage(ThreeStage {
                     fmin,
@@ -228,46 +237,65 @@ fn the_fastest_ramp_against_the_steepest_of_each_shape() {
                     f2: fmin + f2 * span,
                     shape: shape * accel / span,
                 }))
-            });
-            three = match (three, t) {
-                (Some(a), Some(b)) => Some(a.min(b)),
-                (a, b) => a.or(b),
-            };
-        }
-        // Jerk-limited: the jerk in proportion to the acceleration's
-        // square over the span, a few ways.
-        let mut jerk = None::<f64>;
-        for k in [1.0, 4.0, 16.0, 64.0] {
-            let t = steepest(motor, bracket, &|a| {
-                let accel = a * span;
-                Some(Curve::JerkLimited(JerkLimited {
-                    fmin,
-                    fmax,
-                    accel,
-                    jerk: k * accel * accel / span,
-                }))
-            });
-            jerk = match (jerk, t) {
-                (Some(a), Some(b)) => Some(a.min(b)),
-                (a, b) => a.or(b),
-            };
-        }
-        let others = [linear, three, jerk];
+            })
+        }),
+    );
+    // Jerk-limited: the jerk in proportion to the acceleration's square
+    // over the span, a few ways.
+    let jerk = shortest(&mut [1.0, 4.0, 16.0, 64.0].into_iter().map(|k| {
+        steepest(motor, bracket, &|a| {
+            let accel = a * span;
+            Some(Curve::JerkLimited(JerkLimited {
+                fmin,
+                fmax,
+                accel,
+                jerk: k * accel * accel / span,
+            }))
+        })
+    }));
+    Row {
+        time,
+        others: [linear, three, jerk],
+        least: floor(motor, fmin, fmax),
+    }
+}
+
+#[test]
+fn the_fastest_ramp_against_the_steepest_of_each_shape() {
+    let cases = cases();
+    // One thread a motor: the searches are independent.
+    let rows: Vec<Row> = std::thread::scope(|scope| {
+        let handles: Vec<_> = cases
+            .iter()
+            .map(|case| scope.spawn(move || row(case)))
+            .collect();
+        handles.into_iter().map(|h| h.join().unwrap()).collect()
+    });
+    println!(
+        "{:<42} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9}",
+        "motor", "torque_l", "linear", "3-stage", "jerk_lim", "shorter", "floor", "at most"
+    );
+    let mut quarter_shorter = 0;
+    for (case, row) in cases.iter().zip(&rows) {
+        let Row {
+            time,
+            others,
+            least,
+        } = *row;
         let best = others
             .iter()
             .flatten()
             .copied()
             .fold(f64::INFINITY, f64::min);
         let shorter = 1.0 - time / best;
-        let least = floor(motor, fmin, fmax);
         let ms = |t: Option<f64>| t.map_or("-".to_string(), |t| format!("{:.1} ms", t * 1e3));
         println!(
             "{:<42} {:>9} {:>9} {:>9} {:>9} {:>8.1} % {:>9} {:>7.1} %",
             case.name,
             ms(Some(time)),
-            ms(linear),
-            ms(three),
-            ms(jerk),
+            ms(others[0]),
+            ms(others[1]),
+            ms(others[2]),
             shorter * 100.0,
             ms(Some(least)),
             (1.0 - least / best) * 100.0
