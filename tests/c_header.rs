@@ -179,6 +179,28 @@ fn expected(profiles: &Profiles) -> BTreeMap<String, BTreeMap<String, Figure>> {
             m.insert("STEP_SPACE_TICKS".into(), int(ticks(d.step_space)));
             m.insert("DIR_SETUP_TICKS".into(), int(ticks(d.dir_setup)));
         }
+        // A profile that names bands: the periods that play in each, from
+        // whole steps/s in integers here (the shortest period at most the
+        // band's top rate, the longest at least its bottom), plus the
+        // table's offset.
+        if let Some(bands) = &p.avoid {
+            let spec = p.table.spec();
+            let hz = u64::from(spec.timer.timer_hz);
+            let per = u64::from(spec.timer.ticks_per_step);
+            let offset = i64::from(spec.reload_offset);
+            m.insert("AVOID_COUNT".into(), int(bands.full_steps().len() as u64));
+            for (i, (lo, hi)) in bands.steps().into_iter().enumerate() {
+                assert!(
+                    lo.fract() == 0.0 && hi.fract() == 0.0 && lo > 0.0,
+                    "{lo} {hi}"
+                );
+                let (lo, hi) = (lo as u64 * per, hi as u64 * per);
+                let shortest = hz.div_ceil(hi) as i64 + offset;
+                let longest = (hz / lo) as i64 + offset;
+                m.insert(format!("avoid_{i}_shortest"), int(shortest as u64));
+                m.insert(format!("avoid_{i}_longest"), int(longest as u64));
+            }
+        }
         all.insert(p.name.clone(), m);
     }
     all
@@ -352,6 +374,17 @@ fn program(profiles: &Profiles, defines: &BTreeMap<String, Vec<(String, bool)>>)
                  printf(\"{name} sum %llu\\n\", sum);\n        \
                  printf(\"{name} checksum %lu\\n\", check);\n    }}"
             );
+        }
+        if let Some(bands) = &p.avoid {
+            for i in 0..bands.full_steps().len() {
+                let _ = writeln!(
+                    c,
+                    "    printf(\"{name} avoid_{i}_shortest %lu\\n\", (unsigned long){up}_AVOID[{}]);\n    \
+                     printf(\"{name} avoid_{i}_longest %lu\\n\", (unsigned long){up}_AVOID[{}]);",
+                    2 * i,
+                    2 * i + 1
+                );
+            }
         }
         for (figure, is_float) in defines.get(name).map(Vec::as_slice).unwrap_or(&[]) {
             let m = format!("{up}_{figure}");

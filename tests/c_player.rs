@@ -60,6 +60,9 @@ struct Case {
     accel: Table,
     decel: Option<Table>,
     ops: Vec<Op>,
+    /// Bands of periods the cruise keeps out of (`Player::avoiding`,
+    /// `_avoid`).
+    avoid: Vec<(u32, u32)>,
 }
 
 /// The profiles whose header holds all three players, and whose tables are
@@ -178,12 +181,14 @@ fn edge_cases() -> Vec<Case> {
         accel: Table::U16(vec![900, 800, 700, 800, 800, 600]),
         decel: None,
         ops: vec![Op::Start(20), Op::Play(2), Op::Stop, Op::Play(10)],
+        avoid: vec![],
     });
     for k in 1..6 {
         out.push(Case {
             accel: remainder.clone(),
             decel: None,
             ops: vec![Op::Start(30), Op::Play(k), Op::Stop, Op::Play(40)],
+            avoid: vec![],
         });
         out.push(Case {
             accel: Table::U16(plateau.clone()),
@@ -194,6 +199,7 @@ fn edge_cases() -> Vec<Case> {
                 Op::Stop,
                 Op::Play(80),
             ],
+            avoid: vec![],
         });
     }
     // A cruise longer than 65 535 steps, played across the step path's
@@ -206,6 +212,7 @@ fn edge_cases() -> Vec<Case> {
             accel,
             decel: None,
             ops: vec![Op::Start(140_000), Op::Play(66_000), Op::Stop, Op::Play(20)],
+            avoid: vec![],
         });
     }
     for played in 0..5 {
@@ -213,9 +220,60 @@ fn edge_cases() -> Vec<Case> {
             accel: Table::U16(vec![4000, 3000, 2000, 1000, 900]),
             decel: Some(Table::U16(vec![4000, 2500])),
             ops: vec![Op::Start(40), Op::Play(played), Op::Cruise(4), Op::Play(50)],
+            avoid: vec![],
         });
     }
+    // Bands: a cruise inside one gives way to the fastest entry slower than
+    // it, past a second band that search lands in, and not past a band
+    // that reaches the longest period there is.
+    let bands = [
+        vec![(1500, 2500)],
+        vec![(1500, 2500), (2900, 3100)],
+        vec![(1500, 2500), (2900, u32::MAX)],
+        vec![(0, 950)],
+    ];
+    for avoid in bands {
+        for accel in [
+            Table::U16(vec![4000, 3000, 2000, 1000, 900]),
+            Table::Runs(vec![
+                [3, 3000, 0, 0xFC18, 0xFFFF],
+                [2, 1000, 0, 0xFF9C, 0xFFFF],
+            ]),
+        ] {
+            out.push(Case {
+                accel,
+                decel: None,
+                ops: vec![
+                    Op::Cruise(2),
+                    Op::Start(30),
+                    Op::Play(10),
+                    Op::Cruise(3),
+                    Op::Play(40),
+                ],
+                avoid: avoid.clone(),
+            });
+        }
+    }
     out
+}
+
+/// Up to three random bands of periods below `top`: none half of the time;
+/// some reach to 0 or to `u32::MAX`.
+fn bands(rng: &mut Lcg, top: u32) -> Vec<(u32, u32)> {
+    let n = match below(rng, 6) {
+        0..=2 => 0,
+        k => k - 2,
+    };
+    (0..n)
+        .map(|_| {
+            let (a, b) = (below(rng, top), below(rng, top / 4 + 1));
+            match below(rng, 8) {
+                0 => (0, a),
+                1 => (a, u32::MAX),
+                _ => (a, a.saturating_add(b)),
+            }
+        })
+        .collect()
 }
 
 /// Random operations: `long` makes starts and plays as long as `long`.
@@ -249,7 +307,17 @@ fn cases(cases: u32, profiles: &Profiles) -> Vec<Case> {
             let accel = table(&mut rng);
             let decel = (below(&mut rng, 2) == 0).then(|| table(&mut rng));
             let ops = ops(&mut rng, 0);
-            out.push(Case { accel, decel, ops });
+            let top = match accel {
+                Table::U32(_) => 3_000_000,
+                _ => 65_535,
+            };
+            let avoid = bands(&mut rng, top);
+            out.push(Case {
+                accel,
+                decel,
+                ops,
+                avoid,
+            });
         }
     }
     let real: Vec<Table> = profiles
@@ -280,10 +348,17 @@ fn cases(cases: u32, profiles: &Profiles) -> Vec<Case> {
                 Table::U32(t) => Table::U32(t[t.len() / 3..].to_vec()),
             });
             let ops = ops(&mut rng, len);
+            let top = match table {
+                Table::U32(t) => t[0],
+                Table::U16(t) => u32::from(t[0]),
+                Table::Runs(_) => 65_535,
+            };
+            let avoid = bands(&mut rng, top);
             out.push(Case {
                 accel: table.clone(),
                 decel,
                 ops,
+                avoid,
             });
         }
     }
@@ -321,17 +396,23 @@ fn expected(cases: &[Case]) -> String {
         match (&case.accel, decel) {
             (Table::U16(a), Table::U16(d)) => play(
                 &mut out,
-                &mut Player::new(Ramp::steps(a)).with_decel(Ramp::steps(d)),
+                &mut Player::new(Ramp::steps(a))
+                    .with_decel(Ramp::steps(d))
+                    .avoiding(&case.avoid),
                 &case.ops,
             ),
             (Table::U32(a), Table::U32(d)) => play(
                 &mut out,
-                &mut Player::new(Ramp::steps(a)).with_decel(Ramp::steps(d)),
+                &mut Player::new(Ramp::steps(a))
+                    .with_decel(Ramp::steps(d))
+                    .avoiding(&case.avoid),
                 &case.ops,
             ),
             (Table::Runs(a), Table::Runs(d)) => play(
                 &mut out,
-                &mut Player::<u16, _>::new(&a[..]).with_decel(&d[..]),
+                &mut Player::<u16, _>::new(&a[..])
+                    .with_decel(&d[..])
+                    .avoiding(&case.avoid),
                 &case.ops,
             ),
             _ => unreachable!("one kind per case"),
@@ -409,6 +490,14 @@ fn program(cases: &[Case], prelude: &str, qualifiers: &str, scramble: bool) -> S
             let _ = write!(c, " {code}, {arg}ul,");
         }
         let _ = writeln!(c, " 9, 0 }};\n");
+        // Bands in ordinary memory, as `_avoid` reads them.
+        if !case.avoid.is_empty() {
+            let _ = write!(c, "static const uint32_t B{i}[] = {{");
+            for (shortest, longest) in &case.avoid {
+                let _ = write!(c, " {shortest}ul, {longest}ul,");
+            }
+            let _ = writeln!(c, " }};\n");
+        }
     }
     for (kind, player, word, table, len) in [
         ("u16", "players_player", "uint16_t", "uint16_t", "uint32_t"),
@@ -434,9 +523,11 @@ fn program(cases: &[Case], prelude: &str, qualifiers: &str, scramble: bool) -> S
         let _ = writeln!(
             c,
             "static void play_{kind}(const {storage}{table}a{close}, {len} na,\n    \
-             const {storage}{table}d{close}, {len} nd, const unsigned long *o)\n{{\n    \
+             const {storage}{table}d{close}, {len} nd, const unsigned long *o,\n    \
+             const uint32_t *b, unsigned char nb)\n{{\n    \
              {player}_t p;\n    unsigned long k;\n    {word} v;\n    \
              {player}_init(&p, a, na, d, nd);\n    \
+             {player}_avoid(&p, b, nb);\n    \
              for (; o[0] != 9; o += 2) {{\n        \
              if (o[0] == 0) {{\n            {player}_start(&p, o[1]);\n        \
              }} else if (o[0] == 1) {{\n            \
@@ -458,9 +549,13 @@ fn program(cases: &[Case], prelude: &str, qualifiers: &str, scramble: bool) -> S
         };
         let d = if case.decel.is_some() { "D" } else { "A" };
         let n = |name: &str| format!("(sizeof({name}) / sizeof({name}[0]))");
+        let bands = match case.avoid.len() {
+            0 => "0, 0".to_string(),
+            k => format!("B{i}, {k}"),
+        };
         let _ = writeln!(
             c,
-            "    printf(\"case {i}\\n\");\n    play_{kind}(A{i}, {}, {d}{i}, {}, O{i});",
+            "    printf(\"case {i}\\n\");\n    play_{kind}(A{i}, {}, {d}{i}, {}, O{i}, {bands});",
             n(&format!("A{i}")),
             n(&format!("{d}{i}"))
         );

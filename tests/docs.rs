@@ -499,7 +499,7 @@ const NOT_TYPE_SIZES: &[(&str, &str)] = &[
     ("src/guide/c_output.md", "(they needed over 500 bytes)"),
     (
         "src/guide/c_output.md",
-        "a `PREFIX_player_t` 198 bytes of external RAM",
+        "3.7 KB) and 1 092 bytes of external RAM",
     ),
 ];
 

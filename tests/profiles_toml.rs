@@ -350,6 +350,35 @@ fn the_seeds_through_the_macro() {
     assert_eq!(linear_integer::TICKS_PER_STEP, 2);
 }
 
+/// A profile's bands as the periods that play in them, for the player:
+/// `jerk_limited` avoids 100 to 150 full steps/s, in the motor's 1/8 steps
+/// 800 to 1200 steps/s, on the file's 10 MHz timer 8334 to 12 500 ticks;
+/// a cruise set inside the band cruises at the fastest entry slower.
+#[test]
+fn a_profile_s_bands_come_as_periods_for_the_player() {
+    use stepper_profiles::player::{Player, Ramp};
+    assert_eq!(jerk_limited::TIMER_HZ, 10_000_000);
+    assert_eq!(jerk_limited::AVOID, [(8334, 12_500)]);
+    let in_band = jerk_limited::PERIODS
+        .iter()
+        .position(|&p| (8334..=12_500).contains(&p))
+        .unwrap();
+    let mut player =
+        Player::new(Ramp::steps(&jerk_limited::PERIODS)).avoiding(&jerk_limited::AVOID);
+    player.set_cruise(in_band as u32);
+    player.run();
+    let cruise = (0..2000)
+        .map(|_| player.next_period().unwrap())
+        .last()
+        .unwrap();
+    let slow_side = jerk_limited::PERIODS
+        .iter()
+        .copied()
+        .filter(|&p| p > 12_500)
+        .min();
+    assert_eq!(Some(cruise), slow_side);
+}
+
 /// The file maps onto the specs the README and DESIGN describe, defaults
 /// (`[defaults] timer_hz`) included.
 #[test]

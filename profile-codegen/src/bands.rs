@@ -100,6 +100,68 @@ impl Bands {
         }
     }
 
+    /// The bands as the periods of `timer` that play in them, `(shortest,
+    /// longest)` in ticks, inclusive, each plus `reload_offset` as a table
+    /// stores it (saturating; `u32::MAX`, every longer period, stays): what the players' `avoiding` and C's
+    /// `_avoid` take, and a profile's `AVOID` holds. A period lies in a
+    /// band exactly when its rate does ([`Bands::containing`]'s rule); a
+    /// band from 0 steps/s reaches `u32::MAX`, and a band no whole period
+    /// plays in has its shortest above its longest.
+    ///
+    /// ```
+    /// use profile_codegen::bands::Bands;
+    /// use profile_core::Timer;
+    ///
+    /// // 100 to 150 full steps/s in 1/8 steps on a 1 MHz timer.
+    /// let bands = Bands::new(&[(100.0, 150.0)], 8);
+    /// assert_eq!(bands.periods(&Timer::new(1_000_000), 0), vec![(834, 1250)]);
+    /// ```
+    pub fn periods(&self, timer: &Timer, reload_offset: i32) -> Vec<(u32, u32)> {
+        let at = |t: u64| rate(timer, u32::try_from(t).unwrap_or(u32::MAX));
+        let ticks_at = |r: f64| timer.timer_hz as f64 / (f64::from(timer.ticks_per_step) * r);
+        let clamp = |t: f64| {
+            if t.is_finite() && t >= 1.0 {
+                (t as u64).min(u64::from(u32::MAX))
+            } else if t.is_finite() {
+                1
+            } else {
+                u64::from(u32::MAX)
+            }
+        };
+        self.steps()
+            .into_iter()
+            .map(|(lo, hi)| {
+                // The first period at most `hi` steps/s: from the quotient,
+                // then a tick at a time to the rule's own boundary.
+                let mut shortest = clamp(libm::ceil(ticks_at(hi)));
+                while shortest > 1 && at(shortest - 1) <= hi {
+                    shortest -= 1;
+                }
+                while shortest < u64::from(u32::MAX) && at(shortest) > hi {
+                    shortest += 1;
+                }
+                // The last period at least `lo` steps/s.
+                let longest = if lo <= 0.0 {
+                    u64::from(u32::MAX)
+                } else {
+                    let mut longest = clamp(libm::floor(ticks_at(lo)));
+                    while longest < u64::from(u32::MAX) && at(longest + 1) >= lo {
+                        longest += 1;
+                    }
+                    while longest > 0 && at(longest) < lo {
+                        longest -= 1;
+                    }
+                    longest
+                };
+                let stored = |t: u64| match u32::try_from(t) {
+                    Ok(u32::MAX) | Err(_) => u32::MAX,
+                    Ok(t) => t.saturating_add_signed(reload_offset),
+                };
+                (stored(shortest), stored(longest))
+            })
+            .collect()
+    }
+
     /// The time the ramp's steps spend in each band, in seconds: the
     /// periods of the steps whose rate lies in it, summed.
     pub fn time_in(&self, timer: &Timer, periods: &[u32]) -> Vec<f64> {
@@ -168,5 +230,52 @@ mod tests {
         let half = Bands::new(&[(900.0, 1100.0), (3000.0, 5000.0)], 2);
         assert_eq!(half.check(&timer, &periods), Ok(()));
         assert_eq!(half.time_in(&timer, &periods), vec![0.5e-3, 0.0]);
+    }
+
+    /// A period lies in a band's periods exactly when its rate lies in the
+    /// band, on timers, ticks per step, microsteps and bounds that fall on
+    /// whole periods and between them; a band from 0 reaches every long
+    /// period; an offset moves both ends.
+    #[test]
+    fn band_periods_hold_the_periods_whose_rates_lie_in_the_band() {
+        let cases = [
+            (1_000_000, 1, 1, (800.0, 1200.0)),
+            (1_000_000, 1, 8, (100.0, 150.0)),
+            (16_000_000, 2, 16, (33.3, 47.9)),
+            (72_000_000, 1, 1, (1000.0, 1000.0)),
+            (10_000, 1, 1, (2.0, 10_000.0)),
+            (1_000_000, 4, 1, (1000.0 / 3.0, 250.0)),
+        ];
+        for (hz, tps, microsteps, band) in cases {
+            let mut timer = Timer::new(hz);
+            timer.ticks_per_step = tps;
+            let bands = Bands::new(&[band], microsteps);
+            let [(shortest, longest)] = bands.periods(&timer, 0)[..] else {
+                panic!("one band");
+            };
+            let steps = bands.steps()[0];
+            for p in 1..200_000u32 {
+                let r = rate(&timer, p);
+                let inside = (steps.0..=steps.1).contains(&r);
+                assert_eq!(
+                    (shortest..=longest).contains(&p),
+                    inside,
+                    "{hz} Hz, {tps} ticks a step, {microsteps}: period {p} at {r} steps/s"
+                );
+            }
+        }
+        let timer = Timer::new(1_000_000);
+        assert_eq!(
+            Bands::new(&[(0.0, 1000.0)], 1).periods(&timer, 0),
+            vec![(1000, u32::MAX)]
+        );
+        assert_eq!(
+            Bands::new(&[(800.0, 1200.0)], 1).periods(&timer, 3),
+            vec![(837, 1253)]
+        );
+        // No whole period plays between 2995 and 2999 steps/s (333.4 to 333.9
+        // ticks).
+        let (s, l) = Bands::new(&[(2995.0, 2999.0)], 1).periods(&timer, 0)[0];
+        assert!(s > l, "{s} {l}");
     }
 }

@@ -185,6 +185,7 @@ pub fn module(profile: &Profile) -> TokenStream {
             pub const #name: #ty = #literal;
         }
     });
+    let avoid = avoid(profile);
     // Unused figures are no reason for warnings in the user's crate.
     quote! {
         #(#[doc = #docs])*
@@ -192,9 +193,30 @@ pub fn module(profile: &Profile) -> TokenStream {
         pub mod #name {
             #table
             #(#constants)*
+            #avoid
             #rated
         }
     }
+}
+
+/// A profile's bands as the periods that play in them (`AVOID`), when it
+/// names bands.
+fn avoid(profile: &Profile) -> Option<TokenStream> {
+    let spec = profile.table.spec();
+    let pairs = profile.avoid?.periods(&spec.timer, spec.reload_offset);
+    let len = Literal::usize_unsuffixed(pairs.len());
+    let pairs = pairs.iter().map(|&(shortest, longest)| {
+        let (shortest, longest) = (
+            Literal::u32_unsuffixed(shortest),
+            Literal::u32_unsuffixed(longest),
+        );
+        quote!((#shortest, #longest))
+    });
+    Some(quote! {
+        #[doc = " The bands of `avoid` as the periods that play in them, `(shortest, longest)` in ticks"]
+        #[doc = " plus `RELOAD_OFFSET`, inclusive: `Player::new(..).avoiding(&AVOID)` keeps a cruise out."]
+        pub static AVOID: [(u32, u32); #len] = [#(#pairs),*];
+    })
 }
 
 /// One module per profile.

@@ -223,6 +223,7 @@ pub fn split(
     for p in profiles {
         let _ = writeln!(c, "/* Profile {}: see {header_name}. */", p.name);
         table(&mut c, p, "const", style, true);
+        avoid(&mut c, p, "const", true);
         c.push('\n');
     }
     Split { header, source: c }
@@ -269,6 +270,7 @@ fn header_of(
         profile_comment(&mut out, p);
         figures(&mut out, p);
         table(&mut out, p, qualifiers, style, body);
+        avoid(&mut out, p, qualifiers, body);
         out.push('\n');
     }
     let _ = writeln!(out, "#endif /* {guard} */");
@@ -318,6 +320,40 @@ fn figures(out: &mut String, p: &Profile) {
             Number::F64(v) => writeln!(out, "{define} {v:?}"),
         };
     }
+}
+
+/// A profile's bands (`avoid`) as the periods that play in them:
+/// `NAME_AVOID_COUNT` and `NAME_AVOID`, the pairs `{shortest, longest}` in a
+/// flat array in ordinary memory (never `PROGMEM`: the players' `_avoid`
+/// reads it directly), declared with `qualifiers`, defined when `body` is
+/// true. The count's `#define` goes with the declaration.
+fn avoid(out: &mut String, p: &Profile, qualifiers: &str, body: bool) {
+    let Some(bands) = &p.avoid else {
+        return;
+    };
+    let spec = p.table.spec();
+    let pairs = bands.periods(&spec.timer, spec.reload_offset);
+    let upper = p.name.to_uppercase();
+    let declarator = format!("{qualifiers} uint32_t {upper}_AVOID[{}]", 2 * pairs.len());
+    if qualifiers != "const" {
+        let _ = writeln!(
+            out,
+            "/* The bands of `avoid` as the periods that play in them, {{shortest, longest}}\n \
+             * in ticks (as the table stores them), inclusive: for\n \
+             * _avoid(&player, {upper}_AVOID, {upper}_AVOID_COUNT). */\n\
+             #define {upper}_AVOID_COUNT {}u",
+            pairs.len()
+        );
+    }
+    if !body {
+        let _ = writeln!(out, "{declarator};");
+        return;
+    }
+    let values: Vec<String> = pairs
+        .iter()
+        .map(|(shortest, longest)| format!("{shortest}ul, {longest}ul"))
+        .collect();
+    let _ = writeln!(out, "{declarator} = {{ {} }};", values.join(", "));
 }
 
 /// The table's declaration (`body` false) or definition.

@@ -175,30 +175,91 @@ static uint32_t tpl_last_period_(const tpl_t *p) STEPPER_PROFILES_REENTRANT
     return tpl_last_(p);
 }
 
-/* The last position of the deceleration table whose period is not shorter
- * than `current` (0 when none is), as a walk down from its top finds it: a
- * bisection for `k` steps below the top short by more than the table's
- * slack (a step's period is at most that above any period before it, so
- * every step above is short too), then a walk down from there. */
-static uint32_t tpl_entry_point_(const tpl_t *p, uint32_t current) STEPPER_PROFILES_REENTRANT
+/* The last position of the deceleration table (`decel`) or the acceleration
+ * table whose period is not shorter than `current` (0 when none is), as a
+ * walk down from the table's last position finds it: a bisection for `k`
+ * steps below the last short by more than the table's slack (a step's period
+ * is at most that above any period before it, so every step above is short
+ * too), then a walk down from there. */
+static uint32_t tpl_last_at_least_(const tpl_t *p, unsigned char decel, uint32_t current)
+    STEPPER_PROFILES_REENTRANT
 {
-    STEPPER_PROFILES_LOCAL uint32_t lo, hi, mid, pos, t;
+    STEPPER_PROFILES_LOCAL uint32_t lo, hi, mid, pos, t, last, slack;
+    last = decel ? p->decel_last : p->accel_last;
+    slack = decel ? p->decel_slack : p->accel_slack;
     lo = 0;
-    hi = p->decel_last + 1;
+    hi = last + 1;
     while (lo < hi) {
         mid = lo + ((hi - lo) >> 1);
-        t = tpl_period_(p, 1, p->decel_last - mid);
-        if (t < current && current - t > p->decel_slack) {
+        t = tpl_period_(p, decel, last - mid);
+        if (t < current && current - t > slack) {
             lo = mid + 1;
         } else {
             hi = mid;
         }
     }
-    pos = lo > p->decel_last ? 0 : p->decel_last - lo;
-    while (pos > 0 && tpl_period_(p, 1, pos) < current) {
+    pos = lo > last ? 0 : last - lo;
+    while (pos > 0 && tpl_period_(p, decel, pos) < current) {
         pos--;
     }
     return pos;
+}
+
+/* The last position of the deceleration table whose period is not shorter
+ * than `current` (0 when none is). */
+static uint32_t tpl_entry_point_(const tpl_t *p, uint32_t current) STEPPER_PROFILES_REENTRANT
+{
+    return tpl_last_at_least_(p, 1, current);
+}
+
+/* Whether step `pos` of the acceleration table lies in a band the player
+ * avoids (the first that holds it); then `*longest` is that band's longest
+ * period. */
+static unsigned char tpl_band_(const tpl_t *p, uint32_t pos, uint32_t *longest)
+    STEPPER_PROFILES_REENTRANT
+{
+    STEPPER_PROFILES_LOCAL uint32_t t;
+    STEPPER_PROFILES_LOCAL unsigned char i;
+    t = tpl_period_(p, 0, pos);
+    for (i = 0; i < p->avoid_count; i++) {
+        if (t >= p->avoid[2 * i] && t <= p->avoid[2 * i + 1]) {
+            *longest = p->avoid[2 * i + 1];
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* The cruise position instead of `pos` (at most the acceleration table's
+ * last) when its entry lies in a band: the last entry not shorter than the
+ * band's longest period plus one, past each band that search lands in (as
+ * many times as there are bands); `pos` when outside every band, and where
+ * a band reaches the longest period there is. */
+static uint32_t tpl_outside_(const tpl_t *p, uint32_t pos) STEPPER_PROFILES_REENTRANT
+{
+    STEPPER_PROFILES_LOCAL uint32_t longest, ticks;
+    STEPPER_PROFILES_LOCAL unsigned char i;
+    if (!tpl_band_(p, pos, &longest) || longest == 0xFFFFFFFFul) {
+        return pos;
+    }
+    ticks = longest + 1;
+    for (i = 0; i < p->avoid_count; i++) {
+        pos = tpl_last_at_least_(p, 0, ticks);
+        if (!tpl_band_(p, pos, &longest) || longest < ticks || longest == 0xFFFFFFFFul) {
+            break;
+        }
+        ticks = longest + 1;
+    }
+    return tpl_last_at_least_(p, 0, ticks);
+}
+
+void tpl_avoid(tpl_t *p, const uint32_t *bands, unsigned char count) STEPPER_PROFILES_REENTRANT
+{
+    p->avoid = bands;
+    p->avoid_count = bands != 0 ? count : 0;
+    if (p->avoid_count > 0) {
+        p->accel_slack = tpl_accel_slack_(p);
+    }
 }
 
 void tpl_start(tpl_t *p, uint32_t steps) STEPPER_PROFILES_REENTRANT
@@ -216,6 +277,9 @@ void tpl_set_cruise(tpl_t *p, uint32_t pos) STEPPER_PROFILES_REENTRANT
     STEPPER_PROFILES_LOCAL unsigned char decelerating;
     STEPPER_PROFILES_LOCAL uint32_t acc, remaining, last;
     p->cruise = pos < p->accel_last ? pos : p->accel_last;
+    if (p->avoid_count > 0 && !p->empty) {
+        p->cruise = tpl_outside_(p, p->cruise);
+    }
     acc = tpl_acc_(p, &decelerating);
     remaining = tpl_remaining(p);
     if (remaining > 0 && !decelerating) {

@@ -118,3 +118,47 @@ static uint32_t tpl_capped_walk_(const tpl_t *p, uint32_t pos, uint32_t far)
     return n > 0 ? n : 1;
 }
 
+/* The steps of a table of `n` runs (saturated at 2^32 - 1), its fastest
+ * period (in `*fastest`) and its slack (in `*slack`: the most a step's period
+ * is above any period before it), expanded as the step path plays it. */
+static uint32_t tpl_scan_(const TPL_STORAGE uint16_t (*runs)[5], uint16_t n,
+    uint32_t *fastest, uint32_t *slack) STEPPER_PROFILES_REENTRANT
+{
+    STEPPER_PROFILES_LOCAL const TPL_STORAGE uint16_t *r;
+    STEPPER_PROFILES_LOCAL uint32_t steps, interval, add, x;
+    STEPPER_PROFILES_LOCAL uint16_t e, count, k, frac;
+    STEPPER_PROFILES_LOCAL unsigned char seen;
+    *fastest = 0;
+    *slack = 0;
+    frac = 0x8000u;
+    seen = 0;
+    for (steps = 0, e = 0; e < n; e++) {
+        r = runs[e];
+        count = TPL_READ(r);
+        interval = tpl_word32_(r + 1);
+        add = tpl_word32_(r + 3);
+        steps = steps + count < steps ? 0xFFFFFFFFul : steps + count;
+        for (k = 0; k < count; k++) {
+            x = frac + interval;
+            frac = (uint16_t)x;
+            interval += add;
+            if (seen && (x >> 16) > *fastest && (x >> 16) - *fastest > *slack) {
+                *slack = (x >> 16) - *fastest;
+            }
+            if (!seen || (x >> 16) < *fastest) {
+                *fastest = x >> 16;
+                seen = 1;
+            }
+        }
+    }
+    return steps;
+}
+
+/* The acceleration table's slack, for the searches that keep a cruise out of
+ * bands: read only when the player is given bands. */
+static uint32_t tpl_accel_slack_(const tpl_t *p) STEPPER_PROFILES_REENTRANT
+{
+    STEPPER_PROFILES_LOCAL uint32_t fastest, slack;
+    (void)tpl_scan_(p->accel, p->accel_runs, &fastest, &slack);
+    return slack;
+}

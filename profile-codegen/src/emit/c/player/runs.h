@@ -38,6 +38,9 @@ typedef struct {
     uint16_t accel_runs, decel_runs;
     uint32_t accel_last, decel_last, decel_fastest, decel_slack, cap, cruise;
     unsigned char empty;
+    uint32_t accel_slack;   /* the acceleration table's, as decel_slack, once bands are given */
+    const uint32_t *avoid;  /* the bands the cruise keeps out of, in pairs */
+    unsigned char avoid_count;
 } tpl_t;
 
 /* Plays from `accel` (`accel_runs` runs) up and `decel` (`decel_runs` runs)
@@ -50,8 +53,18 @@ void tpl_start(tpl_t *p, uint32_t steps) STEPPER_PROFILES_REENTRANT;
 /* Decelerates along the deceleration table from the current speed to rest. */
 void tpl_stop(tpl_t *p) STEPPER_PROFILES_REENTRANT;
 /* Cruises at step `pos` of the acceleration table (clamped to it) instead of
- * its top, walking there one step per step. */
+ * its top, walking there one step per step; a step inside a band the player
+ * avoids (tpl_avoid) gives way to the fastest step slower than it. */
 void tpl_set_cruise(tpl_t *p, uint32_t pos) STEPPER_PROFILES_REENTRANT;
+/* Keeps the cruise out of `count` bands of periods: `bands` holds them in
+ * pairs, {shortest, longest} in ticks as the table holds them, inclusive (a
+ * profile's `avoid` emits them as NAME_AVOID, NAME_AVOID_COUNT bands). A
+ * cruise tpl_set_cruise would set inside a band is the fastest entry slower
+ * than the band instead, never faster than asked (the slowest entry where
+ * none is slower); moves still cross the bands as they accelerate and
+ * decelerate. The array is read, not copied: keep it (in RAM or ordinary
+ * const memory, not PROGMEM) while the player plays. tpl_init clears it. */
+void tpl_avoid(tpl_t *p, const uint32_t *bands, unsigned char count) STEPPER_PROFILES_REENTRANT;
 /* Steps left in the move. */
 uint32_t tpl_remaining(const tpl_t *p) STEPPER_PROFILES_REENTRANT;
 

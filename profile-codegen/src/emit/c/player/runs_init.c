@@ -2,14 +2,8 @@ void tpl_init(tpl_t *p, const TPL_STORAGE uint16_t (*accel)[5], uint16_t accel_r
     const TPL_STORAGE uint16_t (*decel)[5], uint16_t decel_runs) STEPPER_PROFILES_REENTRANT
 {
     STEPPER_PROFILES_LOCAL tpl_cursor_t c;
-    STEPPER_PROFILES_LOCAL const TPL_STORAGE uint16_t *r;
-    STEPPER_PROFILES_LOCAL uint32_t steps, interval, add, x, fastest, slack;
-    STEPPER_PROFILES_LOCAL uint16_t e, count, k, frac;
-    STEPPER_PROFILES_LOCAL unsigned char seen;
-    fastest = 0;
-    slack = 0;
-    frac = 0x8000u;
-    seen = 0;
+    STEPPER_PROFILES_LOCAL uint32_t steps, fastest, slack;
+    STEPPER_PROFILES_LOCAL uint16_t e, count;
     p->accel = accel;
     p->decel = decel;
     p->accel_runs = accel_runs;
@@ -19,28 +13,13 @@ void tpl_init(tpl_t *p, const TPL_STORAGE uint16_t (*accel)[5], uint16_t accel_r
         steps = steps + count < steps ? 0xFFFFFFFFul : steps + count;
     }
     p->accel_last = steps > 0 ? steps - 1 : 0;
-    for (steps = 0, e = 0; e < decel_runs; e++) {
-        r = decel[e];
-        count = TPL_READ(r);
-        interval = tpl_word32_(r + 1);
-        add = tpl_word32_(r + 3);
-        steps = steps + count < steps ? 0xFFFFFFFFul : steps + count;
-        for (k = 0; k < count; k++) {
-            x = frac + interval;
-            frac = (uint16_t)x;
-            interval += add;
-            if (seen && (x >> 16) > fastest && (x >> 16) - fastest > slack) {
-                slack = (x >> 16) - fastest;
-            }
-            if (!seen || (x >> 16) < fastest) {
-                fastest = x >> 16;
-                seen = 1;
-            }
-        }
-    }
+    p->accel_slack = 0;
+    steps = tpl_scan_(decel, decel_runs, &fastest, &slack);
     p->decel_last = steps > 0 ? steps - 1 : 0;
     p->decel_fastest = fastest;
     p->decel_slack = slack;
+    p->avoid = 0;
+    p->avoid_count = 0;
     p->cap = 0xFFFFFFFFul;
     c.decel = 0;
     c.pos = 0;

@@ -1,11 +1,40 @@
-/* The period at step `pos` of a table, in ticks; 0 past its end. */
-static uint32_t tpl_period_(const tpl_t *p, unsigned char decel, uint32_t pos)
+/* The period at step `pos` of a table, in ticks; 0 past its end. A read:
+ * inline wherever the planner reads one. */
+STEPPER_PROFILES_INLINE uint32_t tpl_period_(const tpl_t *p, unsigned char decel, uint32_t pos)
     STEPPER_PROFILES_REENTRANT
 {
     if (decel) {
         return pos < p->decel_len ? (uint32_t)TPL_READ(p->decel + pos) : 0;
     }
     return pos < p->accel_len ? (uint32_t)TPL_READ(p->accel + pos) : 0;
+}
+
+/* The slack of a table of `n` periods (the most a period is above any period
+ * before it); its fastest period in `*fastest`. */
+static uint32_t tpl_slack_(const TPL_STORAGE TPL_WORD *t, uint32_t n, uint32_t *fastest)
+    STEPPER_PROFILES_REENTRANT
+{
+    STEPPER_PROFILES_LOCAL uint32_t i, slack, v;
+    slack = 0;
+    *fastest = 0;
+    for (i = 0; i < n; i++) {
+        v = TPL_READ(t + i);
+        if (i > 0 && v > *fastest && v - *fastest > slack) {
+            slack = v - *fastest;
+        }
+        if (i == 0 || v < *fastest) {
+            *fastest = v;
+        }
+    }
+    return slack;
+}
+
+/* The acceleration table's slack, for the searches that keep a cruise out of
+ * bands: read only when the player is given bands. */
+static uint32_t tpl_accel_slack_(const tpl_t *p) STEPPER_PROFILES_REENTRANT
+{
+    STEPPER_PROFILES_LOCAL uint32_t fastest;
+    return tpl_slack_(p->accel, p->accel_len, &fastest);
 }
 
 /* Where a stretch starting at step `pos` reads first: just past it, so that
