@@ -5,8 +5,9 @@
  * `--attribute PROGMEM`): with RUNS=0 it plays the 400-entry per-step table
  * STEPS_PERIODS with ramps_player_*, with RUNS=1 the compressed
  * RUNS_RUNS with ramps_runs_player_*. It plays the moves MOVES lists,
- * `{steps, stop_at}` each (a stop once `stop_at` steps are played, none
- * when 0), as the driver (src/main.rs) defines it; then, the timer off, it
+ * `{steps, stop_at, dir}` each (a stop once `stop_at` steps are played,
+ * none when 0; the direction pin PD7's level), as the driver (src/main.rs)
+ * defines it; then, the timer off, it
  * plans the first move again and stops it 60 steps in, for the harness to
  * count that stop's cycles; then it sleeps with interrupts off, which ends
  * simavr.
@@ -33,6 +34,12 @@
  *   a prescaler that runs freely: it is reset just before (GTCCR's
  *   PSRSYNC), so that the first tick comes a whole prescaler period after
  *   it, as every later one does.
+ * - The direction pin (PD7; not PD2, INT0, whose low level wakes the
+ *   sleeping core in simavr and would stamp edges a cycle early) is set
+ *   before the clock starts, so that a reversal's first step comes a whole
+ *   first period after it: at least the driver's `dir_setup`
+ *   (NAME_DIR_SETUP_TICKS), which the profile's check keeps the first entry
+ *   no shorter than. No wait is needed.
 
  * The CPU sleeps (idle) between interrupts, so that every compare match
  * comes while it sleeps: simavr stamps a pin's change at the end of the
@@ -54,8 +61,10 @@ AVR_MCU_VCD_FILE("runs.vcd", 1000);
 #else
 AVR_MCU_VCD_FILE("steps.vcd", 1000);
 #endif
-/* The step pin, and the writes of TCCR1B that start and stop each move. */
+/* The step and direction pins, and the writes of TCCR1B that start and stop
+ * each move. */
 AVR_MCU_VCD_PORT_PIN('B', 1, "OC1A");
+AVR_MCU_VCD_PORT_PIN('D', 7, "DIR");
 const struct avr_mmcu_vcd_trace_t clock_trace[] _MMCU_ = {
     { AVR_MCU_VCD_SYMBOL("TCCR1B"), .what = (void *)&TCCR1B, },
 };
@@ -97,15 +106,22 @@ ISR(TIMER1_COMPA_vect)
     OCR1A = period - 1;
 }
 
-/* Plays a move of `steps` steps, stopped once `stop_at` steps are played
- * (never when 0). */
-static void move(uint32_t steps, uint32_t stop_at)
+/* Plays a move of `steps` steps in direction `dir` (the level of PD7),
+ * stopped once `stop_at` steps are played (never when 0). */
+static void move(uint32_t steps, uint32_t stop_at, uint8_t dir)
 {
     uint16_t first;
     player_start(&player, steps);
     first = player_next(&player);
     if (first == 0) {
         return;
+    }
+    /* The direction first: the first edge comes `first` ticks after the
+     * clock starts, no sooner than the driver's dir_setup. */
+    if (dir) {
+        PORTD |= (1 << PD7);
+    } else {
+        PORTD &= (uint8_t)~(1 << PD7);
     }
     TCCR1B = (1 << WGM12);
     TCNT1 = 0;
@@ -132,15 +148,18 @@ static void move(uint32_t steps, uint32_t stop_at)
     sei();
 }
 
-/* The moves to play: `steps`, and the steps after which to stop (0: none). */
+/* The moves to play: `steps`, the steps after which to stop (0: none), and
+ * the direction. */
 static const struct {
     uint32_t steps, stop_at;
+    uint8_t dir;
 } moves[] = { MOVES };
 
 int main(void)
 {
     uint8_t i;
     DDRB = (1 << PB1);
+    DDRD = (1 << PD7);
     TCCR1A = (1 << COM1A0);
     TIMSK1 = (1 << OCIE1A);
     set_sleep_mode(SLEEP_MODE_IDLE);
@@ -151,7 +170,7 @@ int main(void)
 #endif
     sei();
     for (i = 0; i < sizeof(moves) / sizeof(moves[0]); i++) {
-        move(moves[i].steps, moves[i].stop_at);
+        move(moves[i].steps, moves[i].stop_at, moves[i].dir);
     }
     /* A stop's cost, the timer off (the harness counts it): 60 steps into
      * the first move. */

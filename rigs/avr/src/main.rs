@@ -14,6 +14,10 @@
 //!   edge). The periods are the Rust `Player`'s for the same moves, and for
 //!   the move up and down they are also built from the table alone (up, at
 //!   the top, down);
+//! - the direction pin (PD7) holds each move's direction from before its
+//!   start to its last edge, and every change of it comes at least the
+//!   driver's `dir_setup` (`driver` in `ramps.toml`) before the next step
+//!   edge: the moves alternate direction, each a reversal;
 //! - the cycles of every step interrupt, from the compare match to the end
 //!   of `reti`, are printed per phase of the move up and down and over all
 //!   moves, with the planning calls' costs, and must be within the goal:
@@ -90,11 +94,13 @@ fn play<L: Layout>(mut player: Player<'_, u16, L>, m: &Move) -> Vec<u32> {
     }
 }
 
-/// A move the client plays: `steps`, stopped after `stop_at` (never at 0).
+/// A move the client plays: `steps`, stopped after `stop_at` (never at 0),
+/// the direction pin high or low.
 struct Move {
     what: String,
     steps: u32,
     stop_at: u32,
+    dir: bool,
 }
 
 /// One build of the client: its table, player and moves.
@@ -108,6 +114,8 @@ struct Image {
     table: Table,
     prescaler: u64,
     moves: Vec<Move>,
+    /// The driver's `dir_setup`, in the table's ticks.
+    dir_setup: u32,
 }
 
 fn main() -> ExitCode {
@@ -232,6 +240,13 @@ fn images(profiles: &Profiles) -> Result<Vec<Image>, String> {
             _ => Err(format!("{hz} Hz is not 16 MHz / 1 or / 8")),
         }
     };
+    let dir_setup = |p: &profile_codegen::profiles::Profile| {
+        let d = p
+            .driver
+            .as_ref()
+            .ok_or_else(|| format!("`{}` names no driver", p.name))?;
+        Ok::<u32, String>(d.ticks(d.dir_setup, &p.table.spec().timer))
+    };
     let table = Table::Steps(t.periods.iter().map(|&p| p as u16).collect());
     let len = t.periods.len() as u32;
     let steps_image = Image {
@@ -248,9 +263,11 @@ fn images(profiles: &Profiles) -> Result<Vec<Image>, String> {
                 what: format!("stopped after 60 of {} steps", 2 * len + CRUISE),
                 steps: 2 * len + CRUISE,
                 stop_at: 60,
+                dir: false,
             },
         ],
         table,
+        dir_setup: dir_setup(steps)?,
     };
     let table = Table::Runs(r.runs.clone());
     let len = table.expansion().len() as u32;
@@ -266,6 +283,7 @@ fn images(profiles: &Profiles) -> Result<Vec<Image>, String> {
         prescaler: prescaler(r.spec.timer.timer_hz)?,
         moves: vec![full(len), short(len)],
         table,
+        dir_setup: dir_setup(runs)?,
     };
     Ok(vec![steps_image, runs_image])
 }
@@ -276,15 +294,18 @@ fn full(len: u32) -> Move {
         what: format!("up {len}, {CRUISE} at the top, down {len}"),
         steps: 2 * len + CRUISE,
         stop_at: 0,
+        dir: false,
     }
 }
 
-/// Too short to reach the top: up and down where the ramps cross.
+/// Too short to reach the top: up and down where the ramps cross; the
+/// other way.
 fn short(len: u32) -> Move {
     Move {
-        what: format!("{} steps, too short for the top", len / 2 + 41),
+        what: format!("{} steps back, too short for the top", len / 2 + 41),
         steps: len / 2 + 41,
         stop_at: 0,
+        dir: true,
     }
 }
 
@@ -294,7 +315,7 @@ fn check(image: &Image, manifest: &Path, dir: &Path) -> Result<bool, String> {
     let moves: Vec<String> = image
         .moves
         .iter()
-        .map(|m| format!("{{{}ul, {}ul}}", m.steps, m.stop_at))
+        .map(|m| format!("{{{}ul, {}ul, {}}}", m.steps, m.stop_at, u8::from(m.dir)))
         .collect();
     tools::run(
         Command::new("avr-gcc")
@@ -343,6 +364,7 @@ fn check(image: &Image, manifest: &Path, dir: &Path) -> Result<bool, String> {
     let played: Vec<Vec<u32>> = image.moves.iter().map(|m| image.table.play(m)).collect();
     let mut pass = check_full_move(image, &played[0]);
     pass &= check_edges(image, &trace, &played)?;
+    pass &= check_directions(image, &trace)?;
     pass &= report_cycles(image, &isrs, &played)?;
     report_planning(image, &calls);
     Ok(pass)
@@ -460,6 +482,81 @@ fn check_edges(
             ),
         }
     }
+    Ok(pass)
+}
+
+/// The direction pin at every move: its level from the move's start to its
+/// last edge is the move's, and each change comes at least `dir_setup`
+/// before the next step edge (the shortest such lead printed).
+fn check_directions(
+    image: &Image,
+    trace: &std::collections::HashMap<String, Vec<vcd::Change>>,
+) -> Result<bool, String> {
+    let changes = |name: &str| {
+        trace
+            .get(name)
+            .ok_or_else(|| format!("the VCD has no {name}"))
+    };
+    let starts: Vec<u64> = changes("TCCR1B")?
+        .iter()
+        .filter(|c| c.value & 0x07 != 0)
+        .map(|c| c.cycle)
+        .collect();
+    let edges: Vec<u64> = changes("OC1A")?.iter().map(|c| c.cycle).collect();
+    let dir = changes("DIR")?;
+    // The pin's level at `cycle`: its last change at or before it.
+    let level_at = |cycle: u64| {
+        dir.iter()
+            .take_while(|c| c.cycle <= cycle)
+            .last()
+            .is_some_and(|c| c.value != 0)
+    };
+    let setup = u64::from(image.dir_setup) * image.prescaler;
+    let mut pass = true;
+    let mut lead = u64::MAX;
+    for (i, m) in image.moves.iter().enumerate() {
+        let start = starts[i];
+        let last = edges
+            .iter()
+            .copied()
+            .rfind(|&c| c > start && c < starts.get(i + 1).copied().unwrap_or(u64::MAX))
+            .unwrap_or(start);
+        let flips = dir
+            .iter()
+            .filter(|c| c.cycle > start && c.cycle <= last)
+            .count();
+        if level_at(start) != m.dir || flips > 0 {
+            println!(
+                "  FAIL {}: the direction pin is not {} from the start to the last edge",
+                m.what,
+                u8::from(m.dir)
+            );
+            pass = false;
+        }
+    }
+    for change in dir {
+        let Some(&next) = edges.iter().find(|&&e| e > change.cycle) else {
+            continue;
+        };
+        lead = lead.min(next - change.cycle);
+        if next - change.cycle < setup {
+            println!(
+                "  FAIL: the direction changed at cycle {}, the next step edge {} cycles later, \
+                 under dir_setup's {setup}",
+                change.cycle,
+                next - change.cycle
+            );
+            pass = false;
+        }
+    }
+    // The reversals: changes of level (the trace's first value is none).
+    let reversals = dir.windows(2).filter(|w| w[0].value != w[1].value).count();
+    println!(
+        "  direction: {reversals} reversals, each move's level held from its start to its last \
+         edge; the shortest lead of a change to the next step edge {lead} cycles, dir_setup {} \
+         ticks = {setup} cycles",
+        image.dir_setup
+    );
     Ok(pass)
 }
 
