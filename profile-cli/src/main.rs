@@ -7,6 +7,8 @@
 //! stepper-profiles header FILE [-o OUT]     the C (--split: OUT.h and OUT.c)
 //! stepper-profiles rust FILE [-o OUT]       the Rust modules
 //! stepper-profiles plot FILE [-o DIR]       SVG plots and CSV tables
+//! stepper-profiles trace PROFILE --move N   a move's exact edges as VCD
+//! stepper-profiles compare PROFILE CAPTURE --move N   a capture against them
 //! ```
 
 mod files;
@@ -21,6 +23,7 @@ use std::sync::mpsc;
 use std::time::Duration;
 
 use clap::{Parser, Subcommand};
+use profile_codegen::capture::{Capture, Edges, Reference};
 use profile_codegen::profiles::{CStyle, Profiles};
 use staging::Staging;
 
@@ -115,6 +118,59 @@ enum Command {
         #[arg(short, long, value_name = "DIR", default_value = "plots")]
         out: PathBuf,
     },
+    /// Write a move's exact step edges as a VCD file, the reference a
+    /// logic analyzer's capture is compared with (PulseView and sigrok-cli
+    /// read it): STEP high at each step, for the driver's step pulse
+    Trace {
+        /// The profile, by its name in the file
+        profile: String,
+        #[command(flatten)]
+        mv: MoveArgs,
+        /// Where to write the VCD, its folder created if missing (standard
+        /// output without it)
+        #[arg(short, long, value_name = "OUT.vcd")]
+        out: Option<PathBuf>,
+    },
+    /// Compare a capture of the step pin (VCD, or sigrok-cli's CSV) with a
+    /// move's exact edges: the first step edge lined up with the move's,
+    /// each step's error in ticks, the largest, the first out of the
+    /// tolerance; exit status 1 past it or when steps are missing
+    Compare {
+        /// The profile, by its name in the file
+        profile: String,
+        /// The capture: a VCD file, or the CSV `sigrok-cli -O csv` writes
+        capture: PathBuf,
+        #[command(flatten)]
+        mv: MoveArgs,
+        /// The step channel's name (by default the one named like `step`,
+        /// or else the one that changes most)
+        #[arg(long, value_name = "NAME")]
+        channel: Option<String>,
+        /// The transitions that are steps: `rising`, or `both` for a pin
+        /// that toggles once a step
+        #[arg(long, value_name = "EDGES", default_value = "rising", value_parser = ["rising", "both"])]
+        edges: String,
+        /// The largest error a step may have, in ticks
+        #[arg(long, value_name = "TICKS", default_value_t = 0.5)]
+        tolerance: f64,
+        /// Print the summary only, not every step
+        #[arg(long)]
+        summary: bool,
+    },
+}
+
+/// The move `trace` and `compare` play.
+#[derive(Debug, clap::Args)]
+struct MoveArgs {
+    /// The profiles file
+    #[arg(short, long, value_name = "FILE", default_value = "profiles.toml")]
+    file: PathBuf,
+    /// The move's steps, from rest (up the table, at its top, down)
+    #[arg(long = "move", value_name = "N")]
+    steps: u32,
+    /// Stop the move (down the table from where it stands) after K steps
+    #[arg(long, value_name = "K")]
+    stop_at: Option<u32>,
 }
 
 /// A failure, already worded for the user.
@@ -169,6 +225,91 @@ fn run(command: Command) -> Result<(), Failure> {
             "the Rust modules",
         ),
         Command::Plot { file, out } => plot(&file, &out),
+        Command::Trace { profile, mv, out } => {
+            let reference = reference(&profile, &mv)?;
+            emit(out.as_deref(), &reference.vcd(), "the VCD")
+        }
+        Command::Compare {
+            profile,
+            capture,
+            mv,
+            channel,
+            edges,
+            tolerance,
+            summary,
+        } => {
+            let edges = match edges.as_str() {
+                "both" => Edges::Both,
+                _ => Edges::Rising,
+            };
+            compare(
+                &profile,
+                &capture,
+                &mv,
+                channel.as_deref(),
+                edges,
+                tolerance,
+                summary,
+            )
+        }
+    }
+}
+
+/// The move `mv` of the profile named `name`.
+fn reference(name: &str, mv: &MoveArgs) -> Result<Reference, Failure> {
+    let profiles = load(&mv.file)?;
+    let profile = profiles
+        .profiles()
+        .iter()
+        .find(|p| p.name == name)
+        .ok_or_else(|| {
+            let names: Vec<&str> = profiles
+                .profiles()
+                .iter()
+                .map(|p| p.name.as_str())
+                .collect();
+            format!(
+                "`{}` has no profile `{name}`; its profiles: {}",
+                mv.file.display(),
+                names.join(", ")
+            )
+        })?;
+    Ok(Reference::of(profile, mv.steps, mv.stop_at)?)
+}
+
+/// `compare`: the capture against the move, every step (or the summary)
+/// on standard output; a failure past the tolerance.
+fn compare(
+    name: &str,
+    capture: &Path,
+    mv: &MoveArgs,
+    channel: Option<&str>,
+    edges: Edges,
+    tolerance: f64,
+    summary: bool,
+) -> Result<(), Failure> {
+    if !(tolerance >= 0.0 && tolerance.is_finite()) {
+        return Err(Failure(format!(
+            "`--tolerance {tolerance}`: expected ticks, 0 or more"
+        )));
+    }
+    let reference = reference(name, mv)?;
+    let text = std::fs::read_to_string(capture)
+        .map_err(|e| format!("cannot read `{}`: {e}", capture.display()))?;
+    let result = Capture::parse(&text)
+        .and_then(|c| c.compare(&reference, channel, edges, tolerance))
+        .map_err(|e| format!("`{}`: {e}", capture.display()))?;
+    if !summary {
+        stdout(&result.table())?;
+    }
+    stdout(&format!("{}\n", result.summary()))?;
+    if result.passes() {
+        Ok(())
+    } else {
+        Err(Failure(format!(
+            "`{}` is not the move of `{name}` within {tolerance} ticks",
+            capture.display()
+        )))
     }
 }
 

@@ -50,7 +50,9 @@ fn every_command_answers_help() {
     let top = run(&dir, &["--help"]);
     assert!(top.status.success());
     let top = text(&top.stdout);
-    for command in ["report", "check", "header", "rust", "plot"] {
+    for command in [
+        "report", "check", "header", "rust", "plot", "trace", "compare",
+    ] {
         assert!(top.contains(&format!("\n  {command} ")), "{command}: {top}");
         let help = run(&dir, &[command, "--help"]);
         assert!(help.status.success(), "{command} --help");

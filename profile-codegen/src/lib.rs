@@ -36,6 +36,7 @@
 #![warn(missing_docs)]
 
 pub mod bands;
+pub mod capture;
 pub mod cpu;
 pub mod driver;
 mod emit;

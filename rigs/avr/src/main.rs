@@ -27,6 +27,7 @@
 //! `cargo run --release` exits 0 when everything holds, 1 otherwise, 2
 //! when a tool is missing or fails.
 
+mod capture;
 mod cycles;
 mod tools;
 mod vcd;
@@ -116,6 +117,9 @@ struct Image {
     moves: Vec<Move>,
     /// The driver's `dir_setup`, in the table's ticks.
     dir_setup: u32,
+    /// The first move's exact edges, as `stepper-profiles trace` writes
+    /// them.
+    reference: profile_codegen::capture::Reference,
 }
 
 fn main() -> ExitCode {
@@ -181,11 +185,31 @@ fn run() -> Result<bool, String> {
         version.lines().next().unwrap_or("avr-gcc").trim()
     );
     let mut pass = true;
-    for image in images(&profiles)? {
-        pass &= check(&image, manifest, &dir)?;
+    let images = images(&profiles)?;
+    for image in &images {
+        pass &= check(image, manifest, &dir)?;
     }
+    pass &= check_edited(&images[0], manifest, &dir)?;
     println!("{}", if pass { "pass" } else { "FAIL" });
     Ok(pass)
+}
+
+/// The per-step client built against a table whose entry `EDITED` is a
+/// tick longer (the header edited as text): its trace, compared with the
+/// move's exact edges as a capture, must be out first at that step.
+fn check_edited(image: &Image, manifest: &Path, dir: &Path) -> Result<bool, String> {
+    const EDITED: usize = 100;
+    let edited = dir.join("edited");
+    fs::create_dir_all(&edited).map_err(|e| e.to_string())?;
+    let header = fs::read_to_string(dir.join("ramps.h")).map_err(|e| e.to_string())?;
+    fs::write(
+        edited.join("ramps.h"),
+        capture::edit_entry(&header, "STEPS_PERIODS", EDITED)?,
+    )
+    .map_err(|e| e.to_string())?;
+    let (_, vcd) = simulate(image, manifest, &edited, &dir.join("sim"))?;
+    println!();
+    capture::edited(&image.reference, &vcd, EDITED)
 }
 
 /// The guide's AVR example (`src/guide/c_output.md`, the C block with
@@ -240,6 +264,9 @@ fn images(profiles: &Profiles) -> Result<Vec<Image>, String> {
             _ => Err(format!("{hz} Hz is not 16 MHz / 1 or / 8")),
         }
     };
+    let reference = |p: &profile_codegen::profiles::Profile, steps: u32| {
+        profile_codegen::capture::Reference::of(p, steps, None).map_err(|e| e.to_string())
+    };
     let dir_setup = |p: &profile_codegen::profiles::Profile| {
         let d = p
             .driver
@@ -268,6 +295,7 @@ fn images(profiles: &Profiles) -> Result<Vec<Image>, String> {
         ],
         table,
         dir_setup: dir_setup(steps)?,
+        reference: reference(steps, 2 * len + CRUISE)?,
     };
     let table = Table::Runs(r.runs.clone());
     let len = table.expansion().len() as u32;
@@ -284,6 +312,7 @@ fn images(profiles: &Profiles) -> Result<Vec<Image>, String> {
         moves: vec![full(len), short(len)],
         table,
         dir_setup: dir_setup(runs)?,
+        reference: reference(runs, 2 * len + CRUISE)?,
     };
     Ok(vec![steps_image, runs_image])
 }
@@ -309,8 +338,14 @@ fn short(len: u32) -> Move {
     }
 }
 
-/// Builds and runs one client; checks its edges and prints its cycles.
-fn check(image: &Image, manifest: &Path, dir: &Path) -> Result<bool, String> {
+/// Builds one client in `dir` (against the `ramps.h` there) and runs it in
+/// simavr (the harness `sim`): what the harness printed, and the VCD.
+fn simulate(
+    image: &Image,
+    manifest: &Path,
+    dir: &Path,
+    sim: &Path,
+) -> Result<(String, String), String> {
     let elf = format!("client_{}.elf", image.name);
     let moves: Vec<String> = image
         .moves
@@ -344,7 +379,7 @@ fn check(image: &Image, manifest: &Path, dir: &Path) -> Result<bool, String> {
     )?;
     let functions = ["init", "start", "stop"].map(|f| format!("{}_{f}", image.player));
     let printed = tools::run_for(
-        Command::new(dir.join("sim"))
+        Command::new(sim)
             .arg(&elf)
             .arg(MAX_CYCLES.to_string())
             .args(&functions),
@@ -355,6 +390,12 @@ fn check(image: &Image, manifest: &Path, dir: &Path) -> Result<bool, String> {
     )?;
     let vcd = fs::read_to_string(dir.join(format!("{}.vcd", image.name)))
         .map_err(|e| format!("the VCD of {elf}: {e}"))?;
+    Ok((printed, vcd))
+}
+
+/// Builds and runs one client; checks its edges and prints its cycles.
+fn check(image: &Image, manifest: &Path, dir: &Path) -> Result<bool, String> {
+    let (printed, vcd) = simulate(image, manifest, dir, &dir.join("sim"))?;
     let trace = vcd::parse(&vcd, F_CPU)?;
     let (isrs, calls) = cycles::parse(&printed)?;
     println!(
@@ -365,6 +406,7 @@ fn check(image: &Image, manifest: &Path, dir: &Path) -> Result<bool, String> {
     let mut pass = check_full_move(image, &played[0]);
     pass &= check_edges(image, &trace, &played)?;
     pass &= check_directions(image, &trace)?;
+    pass &= capture::whole(&image.reference, &vcd)?;
     pass &= report_cycles(image, &isrs, &played)?;
     report_planning(image, &calls);
     Ok(pass)

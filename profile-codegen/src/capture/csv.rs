@@ -1,0 +1,157 @@
+//! The CSV `sigrok-cli -O csv` writes of a logic capture: comment lines
+//! (`; Channels (2/8): D0, D1`, `; Samplerate: 24 MHz`), a
+//! `META samplerate: 24000000` line, a header row (the channels' names, or
+//! `logic` for each with the names in the comment), then a row a sample.
+
+use std::format;
+use std::string::String;
+use std::vec::Vec;
+
+use super::{Capture, CaptureError, Channel, error};
+
+/// A rate as sigrok prints it: `24 MHz`, `500 kHz`, `1000000`.
+fn rate(text: &str) -> Option<f64> {
+    let text = text.trim();
+    let split = text
+        .find(|c: char| !(c.is_ascii_digit() || c == '.'))
+        .unwrap_or(text.len());
+    let (number, unit) = text.split_at(split);
+    let factor = match unit.trim() {
+        "" | "Hz" => 1.0,
+        "kHz" => 1e3,
+        "MHz" => 1e6,
+        "GHz" => 1e9,
+        _ => return None,
+    };
+    let hz = number.parse::<f64>().ok()? * factor;
+    (hz > 0.0).then_some(hz)
+}
+
+/// A column that counts time or samples rather than a channel's level.
+fn is_time(name: &str) -> bool {
+    matches!(
+        name.trim().to_lowercase().as_str(),
+        "time" | "samples" | "sample"
+    )
+}
+
+/// The CSV's 1-bit channels.
+pub(super) fn read(text: &str) -> Result<Capture, CaptureError> {
+    let mut hz = None;
+    let mut names: Vec<String> = Vec::new();
+    let mut header: Option<Vec<String>> = None;
+    let mut channels: Vec<Channel> = Vec::new();
+    let mut skip_first = false;
+    let mut sample = 0u64;
+    for (n, line) in text.lines().enumerate() {
+        let line = line.trim();
+        if line.is_empty() {
+            continue;
+        }
+        if let Some(comment) = line.strip_prefix(';') {
+            let comment = comment.trim();
+            if let Some(rest) = comment.strip_prefix("Channels") {
+                if let Some((_, list)) = rest.split_once(':') {
+                    names = list.split(',').map(|s| s.trim().into()).collect();
+                }
+            } else if let Some(rest) = comment.strip_prefix("Samplerate:") {
+                hz = rate(rest);
+            }
+            continue;
+        }
+        if let Some(rest) = line.strip_prefix("META samplerate:") {
+            hz = rate(rest);
+            continue;
+        }
+        let fields: Vec<&str> = line.split(',').map(str::trim).collect();
+        let numeric = fields.iter().all(|f| f.parse::<f64>().is_ok());
+        if header.is_none() && channels.is_empty() && !numeric {
+            skip_first = fields.first().is_some_and(|f| is_time(f));
+            let labels = &fields[usize::from(skip_first)..];
+            let named = labels.iter().any(|l| *l != "logic");
+            header = Some(if named || names.len() != labels.len() {
+                labels.iter().map(|l| String::from(*l)).collect()
+            } else {
+                names.clone()
+            });
+            continue;
+        }
+        if channels.is_empty() {
+            let levels = fields.len() - usize::from(skip_first);
+            let labels = header.clone().unwrap_or_else(|| {
+                if names.len() == levels {
+                    names.clone()
+                } else {
+                    (0..levels).map(|i| format!("D{i}")).collect()
+                }
+            });
+            channels = labels
+                .into_iter()
+                .map(|name| Channel {
+                    name,
+                    initial: false,
+                    changes: Vec::new(),
+                })
+                .collect();
+        }
+        let Some(hz) = hz else {
+            return error(
+                "the CSV gives no sample rate before its samples (a `META samplerate` or \
+                 `; Samplerate` line, as sigrok-cli writes it)",
+            );
+        };
+        let levels = &fields[usize::from(skip_first)..];
+        if levels.len() != channels.len() {
+            return error(format!(
+                "line {}: {} values for {} channels",
+                n + 1,
+                levels.len(),
+                channels.len()
+            ));
+        }
+        let t = sample as f64 / hz;
+        for (c, v) in channels.iter_mut().zip(levels) {
+            let level = match *v {
+                "0" => false,
+                "1" => true,
+                _ => return error(format!("line {}: `{v}` is not a level, 0 or 1", n + 1)),
+            };
+            if sample == 0 {
+                c.initial = level;
+            } else if c.changes.last().map_or(c.initial, |&(_, l)| l) != level {
+                c.changes.push((t, level));
+            }
+        }
+        sample += 1;
+    }
+    if channels.is_empty() {
+        return error("the CSV holds no samples");
+    }
+    Ok(Capture { channels })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// As `sigrok-cli -I vcd -i t.vcd -O csv` (libsigrok 0.5.2) writes it,
+    /// and with `label=channel` and `time=true`.
+    #[test]
+    fn sigrok_s_csv_reads() {
+        let plain = "; CSV generated by libsigrok 0.5.2\n; from unknown on Sun Nov 29\n\
+                     ; Channels (2/2): STEP, DIR\nMETA samplerate: 1000000\nlogic,logic\n\
+                     0,0\n0,0\n1,0\n1,1\n0,1\n";
+        let c = read(plain).unwrap();
+        assert_eq!(c.channels[0].name, "STEP");
+        assert_eq!(c.channels[0].changes, vec![(2e-6, true), (4e-6, false)]);
+        assert_eq!(c.channels[1].changes, vec![(3e-6, true)]);
+        let labelled = "; Samplerate: 2 MHz\nTime,STEP,DIR\n0,0,0\n0,1,0\n";
+        let c = read(labelled).unwrap();
+        assert_eq!(c.channels[0].changes, vec![(0.5e-6, true)]);
+        assert_eq!(
+            read("STEP\n0\n1\n").unwrap_err().0,
+            "the CSV gives no sample rate before its samples (a `META samplerate` or \
+             `; Samplerate` line, as sigrok-cli writes it)"
+        );
+    }
+}
