@@ -11,8 +11,8 @@ fn root() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
 }
 
-/// What `rigs/firmware/examples/step_interrupt.rs` holds after the
-/// guide's block: the harness that times its step pin in QEMU, and nothing
+/// What the step-interrupt examples in `rigs/firmware/examples` hold after
+/// the guide's block: the harness that times its step pin in QEMU, and nothing
 /// else.
 const HARNESS: &str = "
 
@@ -20,23 +20,31 @@ const HARNESS: &str = "
 #[path = \"harness/step_interrupt.rs\"]
 mod harness;";
 
-/// The step-interrupt firmware in the guide's firmware page is
-/// `rigs/firmware/examples/step_interrupt.rs`, which CI runs on a
+/// The step-interrupt firmwares in the guide's firmware page are
+/// `rigs/firmware/examples/rtic_step.rs` (the RTIC task) and
+/// `step_interrupt.rs` (the hand-rolled handover), which CI runs on a
 /// Cortex-M3 in QEMU: the guide's code, then the harness.
 #[test]
-fn the_step_interrupt_example_is_the_file_ci_builds() {
+fn the_step_interrupt_examples_are_the_files_ci_builds() {
     let readme = read("src/guide/firmware.md");
-    let file = fs::read_to_string(root().join("rigs/firmware/examples/step_interrupt.rs")).unwrap();
-    let block = readme
-        .split("```rust,ignore\n")
-        .find(|b| b.contains("fn SysTick()"))
-        .and_then(|b| b.split("\n```").next())
-        .expect("a `rust,ignore` block with the SysTick handler in src/guide/firmware.md");
-    assert_eq!(
-        format!("{}{}", block.trim_end(), HARNESS),
-        file.trim_end(),
-        "the guide's step interrupt differs from rigs/firmware/examples/step_interrupt.rs"
-    );
+    for (marker, example) in [
+        ("#[rtic::app(", "rtic_step.rs"),
+        ("fn SysTick()", "step_interrupt.rs"),
+    ] {
+        let file = fs::read_to_string(root().join("rigs/firmware/examples").join(example)).unwrap();
+        let block = readme
+            .split("```rust,ignore\n")
+            .find(|b| b.split("\n```").next().is_some_and(|b| b.contains(marker)))
+            .and_then(|b| b.split("\n```").next())
+            .unwrap_or_else(|| {
+                panic!("a `rust,ignore` block with `{marker}` in src/guide/firmware.md")
+            });
+        assert_eq!(
+            format!("{}{}", block.trim_end(), HARNESS),
+            file.trim_end(),
+            "the guide's step interrupt differs from rigs/firmware/examples/{example}"
+        );
+    }
 }
 
 /// The README and the pages it sends readers to: the guide's pages, which

@@ -15,6 +15,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let memory = format!(
         "MEMORY\n{{\n  FLASH : ORIGIN = 0x00000000, LENGTH = {flash}\n  RAM : ORIGIN = 0x20000000, LENGTH = {ram}\n}}\n"
     );
+    // RTIC's backend (src/bin/rtic.rs) exists for the M3 and M4F only.
+    println!("cargo::rustc-check-cfg=cfg(rtic)");
+    if target != "thumbv6m-none-eabi" {
+        println!("cargo::rustc-cfg=rtic");
+    }
     let out = PathBuf::from(env::var("OUT_DIR")?);
     fs::write(out.join("memory.x"), memory)?;
     println!("cargo::rustc-link-search={}", out.display());

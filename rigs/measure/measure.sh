@@ -11,7 +11,10 @@
 # the same; or when the step interrupt (SysTick's handler, from its vector
 # to its return, the pin's toggle included, the pin pulsed before the step
 # so that every edge is at its time to the tick) takes more than 20 on the
-# M3 or the M4F; or when `Player::fill` takes more than 6 instructions per
+# M3 or the M4F, or as an RTIC 2 task (src/bin/rtic.rs) more than that
+# handler + 2.1 in a phase (RTIC's return writes BASEPRI back: 3
+# instructions, one of which the task's layout saves; a tenth for the
+# refills); or when `Player::fill` takes more than 6 instructions per
 # period filled in any phase of the per-step table, or more than 12 in any
 # phase of the compressed ramp; or when three
 # `Axes` (a lead and two followers) take more per step than the player in
@@ -60,23 +63,13 @@ declare -A target=([M0]=thumbv6m-none-eabi [M3]=thumbv7m-none-eabi [M4F]=thumbv7
 declare -A machine=([M0]="-cpu cortex-m0 -machine microbit" [M3]="-cpu cortex-m3 -machine lm3s6965evb"
     [M4F]="-cpu cortex-m4 -machine mps2-an386")
 
-for core in "${cores[@]}"; do
-    t=${target[$core]}
-    cargo build --release --quiet --target "$t"
-    elf=target/$t/release/stepper-profiles-measure
-    # Entry addresses of the measured functions, as the trace prints them.
-    entries=$("$nm" "$elf" | awk '$3 ~ /^(bare|iter|player|stepgen|axis|axes|buffered)_[a-z_]+$|^SysTick$/ { printf "%s ", $1 }')
-    # shellcheck disable=SC2086
-    timeout 600 qemu-system-arm ${machine[$core]} -nographic -semihosting-config enable=on,target=native \
-        "${one_insn[@]}" -d exec,nochain -D "$out/$core.log" -kernel "$elf" >"$out/$core.txt" 2>"$out/$core.err"
-    grep -q '^ok' "$out/$core.txt" || { cat "$out/$core.txt"; exit 1; }
-    # label|count|unit: a fill's figure is per period, not per call.
-    sed -n 's/^measure: \(.*\): \([0-9]*\) \(steps\|call\|periods\)$/\1|\2|\3/p' "$out/$core.txt" >"$out/$core.labels"
-    # One `Trace` line per instruction: `Trace 0: HOST [../PC/../..] SYMBOL`.
-    # Between the markers, a call runs from one entry of a measured function
-    # to the next; lines of the calling loop's own function are not counted.
-    # The first stretch is the bare load: a call above its cost + 8 is slow.
-    awk -v entries="$entries" '
+# One `Trace` line per instruction: `Trace 0: HOST [../PC/../..] SYMBOL`.
+# Between the markers, a call runs from one entry of a measured function
+# to the next; lines of the calling loop's own function are not counted.
+# The first stretch is the bare load (or `bare`, given): a call above its
+# cost + 8 is slow. Usage: count ENTRIES LOG [BARE]
+count() {
+    awk -v entries="$1" -v bare="${3:-0}" '
         function close_call() {
             if (cur >= 0) { if (cur < lo) lo = cur; if (cur > hi) hi = cur
                             if (bare && cur > bare + 8) slow++ }
@@ -92,8 +85,40 @@ for core in "${cores[@]}"; do
             if (caller == "") caller = sym
             if (index(" " entries, " " pc " ")) { close_call(); cur = 0; calls++ }
             if (sym != caller) { body++; if (cur >= 0) cur++ }
-        }' "$out/$core.log" >"$out/$core.counts"
-    [ "${KEEP_LOG:-0}" = 1 ] || rm -f "$out/$core.log"
+        }' "$2"
+}
+
+# Runs ELF on CORE in QEMU with the instruction trace; its `measure:` lines
+# (label|count|unit: a fill's figure is per period, not per call) to
+# OUT.labels and its counts (BARE as for `count`) to OUT.counts.
+# Usage: trace CORE ELF OUT [BARE]
+trace() {
+    local entries
+    # Entry addresses of the measured functions, as the trace prints them.
+    entries=$("$nm" "$2" | awk '$3 ~ /^(bare|iter|player|stepgen|axis|axes|buffered)_[a-z_]+$|^SysTick$/ { printf "%s ", $1 }')
+    # shellcheck disable=SC2086
+    timeout 600 qemu-system-arm ${machine[$1]} -nographic -semihosting-config enable=on,target=native \
+        "${one_insn[@]}" -d exec,nochain -D "$3.log" -kernel "$2" >"$3.txt" 2>"$3.err"
+    grep -q '^ok' "$3.txt" || { cat "$3.txt"; exit 1; }
+    sed -n 's/^measure: \(.*\): \([0-9]*\) \(steps\|call\|periods\)$/\1|\2|\3/p' "$3.txt" >"$3.labels"
+    count "$entries" "$3.log" "${4:-0}" >"$3.counts"
+    [ "${KEEP_LOG:-0}" = 1 ] || rm -f "$3.log"
+}
+
+for core in "${cores[@]}"; do
+    t=${target[$core]}
+    cargo build --release --quiet --target "$t" --bin stepper-profiles-measure
+    elf=target/$t/release/stepper-profiles-measure
+    trace "$core" "$elf" "$out/$core"
+    # The step interrupt as an RTIC task (its thumbv7 backend: the M3 and
+    # M4F), its rows after the main binary's, slow against the same bare load.
+    if [ "$core" != M0 ]; then
+        cargo build --release --quiet --target "$t" --bin rtic
+        bare=$(awk 'NR == 1 { print $4 }' "$out/$core.counts")
+        trace "$core" "target/$t/release/rtic" "$out/$core.rtic" "$bare"
+        cat "$out/$core.rtic.labels" >>"$out/$core.labels"
+        cat "$out/$core.rtic.counts" >>"$out/$core.counts"
+    fi
     paste -d'|' "$out/$core.labels" "$out/$core.counts" >"$out/$core.rows"
     # The player's code: its functions and the step functions that call it.
     "$nm" -S -C --radix=d "$elf" | awk '$3 ~ /^[tT]$/ && /profile_core::player|player_(step|runs_step|start|stop|set_cruise)$/ { s += $2 }
@@ -111,9 +136,10 @@ handler_most=20
 while IFS='|' read -r label _; do
     printf "%-58s" "$label"
     for core in "${cores[@]}"; do
-        awk -F'|' -v l="$label" '$1 == l { split($4, c, " ")
+        awk -F'|' -v l="$label" '$1 == l { split($4, c, " "); found = 1
             if ($3 == "periods") printf " %20s", sprintf("%.2f (%d) [%d]", c[1] / $2, c[4], c[2])
-            else printf " %20s", sprintf("%.2f (%d) [%d]", c[1] / c[2], c[4], c[5]) }' "$out/$core.rows"
+            else printf " %20s", sprintf("%.2f (%d) [%d]", c[1] / c[2], c[4], c[5]) }
+            END { if (!found) printf " %20s", "-" }' "$out/$core.rows"
     done
     echo
 done <"$out/M3.rows"
@@ -190,9 +216,21 @@ for core in "${cores[@]}"; do
                     }
                 }
                 # The step interrupt, from the SysTick vector to its return.
-                if (l ~ /^handler/ && core != "M0" && mean[l] > handler) {
+                if (l ~ /^handler/ && l !~ /RTIC/ && core != "M0" && mean[l] > handler) {
                     printf "FAIL %s: %s %.2f instructions per step, more than %d\n", core, l, mean[l], handler
                     bad = 1
+                }
+                # As an RTIC task: the same step and RTIC'"'"'s return (BASEPRI
+                # written back: movs, msr, isb), less the load the task'"'"'s
+                # layout saves: 2 a step over the hand-rolled handler, and a
+                # few more at the rare refills (a tenth at most over a phase).
+                if (l ~ /^handler, RTIC task/) {
+                    phase = l; sub(/.* /, "", phase)
+                    base = mean["handler, Buffered per-step table (SysTick vector to return) " phase]
+                    if (mean[l] > base + 2.1) {
+                        printf "FAIL %s: %s %.2f instructions per step, more than the hand-rolled handler %.2f + 2.1\n", core, l, mean[l], base
+                        bad = 1
+                    }
                 }
                 most = l ~ /^Player::fill, per-step table/ ? 6 : l ~ /^Player::fill, compressed/ ? 12 : -1
                 if (most >= 0 && mean[l] > most) {
@@ -203,5 +241,5 @@ for core in "${cores[@]}"; do
             exit bad
         }' "$out/$core.rows" || status=1
 done
-[ "$status" = 0 ] && echo "ok: on every core the player's per-step mean is within the bare load + 4, the compressed player's within the bare load + 8 (Buffered the same), the step interrupt within 20 on the M3 and M4F, Player::next_period within Player::step + 1, Player::fill takes at most 6 instructions per period of the per-step table, 12 of compressed runs, three Axes within the player + 2 x 5 (M0: 2 x 7), planning within 1000 on the table and on the indexed ramp and 18750 on the plain compressed ramp (M3, M4F), the step after a call on a compressed ramp within the compressed player's largest step"
+[ "$status" = 0 ] && echo "ok: on every core the player's per-step mean is within the bare load + 4, the compressed player's within the bare load + 8 (Buffered the same), the step interrupt within 20 on the M3 and M4F (as an RTIC task within the hand-rolled handler + 2.1), Player::next_period within Player::step + 1, Player::fill takes at most 6 instructions per period of the per-step table, 12 of compressed runs, three Axes within the player + 2 x 5 (M0: 2 x 7), planning within 1000 on the table and on the indexed ramp and 18750 on the plain compressed ramp (M3, M4F), the step after a call on a compressed ramp within the compressed player's largest step"
 exit "$status"

@@ -26,6 +26,11 @@ mod profiles {
 
 mod handler;
 
+// On the M3 and M4F the package depends on RTIC (src/bin/rtic.rs), whose
+// runtime asks for a device's interrupt vectors: the LM3S6965's, unused.
+#[cfg(rtic)]
+use lm3s6965 as _;
+
 use profiles::{exponential_segments, microstep_runs, sigmoid_exact, sigmoid_orange};
 
 /// Steps of the measured move: up the ramp, cruise, down the ramp.
