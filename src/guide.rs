@@ -24,8 +24,17 @@ pub mod motor {}
 #[doc = include_str!("guide/firmware.md")]
 pub mod firmware {}
 
+#[doc = include_str!("guide/rtic.md")]
+pub mod rtic {}
+
+#[doc = include_str!("guide/pio.md")]
+pub mod pio {}
+
 #[doc = include_str!("guide/command_line.md")]
 pub mod command_line {}
+
+#[doc = include_str!("guide/logic_analyzer.md")]
+pub mod logic_analyzer {}
 
 #[doc = include_str!("guide/c_output.md")]
 pub mod c_output {}

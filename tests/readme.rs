@@ -20,31 +20,77 @@ const HARNESS: &str = "
 #[path = \"harness/step_interrupt.rs\"]
 mod harness;";
 
-/// The step-interrupt firmwares in the guide's firmware page are
+/// The step-interrupt firmwares of the guide's RTIC and firmware pages are
 /// `rigs/firmware/examples/rtic_step.rs` (the RTIC task) and
 /// `step_interrupt.rs` (the hand-rolled handover), which CI runs on a
 /// Cortex-M3 in QEMU: the guide's code, then the harness.
 #[test]
 fn the_step_interrupt_examples_are_the_files_ci_builds() {
-    let readme = read("src/guide/firmware.md");
-    for (marker, example) in [
-        ("#[rtic::app(", "rtic_step.rs"),
-        ("fn SysTick()", "step_interrupt.rs"),
+    for (page, marker, example) in [
+        ("src/guide/rtic.md", "#[rtic::app(", "rtic_step.rs"),
+        ("src/guide/firmware.md", "fn SysTick()", "step_interrupt.rs"),
     ] {
+        let readme = read(page);
         let file = fs::read_to_string(root().join("rigs/firmware/examples").join(example)).unwrap();
         let block = readme
             .split("```rust,ignore\n")
             .find(|b| b.split("\n```").next().is_some_and(|b| b.contains(marker)))
             .and_then(|b| b.split("\n```").next())
-            .unwrap_or_else(|| {
-                panic!("a `rust,ignore` block with `{marker}` in src/guide/firmware.md")
-            });
+            .unwrap_or_else(|| panic!("a `rust,ignore` block with `{marker}` in {page}"));
         assert_eq!(
             format!("{}{}", block.trim_end(), HARNESS),
             file.trim_end(),
             "the guide's step interrupt differs from rigs/firmware/examples/{example}"
         );
     }
+}
+
+/// The PIO page's program and Rust blocks are the example's, as written:
+/// each `rust,ignore` block a passage of `examples/hal/rp2040/src/bin/pio.rs`
+/// or `src/pio_step.rs`, the program's text the one in `pio_step.rs`'s
+/// documentation.
+#[test]
+fn the_pio_page_shows_the_example_as_it_is() {
+    let page = read("src/guide/pio.md");
+    let dir = root().join("examples/hal/rp2040/src");
+    let files: String = ["bin/pio.rs", "pio_step.rs"]
+        .iter()
+        .map(|f| fs::read_to_string(dir.join(f)).unwrap())
+        .collect();
+    let blocks = |fence: &str| -> Vec<String> {
+        page.split(fence)
+            .skip(1)
+            .filter_map(|b| b.split("\n```").next())
+            .map(String::from)
+            .collect()
+    };
+    let rust = blocks("```rust,ignore\n");
+    assert_eq!(rust.len(), 2, "two Rust blocks in src/guide/pio.md");
+    for block in rust {
+        // Indented as in the file, or as a passage of a function's body.
+        let found = files.contains(&block)
+            || files.contains(
+                &block
+                    .lines()
+                    .map(|l| format!("    {l}"))
+                    .collect::<Vec<_>>()
+                    .join("\n"),
+            );
+        assert!(found, "not in the PIO example, as written:\n{block}");
+    }
+    let [program] = &blocks("```text\n")[..] else {
+        panic!("one program in src/guide/pio.md");
+    };
+    let documented: String = fs::read_to_string(dir.join("pio_step.rs"))
+        .unwrap()
+        .lines()
+        .filter_map(|l| l.strip_prefix("//! ").or(l.strip_prefix("//!")))
+        .collect::<Vec<_>>()
+        .join("\n");
+    assert!(
+        documented.contains(program.as_str()),
+        "the program differs from pio_step.rs's:\n{program}"
+    );
 }
 
 /// The README and the pages it sends readers to: the guide's pages, which
