@@ -30,6 +30,9 @@ pub mod rtic {}
 #[doc = include_str!("guide/pio.md")]
 pub mod pio {}
 
+#[doc = include_str!("guide/rmt.md")]
+pub mod rmt {}
+
 #[doc = include_str!("guide/command_line.md")]
 pub mod command_line {}
 

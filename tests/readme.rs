@@ -45,52 +45,62 @@ fn the_step_interrupt_examples_are_the_files_ci_builds() {
     }
 }
 
-/// The PIO page's program and Rust blocks are the example's, as written:
-/// each `rust,ignore` block a passage of `examples/hal/rp2040/src/bin/pio.rs`
-/// or `src/pio_step.rs`, the program's text the one in `pio_step.rs`'s
-/// documentation.
+/// The PIO and RMT pages show their examples as written: each `rust,ignore`
+/// block a passage of the example's files, and the PIO program's text the
+/// one in `pio_step.rs`'s documentation.
 #[test]
-fn the_pio_page_shows_the_example_as_it_is() {
-    let page = read("src/guide/pio.md");
-    let dir = root().join("examples/hal/rp2040/src");
-    let files: String = ["bin/pio.rs", "pio_step.rs"]
-        .iter()
-        .map(|f| fs::read_to_string(dir.join(f)).unwrap())
-        .collect();
-    let blocks = |fence: &str| -> Vec<String> {
-        page.split(fence)
-            .skip(1)
-            .filter_map(|b| b.split("\n```").next())
-            .map(String::from)
-            .collect()
-    };
-    let rust = blocks("```rust,ignore\n");
-    assert_eq!(rust.len(), 2, "two Rust blocks in src/guide/pio.md");
-    for block in rust {
-        // Indented as in the file, or as a passage of a function's body.
-        let found = files.contains(&block)
-            || files.contains(
-                &block
-                    .lines()
-                    .map(|l| format!("    {l}"))
-                    .collect::<Vec<_>>()
-                    .join("\n"),
+fn the_pio_and_rmt_pages_show_the_examples_as_they_are() {
+    for (page, dir, files, blocks) in [
+        (
+            "src/guide/pio.md",
+            "examples/hal/rp2040/src",
+            ["bin/pio.rs", "pio_step.rs"],
+            2,
+        ),
+        (
+            "src/guide/rmt.md",
+            "examples/hal/esp32c3/src",
+            ["bin/rmt.rs", "rmt_step.rs"],
+            2,
+        ),
+    ] {
+        let text = read(page);
+        let dir = root().join(dir);
+        let files: String = files
+            .iter()
+            .map(|f| fs::read_to_string(dir.join(f)).unwrap())
+            .collect();
+        let fenced = |fence: &str| -> Vec<String> {
+            text.split(fence)
+                .skip(1)
+                .filter_map(|b| b.split("\n```").next())
+                .map(String::from)
+                .collect()
+        };
+        let rust = fenced("```rust,ignore\n");
+        assert_eq!(rust.len(), blocks, "Rust blocks in {page}");
+        for block in rust {
+            // As in the file, or a passage of a function's body.
+            let indented: Vec<String> = block.lines().map(|l| format!("    {l}")).collect();
+            let found = files.contains(&block) || files.contains(&indented.join("\n"));
+            assert!(found, "{page}: not in the example, as written:\n{block}");
+        }
+        if page.ends_with("pio.md") {
+            let [program] = &fenced("```text\n")[..] else {
+                panic!("one program in {page}");
+            };
+            let documented: String = fs::read_to_string(dir.join("pio_step.rs"))
+                .unwrap()
+                .lines()
+                .filter_map(|l| l.strip_prefix("//! ").or(l.strip_prefix("//!")))
+                .collect::<Vec<_>>()
+                .join("\n");
+            assert!(
+                documented.contains(program.as_str()),
+                "the program differs from pio_step.rs's:\n{program}"
             );
-        assert!(found, "not in the PIO example, as written:\n{block}");
+        }
     }
-    let [program] = &blocks("```text\n")[..] else {
-        panic!("one program in src/guide/pio.md");
-    };
-    let documented: String = fs::read_to_string(dir.join("pio_step.rs"))
-        .unwrap()
-        .lines()
-        .filter_map(|l| l.strip_prefix("//! ").or(l.strip_prefix("//!")))
-        .collect::<Vec<_>>()
-        .join("\n");
-    assert!(
-        documented.contains(program.as_str()),
-        "the program differs from pio_step.rs's:\n{program}"
-    );
 }
 
 /// The README and the pages it sends readers to: the guide's pages, which
