@@ -3,11 +3,12 @@
 //! table alone; the trace compared with itself, with a capture one tick off
 //! at one step, and with sigrok's CSV of it.
 
+mod common;
+
+use common::{run, text};
 use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
-
-const BIN: &str = env!("CARGO_BIN_EXE_stepper-profiles");
 
 /// A 1 MHz timer, so that a tick is a microsecond and a sample of a 1 MHz
 /// capture; the driver's pulse 2 µs (a DRV8825's 1.9, rounded up).
@@ -16,25 +17,30 @@ const FILE: &str = "[profiles.ramp]\ncurve = \"linear\"\nfmin = 500\nfmax = 4000
 const CRUISE: u32 = 30;
 
 fn work_dir(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
-        .join("capture")
-        .join(name);
-    let _ = fs::remove_dir_all(&dir);
-    fs::create_dir_all(&dir).unwrap();
+    let dir = common::work_dir("capture", name);
     fs::write(dir.join("ramps.toml"), FILE).unwrap();
     dir
 }
 
-fn run(dir: &Path, args: &[&str]) -> Output {
-    Command::new(BIN)
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .unwrap_or_else(|e| panic!("cannot run {BIN}: {e}"))
+/// `trace PROFILE` of a move of `steps` in `ramps.toml`, with `more`.
+fn trace(dir: &Path, profile: &str, steps: &str, more: &[&str]) -> Output {
+    let args = ["trace", profile, "-f", "ramps.toml", "--move", steps];
+    run(dir, &[&args[..], more].concat())
 }
 
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8(bytes.to_vec()).unwrap()
+/// `compare PROFILE CAPTURE` against a move of `steps` in `ramps.toml`,
+/// with `more`.
+fn compare(dir: &Path, profile: &str, capture: &str, steps: &str, more: &[&str]) -> Output {
+    let args = [
+        "compare",
+        profile,
+        capture,
+        "-f",
+        "ramps.toml",
+        "--move",
+        steps,
+    ];
+    run(dir, &[&args[..], more].concat())
 }
 
 /// The table's periods, from the library.
@@ -75,19 +81,7 @@ fn trace_writes_every_step_edge_at_its_tick() {
     let dir = work_dir("trace");
     let table = table();
     let steps = 2 * table.len() as u32 + CRUISE;
-    let out = run(
-        &dir,
-        &[
-            "trace",
-            "ramp",
-            "-f",
-            "ramps.toml",
-            "--move",
-            &steps.to_string(),
-            "-o",
-            "move.vcd",
-        ],
-    );
+    let out = trace(&dir, "ramp", &steps.to_string(), &["-o", "move.vcd"]);
     assert!(out.status.success(), "{}", text(&out.stderr));
     let vcd = fs::read_to_string(dir.join("move.vcd")).unwrap();
     assert!(vcd.contains("$timescale 1 us $end"), "{vcd}");
@@ -109,19 +103,7 @@ fn trace_writes_every_step_edge_at_its_tick() {
     assert!(rises.iter().zip(&falls).all(|(r, f)| f - r == 2));
     // Stopped after 10 steps up: down the table from the entry just
     // played, each entry again.
-    let out = run(
-        &dir,
-        &[
-            "trace",
-            "ramp",
-            "-f",
-            "ramps.toml",
-            "--move",
-            &steps.to_string(),
-            "--stop-at",
-            "10",
-        ],
-    );
+    let out = trace(&dir, "ramp", &steps.to_string(), &["--stop-at", "10"]);
     let (rises, _) = stamps(&text(&out.stdout));
     let mut at = 0;
     let want: Vec<u64> = table[..10]
@@ -140,26 +122,11 @@ fn compare_finds_the_step_one_tick_off() {
     let dir = work_dir("compare");
     let table = table();
     let steps = (2 * table.len() as u32 + CRUISE).to_string();
-    let trace = run(
-        &dir,
-        &["trace", "ramp", "-f", "ramps.toml", "--move", &steps],
-    );
+    let trace = trace(&dir, "ramp", &steps, &[]);
     assert!(trace.status.success());
     let vcd = text(&trace.stdout);
     fs::write(dir.join("same.vcd"), &vcd).unwrap();
-    let same = run(
-        &dir,
-        &[
-            "compare",
-            "ramp",
-            "same.vcd",
-            "-f",
-            "ramps.toml",
-            "--move",
-            &steps,
-            "--summary",
-        ],
-    );
+    let same = compare(&dir, "ramp", "same.vcd", &steps, &["--summary"]);
     assert!(same.status.success(), "{}", text(&same.stderr));
     assert_eq!(
         text(&same.stdout),
@@ -182,18 +149,7 @@ fn compare_finds_the_step_one_tick_off() {
         })
         .collect();
     fs::write(dir.join("late.vcd"), edited).unwrap();
-    let late = run(
-        &dir,
-        &[
-            "compare",
-            "ramp",
-            "late.vcd",
-            "-f",
-            "ramps.toml",
-            "--move",
-            &steps,
-        ],
-    );
+    let late = compare(&dir, "ramp", "late.vcd", &steps, &[]);
     assert_eq!(late.status.code(), Some(1));
     let printed = text(&late.stdout);
     assert!(
@@ -217,20 +173,7 @@ fn compare_finds_the_step_one_tick_off() {
         "`late.vcd` is not the move of `ramp` within 0.5 ticks\n"
     );
     // With a tolerance of a tick, it passes.
-    let loose = run(
-        &dir,
-        &[
-            "compare",
-            "ramp",
-            "late.vcd",
-            "-f",
-            "ramps.toml",
-            "--move",
-            &steps,
-            "--tolerance",
-            "1",
-        ],
-    );
+    let loose = compare(&dir, "ramp", "late.vcd", &steps, &["--tolerance", "1"]);
     assert!(loose.status.success());
 }
 
@@ -257,31 +200,25 @@ fn compare_reads_sigrok_s_csv() {
         csv.push_str(if high { "0,1\n" } else { "0,0\n" });
     }
     fs::write(dir.join("capture.csv"), &csv).unwrap();
-    let args = |file: &'static str, n: u32| {
-        let n = n.to_string();
-        move |dir: &Path| {
-            run(
-                dir,
-                &[
-                    "compare",
-                    "ramp",
-                    file,
-                    "-f",
-                    "ramps.toml",
-                    "--move",
-                    &n,
-                    "--summary",
-                ],
-            )
-        }
-    };
-    let out = args("capture.csv", steps)(&dir);
+    let out = compare(
+        &dir,
+        "ramp",
+        "capture.csv",
+        &steps.to_string(),
+        &["--summary"],
+    );
     assert!(out.status.success(), "{}", text(&out.stderr));
     assert!(text(&out.stdout).starts_with(&format!(
         "{steps} steps compared on `D1`: the largest error 0.000 ticks"
     )));
     // A longer move than the capture holds: its missing steps fail.
-    let long = args("capture.csv", steps + 5)(&dir);
+    let long = compare(
+        &dir,
+        "ramp",
+        "capture.csv",
+        &(steps + 5).to_string(),
+        &["--summary"],
+    );
     assert_eq!(long.status.code(), Some(1));
     assert!(
         text(&long.stdout).contains("; the capture ends 5 steps short of the move"),
@@ -293,16 +230,13 @@ fn compare_reads_sigrok_s_csv() {
 #[test]
 fn trace_and_compare_say_what_is_wrong() {
     let dir = work_dir("wrong");
-    let out = run(
-        &dir,
-        &["trace", "ramps", "-f", "ramps.toml", "--move", "10"],
-    );
+    let out = trace(&dir, "ramps", "10", &[]);
     assert_eq!(out.status.code(), Some(1));
     assert_eq!(
         text(&out.stderr),
         "`ramps.toml` has no profile `ramps`; its profiles: ramp\n"
     );
-    let out = run(&dir, &["trace", "ramp", "-f", "ramps.toml", "--move", "0"]);
+    let out = trace(&dir, "ramp", "0", &[]);
     assert_eq!(
         text(&out.stderr),
         "a move of 0 steps has no edges: give `--move` 1 or more\n"
@@ -312,38 +246,14 @@ fn trace_and_compare_say_what_is_wrong() {
         "$timescale 1ns $end\n$var wire 1 ! STEP $end\n#0\n0!\n",
     )
     .unwrap();
-    let out = run(
-        &dir,
-        &[
-            "compare",
-            "ramp",
-            "flat.vcd",
-            "-f",
-            "ramps.toml",
-            "--move",
-            "10",
-        ],
-    );
+    let out = compare(&dir, "ramp", "flat.vcd", "10", &[]);
     assert_eq!(out.status.code(), Some(1));
     assert_eq!(
         text(&out.stderr),
         "`flat.vcd`: the channel `STEP` has no step edges (no rising edge: try `--edges both` \
          for a pin that toggles)\n"
     );
-    let out = run(
-        &dir,
-        &[
-            "compare",
-            "ramp",
-            "flat.vcd",
-            "-f",
-            "ramps.toml",
-            "--move",
-            "10",
-            "--channel",
-            "DIR",
-        ],
-    );
+    let out = compare(&dir, "ramp", "flat.vcd", "10", &["--channel", "DIR"]);
     assert_eq!(
         text(&out.stderr),
         "`flat.vcd`: the capture has no channel `DIR`; its channels: `STEP`\n"
@@ -358,19 +268,7 @@ fn compare_reads_what_sigrok_cli_writes() {
     let dir = work_dir("sigrok");
     let table = table();
     let steps = (2 * table.len() as u32 + CRUISE).to_string();
-    let trace = run(
-        &dir,
-        &[
-            "trace",
-            "ramp",
-            "-f",
-            "ramps.toml",
-            "--move",
-            &steps,
-            "-o",
-            "move.vcd",
-        ],
-    );
+    let trace = trace(&dir, "ramp", &steps, &["-o", "move.vcd"]);
     assert!(trace.status.success());
     let csv = Command::new("sigrok-cli")
         .args(["-I", "vcd", "-i", "move.vcd", "-O", "csv"])
@@ -379,19 +277,7 @@ fn compare_reads_what_sigrok_cli_writes() {
         .unwrap_or_else(|e| panic!("sigrok-cli (apt-get install sigrok-cli): {e}"));
     assert!(csv.status.success(), "{}", text(&csv.stderr));
     fs::write(dir.join("move.csv"), &csv.stdout).unwrap();
-    let out = run(
-        &dir,
-        &[
-            "compare",
-            "ramp",
-            "move.csv",
-            "-f",
-            "ramps.toml",
-            "--move",
-            &steps,
-            "--summary",
-        ],
-    );
+    let out = compare(&dir, "ramp", "move.csv", &steps, &["--summary"]);
     assert!(
         out.status.success(),
         "{}{}",

@@ -1,13 +1,14 @@
 //! The `stepper-profiles` binary, run as a user runs it: every command, its
 //! exit status, what it prints and the files it writes.
 
+mod common;
+
+use common::{BIN, run, text};
 use std::fs;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output, Stdio};
+use std::process::{Command, Stdio};
 
 use profile_codegen::profiles::{CStyle, Profiles};
-
-const BIN: &str = env!("CARGO_BIN_EXE_stepper-profiles");
 
 fn shipped() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -16,24 +17,7 @@ fn shipped() -> PathBuf {
 }
 
 fn work_dir(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
-        .join("cli")
-        .join(name);
-    let _ = fs::remove_dir_all(&dir);
-    fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-fn run(dir: &Path, args: &[&str]) -> Output {
-    Command::new(BIN)
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .unwrap_or_else(|e| panic!("cannot run {BIN}: {e}"))
-}
-
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8(bytes.to_vec()).unwrap()
+    common::work_dir("cli", name)
 }
 
 /// A profiles file with one mistake on line 7.
