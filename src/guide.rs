@@ -21,11 +21,11 @@ pub mod golden_tests {}
 #[doc = include_str!("guide/motor.md")]
 pub mod motor {}
 
-#[doc = include_str!("guide/firmware.md")]
-pub mod firmware {}
-
 #[doc = include_str!("guide/rtic.md")]
 pub mod rtic {}
+
+#[doc = include_str!("guide/firmware.md")]
+pub mod firmware {}
 
 #[doc = include_str!("guide/pio.md")]
 pub mod pio {}
