@@ -20,6 +20,10 @@ use core::ptr::{read_volatile, write_volatile};
 use core::sync::atomic::{AtomicU32, AtomicUsize, Ordering};
 
 use cortex_m_semihosting::{debug, hprintln};
+// The examples share the rig's dev-dependencies: RTIC's (rtic_step.rs)
+// turn on cortex-m-rt's `device` feature, which asks every example for a
+// device's interrupt vectors: the LM3S6965's, unused.
+use lm3s6965 as _;
 
 /// Moves checked, and their steps (the README's moves of 5000).
 const MOVES: usize = 2;
