@@ -23,7 +23,7 @@ use std::sync::mpsc;
 use std::time::Duration;
 
 use clap::{Parser, Subcommand};
-use profile_codegen::capture::{Capture, Edges, Reference};
+use profile_codegen::capture::{Capture, Edges, Reference, Timing};
 use profile_codegen::profiles::{CStyle, Profiles};
 use staging::Staging;
 
@@ -171,6 +171,11 @@ struct MoveArgs {
     /// Stop the move (down the table from where it stands) after K steps
     #[arg(long, value_name = "K")]
     stop_at: Option<u32>,
+    /// Each step edge ends its period (a timer's compare output that
+    /// toggles at the match, the period written before it starts), rather
+    /// than starting it (a step interrupt that pulses, then loads the next)
+    #[arg(long)]
+    edge_ends_period: bool,
 }
 
 /// A failure, already worded for the user.
@@ -274,7 +279,11 @@ fn reference(name: &str, mv: &MoveArgs) -> Result<Reference, Failure> {
                 names.join(", ")
             )
         })?;
-    Ok(Reference::of(profile, mv.steps, mv.stop_at)?)
+    let timing = match mv.edge_ends_period {
+        true => Timing::Ends,
+        false => Timing::Starts,
+    };
+    Ok(Reference::of(profile, mv.steps, mv.stop_at, timing)?)
 }
 
 /// `compare`: the capture against the move, every step (or the summary)

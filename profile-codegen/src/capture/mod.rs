@@ -4,21 +4,22 @@
 //! [`Reference::of`] plays a move of a profile's table with the player
 //! firmware uses (`player::Player`, its deceleration the same table) and
 //! keeps the time of every step edge, in the timer's ticks from the move's
-//! first edge. [`Reference::vcd`] writes it as a VCD file that PulseView and
+//! first edge, each edge starting the period the player handed out with it
+//! or ending it ([`Timing`]). [`Reference::vcd`] writes it as a VCD file that PulseView and
 //! `sigrok-cli` read; [`Capture::parse`] reads a capture (VCD, or the CSV
 //! `sigrok-cli -O csv` writes) and [`Capture::compare`] lines its step
 //! channel up with the reference, first edge on first edge, and gives each
 //! step's error in ticks.
 //!
 //! ```
-//! use profile_codegen::capture::{Capture, Edges, Reference};
+//! use profile_codegen::capture::{Capture, Edges, Reference, Timing};
 //! use profile_codegen::profiles::Profiles;
 //!
 //! let profiles = Profiles::parse(
 //!     "ramps.toml",
 //!     "[profiles.x]\ncurve = \"linear\"\nfmin = 500\nfmax = 2000\nlen = 20\ntimer_hz = \"1 MHz\"\n",
 //! )?;
-//! let reference = Reference::of(&profiles.profiles()[0], 50, None)?;
+//! let reference = Reference::of(&profiles.profiles()[0], 50, None, Timing::Starts)?;
 //! // The reference read back as a capture: every step at its tick.
 //! let capture = Capture::parse(&reference.vcd())?;
 //! let result = capture.compare(&reference, None, Edges::Rising, 0.5)?;
@@ -54,6 +55,22 @@ fn error<T>(message: impl Into<String>) -> Result<T, CaptureError> {
     Err(CaptureError(message.into()))
 }
 
+/// Where a step's edge falls in the period the player hands out with it,
+/// as the firmware makes it.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Timing {
+    /// The edge starts its period: a step interrupt that pulses the pin and
+    /// then hands the timer the period after it (`Player::step`, the guide's
+    /// firmware, the PIO and RMT examples): step `k` at the sum of the
+    /// first `k` periods.
+    #[default]
+    Starts,
+    /// The edge ends its period: a timer's compare output that toggles at
+    /// the match, each period written before it starts (the ATmega328P
+    /// client of `rigs/avr`): step `k` at the sum of the first `k + 1`.
+    Ends,
+}
+
 /// A move's step edges, exact: what the player hands the timer, summed.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Reference {
@@ -61,12 +78,11 @@ pub struct Reference {
     pub name: String,
     /// The timer's rate, ticks per second.
     pub timer_hz: u32,
-    /// Ticks from the move's start to its first step edge (the first
-    /// period).
-    pub lead: u64,
-    /// The period before each step after the first, in ticks (a step's
-    /// timer intervals summed: `ticks_per_step` of them).
+    /// Each step's period, in ticks (a step's timer intervals summed:
+    /// `ticks_per_step` of them), as the player hands them out.
     pub periods: Vec<u64>,
+    /// Where each edge falls in its period.
+    pub timing: Timing,
     /// The move's steps, as asked (a stop plays fewer: one edge each of
     /// [`Reference::edges`]).
     pub steps: u32,
@@ -82,9 +98,14 @@ impl Reference {
     /// (up the table, at its top, down the same table), stopped after
     /// `stop_at` steps when given: each step's period as the player hands
     /// it out, times the timer's ticks per step (its `reload_offset` not
-    /// counted: the periods themselves). A segment table plays each
-    /// segment's period its count of times.
-    pub fn of(profile: &Profile, steps: u32, stop_at: Option<u32>) -> Result<Self, CaptureError> {
+    /// counted: the periods themselves), each edge where `timing` puts it.
+    /// A segment table plays each segment's period its count of times.
+    pub fn of(
+        profile: &Profile,
+        steps: u32,
+        stop_at: Option<u32>,
+        timing: Timing,
+    ) -> Result<Self, CaptureError> {
         if steps == 0 {
             return error("a move of 0 steps has no edges: give `--move` 1 or more");
         }
@@ -99,41 +120,42 @@ impl Reference {
             .driver
             .as_ref()
             .map(|d| d.ticks(d.step_pulse, &spec.timer));
-        // Edge k comes after periods[0..=k]: the first is the move's start
-        // to its first edge, which a capture lines up rather than sees.
         Ok(Reference {
             name: profile.name.clone(),
             timer_hz: spec.timer.timer_hz,
-            lead: periods.first().map_or(0, |&p| u64::from(p) * per),
-            periods: periods
-                .iter()
-                .skip(1)
-                .map(|&p| u64::from(p) * per)
-                .collect(),
+            periods: periods.iter().map(|&p| u64::from(p) * per).collect(),
+            timing,
             steps,
             stop_at,
             pulse_ticks,
         })
     }
 
-    /// The time of each step edge, in ticks from the first.
+    /// The time of each step edge, in ticks from the first: one a step, the
+    /// periods between them those that start at an edge (all but the last)
+    /// or end at one (all but the first), as [`Reference::timing`] says.
     pub fn edges(&self) -> Vec<u64> {
+        let between = match self.timing {
+            Timing::Starts => &self.periods[..self.periods.len().saturating_sub(1)],
+            Timing::Ends => self.periods.get(1..).unwrap_or(&[]),
+        };
         let mut at = 0;
-        let mut out = Vec::with_capacity(self.periods.len() + 1);
+        let mut out = Vec::with_capacity(self.periods.len());
         out.push(0);
-        for &p in &self.periods {
+        for &p in between {
             at += p;
             out.push(at);
         }
         out
     }
 
-    /// The move as a VCD file from its start: the step pin `STEP` high at
-    /// each step edge (for the driver's `step_pulse`, or half the shortest
-    /// period without one, at least a tick), in the largest power-of-ten
-    /// unit that holds every tick exactly (`1 ps`, rounded to it, where none
-    /// does). Its header gives the move, the timer's rate and a tick in
-    /// that unit. One 1-bit signal, as sigrok's VCD reader takes it.
+    /// The move as a VCD file: the step pin `STEP` high at each step edge
+    /// (for the driver's `step_pulse`, or half the shortest period without
+    /// one, at least a tick), time 0 a pulse before the first, in the
+    /// largest power-of-ten unit that holds every tick exactly (`1 ps`,
+    /// rounded to it, where none does). Its header gives the move, the
+    /// timer's rate and a tick in that unit. One 1-bit signal, as sigrok's
+    /// VCD reader takes it.
     pub fn vcd(&self) -> String {
         vcd::write(self)
     }
@@ -263,8 +285,8 @@ impl Capture {
         let hz = f64::from(reference.timer_hz);
         let want = reference.edges();
         // To a millionth of a tick: a capture's times are decimal fractions
-        // of a second, its ticks rarely whole in binary.
-        let micro = |x: f64| libm::round(x * 1e6) / 1e6;
+        // of a second, its ticks rarely whole in binary (and a zero is +0).
+        let micro = |x: f64| libm::round(x * 1e6) / 1e6 + 0.0;
         let errors: Vec<f64> = steps
             .iter()
             .zip(&want)

@@ -36,7 +36,7 @@ fn unit(timer_hz: u32) -> (&'static str, f64) {
 pub(super) fn write(r: &Reference) -> String {
     let (timescale, per_tick) = unit(r.timer_hz);
     let at = |ticks: u64| libm::round(ticks as f64 * per_tick) as u64;
-    let shortest = r.periods.iter().copied().min().unwrap_or(r.lead).max(1);
+    let shortest = r.periods.iter().copied().min().unwrap_or(1).max(1);
     let pulse = match r.pulse_ticks {
         Some(p) => u64::from(p).max(1),
         None => (shortest / 2).max(1),
@@ -46,10 +46,14 @@ pub(super) fn write(r: &Reference) -> String {
         Some(k) => format!(", stopped after {k}: {} played", edges.len()),
         None => String::new(),
     };
+    let timing = match r.timing {
+        super::Timing::Starts => "each edge starting its period",
+        super::Timing::Ends => "each edge ending its period",
+    };
     let mut out = format!(
         "$version stepper-profiles {} $end\n\
-         $comment profile `{}`: a move of {} steps{stop}, from rest; timer {} Hz, a tick is {} \
-         of {timescale} $end\n\
+         $comment profile `{}`: a move of {} steps{stop}, from rest, {timing}; timer {} Hz, a \
+         tick is {} of {timescale}; time 0 a pulse before the first step $end\n\
          $timescale {timescale} $end\n\
          $scope module {} $end\n$var wire 1 ! STEP $end\n\
          $upscope $end\n$enddefinitions $end\n#0\n$dumpvars\n0!\n$end\n",
@@ -61,7 +65,7 @@ pub(super) fn write(r: &Reference) -> String {
         r.name,
     );
     for edge in edges {
-        let rise = r.lead + edge;
+        let rise = pulse + edge;
         out.push_str(&format!("#{}\n1!\n#{}\n0!\n", at(rise), at(rise + pulse)));
     }
     out

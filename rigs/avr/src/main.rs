@@ -265,7 +265,13 @@ fn images(profiles: &Profiles) -> Result<Vec<Image>, String> {
         }
     };
     let reference = |p: &profile_codegen::profiles::Profile, steps: u32| {
-        profile_codegen::capture::Reference::of(p, steps, None).map_err(|e| e.to_string())
+        profile_codegen::capture::Reference::of(
+            p,
+            steps,
+            None,
+            profile_codegen::capture::Timing::Ends,
+        )
+        .map_err(|e| e.to_string())
     };
     let dir_setup = |p: &profile_codegen::profiles::Profile| {
         let d = p
