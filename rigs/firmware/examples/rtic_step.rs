@@ -1,8 +1,9 @@
 //! The step interrupt as an RTIC 2 task: SysTick's hardware task owns the
 //! stepper (the `Buffered` player, the timer and the registers a step
 //! writes) as a local resource, so that no lock, no `UnsafeCell` and no
-//! check stand between a wrap and its step: 18 to 20 instructions a step
-//! on a Cortex-M3 from the vector to the return (`rigs/measure`). `idle`
+//! check stand between a wrap and its step: 15 to 17 instructions a step
+//! on a Cortex-M3 from the vector to the return with RTIC's source-masking
+//! backend (`rigs/measure`). `idle`
 //! asks for a move by storing its steps and pending SysTick; the task,
 //! finding the player at rest, starts it, plays it step by step and says
 //! when it has ended. The only `unsafe` is the registers' writes.

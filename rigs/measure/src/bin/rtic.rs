@@ -1,9 +1,10 @@
 //! The step interrupt as an RTIC 2 task, measured from SysTick's vector to
 //! its return: the guide's RTIC example (`rigs/firmware/examples/
 //! rtic_step.rs`), its task owning the `Buffered` player and SysTick as
-//! local resources. Built for the Cortex-M3 and M4F (RTIC's `thumbv7`
-//! backend); `measure.sh` counts it as it counts the hand-rolled handler,
-//! within the same 20 instructions a step.
+//! local resources. Built for the Cortex-M3 and M4F with each of RTIC's
+//! backends there (features `rtic-masking`, the guide's, and
+//! `rtic-basepri`); `measure.sh` counts it as it counts the hand-rolled
+//! handler.
 //!
 //! `idle` pends SysTick once per step, so that the trace sees one task per
 //! step whatever the emulated clock does: first to start the move (the
@@ -24,6 +25,13 @@ mod profiles {
 }
 
 use profiles::sigmoid_exact;
+
+/// RTIC's backend, as the features chose it.
+const BACKEND: &str = if cfg!(feature = "rtic-masking") {
+    "source-masking"
+} else {
+    "BASEPRI"
+};
 
 /// Steps of the measured move: up the ramp, cruise, down the ramp.
 const UP: u32 = sigmoid_exact::LEN as u32;
@@ -81,8 +89,8 @@ pub struct Stepper {
 #[rtic::app(device = lm3s6965, peripherals = false)]
 mod app {
     use super::{
-        CRUISE, MOVING, NEXT, STEP_PIN, STEP_PIN_TOGGLE, Stepper, UP, check, measure_begin,
-        measure_end, sigmoid_exact,
+        BACKEND, CRUISE, MOVING, NEXT, STEP_PIN, STEP_PIN_TOGGLE, Stepper, UP, check,
+        measure_begin, measure_end, sigmoid_exact,
     };
     use core::sync::atomic::Ordering;
     use cortex_m::peripheral::SCB;
@@ -125,7 +133,8 @@ mod app {
             ("decelerating", UP),
         ] {
             hprintln!(
-                "measure: handler, RTIC task, Buffered per-step table (SysTick vector to return) {}: {} steps",
+                "measure: handler, RTIC task ({} backend), Buffered per-step table (SysTick vector to return) {}: {} steps",
+                BACKEND,
                 phase,
                 n
             );
