@@ -521,7 +521,12 @@ fn check_compressed(spec: &Spec, compress: f64, reference: &[f64], tally: &mut T
 }
 
 fn run(name: &str, seed: u64, generate: fn(&mut Lcg) -> Spec) {
-    let n = cases();
+    run_share(name, seed, generate, cases());
+}
+
+/// `n` of a curve's random profiles from `seed` (a share of them, where a
+/// curve's profiles are split between tests that run side by side).
+fn run_share(name: &str, seed: u64, generate: fn(&mut Lcg) -> Spec, n: usize) {
     let mut rng = Lcg(seed);
     let mut tally = Tally::default();
     for _ in 0..n {
@@ -585,9 +590,22 @@ fn jerk_limited_tables_agree_with_the_oracle() {
     run("jerk_limited", 0x1e_4c, random_jerk_limited);
 }
 
+/// The slowest curve to check: its profiles in two halves, each from a
+/// seed of its own, so that the two run side by side.
 #[test]
 fn torque_limited_tables_agree_with_the_oracle() {
-    run("torque_limited", 0x70_2c, random_torque_limited);
+    run_share(
+        "torque_limited",
+        0x70_2c,
+        random_torque_limited,
+        cases() / 2,
+    );
+}
+
+#[test]
+fn torque_limited_tables_agree_with_the_oracle_second_half() {
+    let n = cases();
+    run_share("torque_limited", 0x70_2d, random_torque_limited, n - n / 2);
 }
 
 /// Profiles at the edges of the domain that once gave wrong tables (an
