@@ -163,6 +163,13 @@ pub(crate) fn constants(profile: &Profile) -> Vec<Constant> {
     c
 }
 
+/// A profile's bands as the periods that play in them, stored as its table
+/// stores periods, when it names bands: what both emitters write.
+pub(crate) fn avoid_periods(profile: &Profile) -> Option<Vec<(u32, u32)>> {
+    let spec = profile.table.spec();
+    Some(profile.avoid?.periods(&spec.timer, spec.reload_offset))
+}
+
 /// The step driver's times in ticks of the table's timer, rounded up.
 fn driver_constants(d: &Driver, timer: &profile_core::Timer) -> [Constant; 3] {
     let ticks = |s: f64| Number::U32(d.ticks(s, timer));

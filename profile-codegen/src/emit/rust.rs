@@ -10,7 +10,7 @@ use std::format;
 use std::string::String;
 use std::vec::Vec;
 
-use super::{Constant, Number, Profile, constants, doc_lines};
+use super::{Constant, Number, Profile, avoid_periods, constants, doc_lines};
 use crate::numbers::Fixed;
 use crate::table::computed::Generated;
 use core::mem::size_of;
@@ -202,8 +202,7 @@ pub fn module(profile: &Profile) -> TokenStream {
 /// A profile's bands as the periods that play in them (`AVOID`), when it
 /// names bands.
 fn avoid(profile: &Profile) -> Option<TokenStream> {
-    let spec = profile.table.spec();
-    let pairs = profile.avoid?.periods(&spec.timer, spec.reload_offset);
+    let pairs = avoid_periods(profile)?;
     let len = Literal::usize_unsuffixed(pairs.len());
     let pairs = pairs.iter().map(|&(shortest, longest)| {
         let (shortest, longest) = (

@@ -459,24 +459,34 @@ fn check_full_move(image: &Image, played: &[u32]) -> bool {
     true
 }
 
+/// The cycles each move starts at (the writes of `TCCR1B` that select a
+/// clock) and of every edge of the step pin.
+fn starts_and_edges(
+    trace: &std::collections::HashMap<String, Vec<vcd::Change>>,
+) -> Result<(Vec<u64>, Vec<u64>), String> {
+    let changes = |name: &str| {
+        trace
+            .get(name)
+            .ok_or_else(|| format!("the VCD has no {name}"))
+    };
+    let starts = changes("TCCR1B")?
+        .iter()
+        .filter(|c| c.value & 0x07 != 0)
+        .map(|c| c.cycle)
+        .collect();
+    let edges = changes("OC1A")?.iter().map(|c| c.cycle).collect();
+    Ok((starts, edges))
+}
+
 /// Every edge of every move at its start plus the cumulative periods.
 fn check_edges(
     image: &Image,
     trace: &std::collections::HashMap<String, Vec<vcd::Change>>,
     played: &[Vec<u32>],
 ) -> Result<bool, String> {
-    let starts: Vec<u64> = trace
-        .get("TCCR1B")
-        .ok_or("the VCD has no TCCR1B")?
-        .iter()
-        .filter(|c| c.value & 0x07 != 0)
-        .map(|c| c.cycle)
-        .collect();
-    let edges: Vec<u64> = trace
-        .get("OC1A")
-        .ok_or("the VCD has no OC1A")?
-        .iter()
-        .map(|c| c.cycle)
+    let (starts, edges) = starts_and_edges(trace)?;
+    let edges: Vec<u64> = edges
+        .into_iter()
         .filter(|&c| starts.first().is_some_and(|&s| c > s))
         .collect();
     if starts.len() != played.len() {
@@ -540,18 +550,8 @@ fn check_directions(
     image: &Image,
     trace: &std::collections::HashMap<String, Vec<vcd::Change>>,
 ) -> Result<bool, String> {
-    let changes = |name: &str| {
-        trace
-            .get(name)
-            .ok_or_else(|| format!("the VCD has no {name}"))
-    };
-    let starts: Vec<u64> = changes("TCCR1B")?
-        .iter()
-        .filter(|c| c.value & 0x07 != 0)
-        .map(|c| c.cycle)
-        .collect();
-    let edges: Vec<u64> = changes("OC1A")?.iter().map(|c| c.cycle).collect();
-    let dir = changes("DIR")?;
+    let (starts, edges) = starts_and_edges(trace)?;
+    let dir = trace.get("DIR").ok_or("the VCD has no DIR")?;
     // The pin's level at `cycle`: its last change at or before it.
     let level_at = |cycle: u64| {
         dir.iter()

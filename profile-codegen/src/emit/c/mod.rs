@@ -12,7 +12,7 @@ use std::format;
 use std::string::{String, ToString};
 use std::vec::Vec;
 
-use super::{Constant, Number, Profile, constants};
+use super::{Constant, Number, Profile, avoid_periods, constants};
 use crate::schema::describe;
 use crate::table::computed::Generated;
 use profile_core::Word;
@@ -223,7 +223,7 @@ pub fn split(
     for p in profiles {
         let _ = writeln!(c, "/* Profile {}: see {header_name}. */", p.name);
         table(&mut c, p, "const", style, true);
-        avoid(&mut c, p, "const", true);
+        avoid(&mut c, p, "const", true, false);
         c.push('\n');
     }
     Split { header, source: c }
@@ -270,7 +270,7 @@ fn header_of(
         profile_comment(&mut out, p);
         figures(&mut out, p);
         table(&mut out, p, qualifiers, style, body);
-        avoid(&mut out, p, qualifiers, body);
+        avoid(&mut out, p, qualifiers, body, true);
         out.push('\n');
     }
     let _ = writeln!(out, "#endif /* {guard} */");
@@ -322,20 +322,17 @@ fn figures(out: &mut String, p: &Profile) {
     }
 }
 
-/// A profile's bands (`avoid`) as the periods that play in them:
-/// `NAME_AVOID_COUNT` and `NAME_AVOID`, the pairs `{shortest, longest}` in a
-/// flat array in ordinary memory (never `PROGMEM`: the players' `_avoid`
-/// reads it directly), declared with `qualifiers`, defined when `body` is
-/// true. The count's `#define` goes with the declaration.
-fn avoid(out: &mut String, p: &Profile, qualifiers: &str, body: bool) {
-    let Some(bands) = &p.avoid else {
+/// A profile's bands (`avoid`) as the periods that play in them,
+/// `NAME_AVOID`: the pairs `{shortest, longest}` in a flat array in
+/// ordinary memory (never `PROGMEM`: the players' `_avoid` reads it
+/// directly), declared with `qualifiers`, defined when `body` is true;
+/// in a header (`header`), `NAME_AVOID_COUNT` first.
+fn avoid(out: &mut String, p: &Profile, qualifiers: &str, body: bool, header: bool) {
+    let Some(pairs) = avoid_periods(p) else {
         return;
     };
-    let spec = p.table.spec();
-    let pairs = bands.periods(&spec.timer, spec.reload_offset);
     let upper = p.name.to_uppercase();
-    let declarator = format!("{qualifiers} uint32_t {upper}_AVOID[{}]", 2 * pairs.len());
-    if qualifiers != "const" {
+    if header {
         let _ = writeln!(
             out,
             "/* The bands of `avoid` as the periods that play in them, {{shortest, longest}}\n \
@@ -345,6 +342,7 @@ fn avoid(out: &mut String, p: &Profile, qualifiers: &str, body: bool) {
             pairs.len()
         );
     }
+    let declarator = format!("{qualifiers} uint32_t {upper}_AVOID[{}]", 2 * pairs.len());
     if !body {
         let _ = writeln!(out, "{declarator};");
         return;
