@@ -21,6 +21,9 @@ pub mod golden_tests {}
 #[doc = include_str!("guide/motor.md")]
 pub mod motor {}
 
+#[doc = include_str!("guide/stops.md")]
+pub mod stops {}
+
 #[doc = include_str!("guide/rtic.md")]
 pub mod rtic {}
 

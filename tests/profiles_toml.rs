@@ -292,6 +292,7 @@ fn every_profile_three_ways() {
         segments!(p, exponential_segments),
         steps!(p, linear_integer),
         steps!(p, linear_exact),
+        steps!(p, linear_estop),
         steps!(p, microstep),
         runs!(p, microstep_runs),
         steps!(p, three_stage),

@@ -101,6 +101,15 @@ const REQUIRED: &[&str] = &[
     "avoid_top_in_band",
     "avoid_band_reversed",
     "avoid_band_unit",
+    // The emergency ramp: its name, its timer, its reach, its layout, its
+    // motor.
+    "emergency_unknown",
+    "emergency_not_name",
+    "emergency_itself",
+    "emergency_timer",
+    "emergency_slower",
+    "emergency_compressed",
+    "emergency_motor",
 ];
 
 /// The file named in messages, as `include_profiles!("profiles.toml")` names it.

@@ -27,6 +27,7 @@ pub fn text(path: &str, profiles: &Profiles) -> Result<String, Error> {
     print_drivers(&mut out, profiles.profiles());
     print_cpu(&mut out, profiles.profiles());
     print_bands(&mut out, profiles.profiles());
+    print_emergency(&mut out, profiles.profiles());
     Ok(out)
 }
 
@@ -107,6 +108,48 @@ fn print_cpu(out: &mut String, profiles: &[Profile]) {
             table_min,
             100.0 * cpu.load(&spec.timer, layout, table_min),
             (cpu.max_rate(layout) / per_step).floor(),
+        );
+    }
+}
+
+/// For each profile that names an emergency ramp: a stop from the top
+/// speed down the profile's own ramp against an abort down the emergency
+/// ramp, in steps and in time.
+fn print_emergency(out: &mut String, profiles: &[Profile]) {
+    let bound = naming(profiles, |p| p.emergency.as_ref());
+    if bound.is_empty() {
+        return;
+    }
+    let _ = writeln!(
+        out,
+        "\nEmergency ramps (profiles that name one; from the top speed, a stop down the profile's \
+         own ramp and an abort, `STOP_STEPS`' last):"
+    );
+    let _ = writeln!(
+        out,
+        "{:<21} {:<21} {:>11} {:>11} {:>12} {:>12}",
+        "profile", "emergency", "stop steps", "abort steps", "stop", "abort"
+    );
+    for (p, e) in bound {
+        let Some(stop) = profiles.iter().find(|q| q.name == e.profile) else {
+            continue;
+        };
+        let scale = p.table.spec().timer.frequency_scale();
+        let millis =
+            |periods: &[u32]| 1e3 * periods.iter().map(|&t| f64::from(t)).sum::<f64>() / scale;
+        let own = p.table.step_periods();
+        let steps = e.stop_steps.last().copied().unwrap_or(0);
+        let emergency = stop.table.step_periods();
+        let abort = &emergency[..(steps as usize).min(emergency.len())];
+        let _ = writeln!(
+            out,
+            "{:<21} {:<21} {:>11} {:>11} {:>9.3} ms {:>9.3} ms",
+            p.name,
+            e.profile,
+            own.len(),
+            steps,
+            millis(&own),
+            millis(abort),
         );
     }
 }

@@ -56,7 +56,7 @@ fn check_passes_a_good_file_and_fails_a_bad_one_with_the_caret() {
     let shipped = shipped.to_str().unwrap();
     let good = run(&dir, &["check", shipped]);
     assert!(good.status.success(), "{}", text(&good.stderr));
-    assert!(text(&good.stdout).ends_with("profiles.toml: 14 profiles, no mistakes\n"));
+    assert!(text(&good.stdout).ends_with("profiles.toml: 15 profiles, no mistakes\n"));
 
     let bad = run(&dir, &["check", "bad.toml"]);
     assert_eq!(bad.status.code(), Some(1));
@@ -66,7 +66,7 @@ fn check_passes_a_good_file_and_fails_a_bad_one_with_the_caret() {
     // Every file is checked; one bad file fails the run.
     let both = run(&dir, &["check", shipped, "bad.toml"]);
     assert_eq!(both.status.code(), Some(1));
-    assert!(text(&both.stdout).contains("14 profiles, no mistakes"));
+    assert!(text(&both.stdout).contains("15 profiles, no mistakes"));
     assert_eq!(text(&both.stderr), BAD_MESSAGE);
 
     let missing = run(&dir, &["check", "nowhere.toml"]);
@@ -278,9 +278,9 @@ fn plot_writes_an_svg_and_a_csv_per_profile() {
     let file = shipped();
     let out = run(&dir, &["plot", file.to_str().unwrap(), "-o", "figures"]);
     assert!(out.status.success(), "{}", text(&out.stderr));
-    // 14 profiles: SVG and CSV each, three torque plots, two compact
+    // 15 profiles: SVG and CSV each, three torque plots, two compact
     // layouts over their curves, the overview.
-    assert_eq!(text(&out.stdout), "wrote 34 files to figures\n");
+    assert_eq!(text(&out.stdout), "wrote 36 files to figures\n");
     for p in profiles.profiles() {
         let svg = fs::read_to_string(dir.join(format!("figures/{}.svg", p.name))).unwrap();
         assert!(svg.starts_with("<svg"), "{}", p.name);
@@ -320,7 +320,7 @@ fn plot_writes_an_svg_and_a_csv_per_profile() {
     }
     assert!(dir.join("figures/overview.svg").exists());
     // Nothing but the files: the folder they were written in aside is gone.
-    assert_eq!(listing(&dir.join("figures")).len(), 34);
+    assert_eq!(listing(&dir.join("figures")).len(), 36);
 }
 
 #[test]

@@ -50,6 +50,23 @@ pub struct Profile {
     /// The speed bands it stays out of, when it names them: the report
     /// prints the time the ramp spends in each.
     pub avoid: Option<crate::bands::Bands>,
+    /// Its emergency ramp, when it names one (`emergency` in a profiles
+    /// file): the module's `STOP_STEPS` and the C header's
+    /// `NAME_STOP_STEPS`.
+    pub emergency: Option<Emergency>,
+}
+
+/// A profile's emergency ramp: another profile of its file, which
+/// `Player::abort` plays down from the current speed.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Emergency {
+    /// The emergency ramp's profile.
+    pub profile: String,
+    /// For each step of the profile's ramp, the steps an abort plays when
+    /// that step is the last played: the emergency ramp from its last
+    /// step not shorter than that step, down to its first (0 when the
+    /// motor already runs slower than every step of it).
+    pub stop_steps: Vec<u32>,
 }
 
 impl Profile {
@@ -63,6 +80,7 @@ impl Profile {
             driver: compiled.driver,
             cpu: compiled.cpu,
             avoid: compiled.avoid,
+            emergency: None,
         }
     }
 }

@@ -186,6 +186,7 @@ pub fn module(profile: &Profile) -> TokenStream {
         }
     });
     let avoid = avoid(profile);
+    let stop_steps = stop_steps(profile);
     // Unused figures are no reason for warnings in the user's crate.
     quote! {
         #(#[doc = #docs])*
@@ -193,6 +194,7 @@ pub fn module(profile: &Profile) -> TokenStream {
         pub mod #name {
             #table
             #(#constants)*
+            #stop_steps
             #avoid
             #rated
         }
@@ -215,6 +217,42 @@ fn avoid(profile: &Profile) -> Option<TokenStream> {
         #[doc = " The bands of `avoid` as the periods that play in them, `(shortest, longest)` in ticks"]
         #[doc = " plus `RELOAD_OFFSET`, inclusive: `Player::new(..).avoiding(&AVOID)` keeps a cruise out."]
         pub static AVOID: [(u32, u32); #len] = [#(#pairs),*];
+    })
+}
+
+/// The steps an abort plays after each step of the table (`STOP_STEPS`),
+/// when the profile names an emergency ramp.
+fn stop_steps(profile: &Profile) -> Option<TokenStream> {
+    let emergency = profile.emergency.as_ref()?;
+    let steps = &emergency.stop_steps;
+    let len = Literal::usize_unsuffixed(steps.len());
+    let wide = steps.iter().any(|&s| s > u32::from(u16::MAX));
+    let (ty, items) = match wide {
+        false => (
+            quote!(u16),
+            steps
+                .iter()
+                .map(|&s| Literal::u16_unsuffixed(s as u16))
+                .collect::<Vec<_>>(),
+        ),
+        true => (
+            quote!(u32),
+            steps.iter().map(|&s| Literal::u32_unsuffixed(s)).collect(),
+        ),
+    };
+    let first = std::format!(
+        " Steps an abort along `{}` plays after each step of the table: `Player::abort` on a",
+        emergency.profile
+    );
+    let second = std::format!(
+        " player made with `.with_emergency(..)` of `{}`'s table enters it at its last entry not",
+        emergency.profile
+    );
+    Some(quote! {
+        #[doc = #first]
+        #[doc = #second]
+        #[doc = " shorter than the step's period and plays down to rest (0: the motor stops at once)."]
+        pub static STOP_STEPS: [#ty; #len] = [#(#items),*];
     })
 }
 

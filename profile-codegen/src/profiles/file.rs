@@ -17,6 +17,10 @@ use profile_core::Key;
 
 type Table = BTreeMap<Spanned<String>, Spanned<toml::Value>>;
 
+/// A profile's key that names another profile of the file, its emergency
+/// ramp: the file's, not `period_table!`'s.
+pub(crate) const EMERGENCY: &str = "emergency";
+
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct File {
@@ -299,6 +303,9 @@ pub(crate) struct ProfileArgs {
     pub(crate) whole: Range<usize>,
     /// Its arguments.
     pub(crate) args: Vec<Arg<Range<usize>>>,
+    /// Its `emergency`, the name of another profile, read by the file
+    /// once every profile is computed.
+    pub(crate) emergency: Option<Arg<Range<usize>>>,
 }
 
 /// A file read into profiles' arguments, and what is wrong with it so far.
@@ -346,11 +353,16 @@ pub(crate) fn read(source: &str) -> Result<FileArgs, Diagnostic<Range<usize>>> {
             continue;
         }
         match profile(source, table.get_ref(), &defaults, &motors, &declared) {
-            Ok(args) => file.profiles.push(ProfileArgs {
-                name: name.get_ref().clone(),
-                whole: name.span(),
-                args,
-            }),
+            Ok(mut args) => {
+                let emergency = args.iter().position(|a| a.key == EMERGENCY);
+                let emergency = emergency.map(|i| args.remove(i));
+                file.profiles.push(ProfileArgs {
+                    name: name.get_ref().clone(),
+                    whole: name.span(),
+                    args,
+                    emergency,
+                })
+            }
             Err(d) => file.diagnostics.push(d),
         }
     }

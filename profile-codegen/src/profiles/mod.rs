@@ -19,6 +19,14 @@
 //! a linear ramp), `len` where the profile sets its length by `accel` or
 //! `tau`, `compress` where it gives `segments`, and the reverse.
 //!
+//! One key is the file's alone: `emergency = "NAME"` names another profile
+//! of the file as the profile's emergency ramp (`Player::with_emergency`,
+//! `Player::abort`). The file checks that it stops the profile (the same
+//! timer, word and `reload_offset`; compressed when the profile is; as fast
+//! at its top; within the profile's motor when it names none of its own)
+//! and gives the profile's module `STOP_STEPS`, the steps an abort plays
+//! after each step of its ramp (`NAME_STOP_STEPS` in C).
+//!
 //! In a build script, one call reads the file, writes `OUT_DIR/profiles.rs`,
 //! asks Cargo to rerun when the file changes and reports a mistake as
 //! Cargo's own `error:` lines:
@@ -44,11 +52,12 @@ use std::vec::Vec;
 use proc_macro2::TokenStream;
 
 use crate::emit;
-pub use crate::emit::Profile;
 pub use crate::emit::c::{CStyle, CStyleError, Split};
+pub use crate::emit::{Emergency, Profile};
 use crate::pipeline::{self, Budget, Options};
 use crate::schema::Diagnostic;
 
+mod emergency;
 mod file;
 mod render;
 
@@ -113,7 +122,7 @@ impl Profiles {
             used: 0,
             limit: MAX_FILE_ENTRIES as u64,
         };
-        let mut profiles = Vec::new();
+        let (mut profiles, mut emergencies, mut failed) = (Vec::new(), Vec::new(), Vec::new());
         for p in read.profiles {
             let options = Options {
                 assumed: &read.meant,
@@ -121,10 +130,17 @@ impl Profiles {
                 profile: Some(&p.name),
             };
             match pipeline::compile(&p.args, &p.whole, options) {
-                Ok(compiled) => profiles.push(Profile::new(p.name, compiled)),
-                Err(mut d) => diagnostics.append(&mut d),
+                Ok(compiled) => {
+                    profiles.push(Profile::new(p.name, compiled));
+                    emergencies.push(p.emergency);
+                }
+                Err(mut d) => {
+                    diagnostics.append(&mut d);
+                    failed.push(p.name);
+                }
             }
         }
+        diagnostics.extend(emergency::resolve(&mut profiles, &emergencies, &failed));
         if !diagnostics.is_empty() {
             // In source order, and once: a mistake in `[defaults]` reaches
             // every profile that uses it.

@@ -51,6 +51,30 @@
 //! assert_eq!(periods, [4000, 2500, 2000, 1800, 1800, 1800, 1800, 2000, 2500, 4000]);
 //! ```
 
+/// What the planner knows of a player (`Sides`), borrowed field by
+/// field, so that the player's plan stays free to be written (the ramps'
+/// tops by reference: they are large to copy).
+macro_rules! sides {
+    ($player:expr) => {
+        $crate::player::planning::plan::Sides {
+            accel: $player.accel,
+            decel: $player.decel,
+            accel_last: $player.accel_last,
+            decel_last: $player.decel_last,
+            decel_fastest: $player.decel_fastest,
+            cap: $player.cap,
+            cruise: $player.cruise,
+            cruise_last: $player.cruise_last,
+            slack: $player.slack,
+            decel_slack: $player.decel_slack,
+            known: &$player.known,
+            recent: core::cell::Cell::new([None; 2]),
+            crossed: core::cell::Cell::new(None),
+            read_a: core::cell::Cell::new(None),
+        }
+    };
+}
+
 mod planning;
 mod playing;
 mod ramps;
@@ -59,8 +83,9 @@ use core::marker::PhantomData;
 
 use crate::base::timer::TableWord;
 pub use planning::motion::band_periods;
-use planning::plan::{Known, Plan, Run, Sides, Source};
+use planning::plan::{Known, Plan, Run, Source};
 use planning::reader::{Reader, RunRead};
+use planning::stops::DecelSide;
 pub use playing::axes::Axes;
 pub use playing::axis::{Axis, Direction, Moving};
 pub use playing::buffered::{Adjust, AxesStart, Buffered, Steps};
@@ -140,6 +165,12 @@ pub struct Player<'a, W, L = AnyLayout> {
     rested: bool,
     /// Period bands a cruise keeps out of ([`Player::avoiding`]).
     avoid: &'a [(u32, u32)],
+    /// The emergency ramp ([`Player::with_emergency`]) and what planning
+    /// knows of it; while an abort plays, the deceleration ramp's, the
+    /// two swapped.
+    spare: Option<DecelSide<'a, W>>,
+    /// An abort has swapped the emergency ramp in.
+    aborting: bool,
     layout: PhantomData<L>,
 }
 
@@ -204,66 +235,35 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// assert_eq!(periods, [4000, 3000, 2000, 1500, 1500, 4000]);
     /// ```
     #[must_use]
-    pub fn with_decel<R: IntoRamp<'a, W, Layout = L>>(self, decel: R) -> Self {
+    pub fn with_decel<R: IntoRamp<'a, W, Layout = L>>(mut self, decel: R) -> Self {
+        self.restore_decel();
         Self {
             avoid: self.avoid,
+            spare: self.spare,
             ..Self::build(self.accel, decel.into_ramp())
         }
     }
 }
 
-/// What the planner knows of a player ([`Sides`]), borrowed field by
-/// field, so that the player's plan stays free to be written (the ramps'
-/// tops by reference: they are large to copy).
-macro_rules! sides {
-    ($player:expr) => {
-        Sides {
-            accel: $player.accel,
-            decel: $player.decel,
-            accel_last: $player.accel_last,
-            decel_last: $player.decel_last,
-            decel_fastest: $player.decel_fastest,
-            cap: $player.cap,
-            cruise: $player.cruise,
-            cruise_last: $player.cruise_last,
-            slack: $player.slack,
-            decel_slack: $player.decel_slack,
-            known: &$player.known,
-            recent: core::cell::Cell::new([None; 2]),
-            crossed: core::cell::Cell::new(None),
-            read_a: core::cell::Cell::new(None),
-        }
-    };
-}
-
 impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     fn build(accel: Ramp<'a, W>, decel: Ramp<'a, W>) -> Self {
         let accel_last = accel.len_steps().saturating_sub(1);
-        let decel_fastest = decel.fastest();
-        let one = planning::search::one_ramp(&accel, &decel);
-        let (accel_slack, decel_slack) = planning::search::slacks(&accel, &decel, one);
+        let (side, accel_slack) = DecelSide::of(&accel, decel);
         Player {
             accel,
             decel,
             accel_last,
-            decel_last: decel.len_steps().saturating_sub(1),
-            decel_fastest,
-            // One ramp both ways has no step faster than its fastest.
-            cap: match one {
-                true => u32::MAX,
-                false => accel.first_faster_than(decel_fastest),
-            },
+            decel_last: side.decel_last,
+            decel_fastest: side.decel_fastest,
+            cap: side.cap,
             cruise: accel_last,
             cruise_last: true,
-            slack: accel_slack.saturating_add(decel_slack),
+            slack: side.slack,
             accel_slack,
-            decel_slack,
+            decel_slack: side.decel_slack,
             known: Known {
-                tops: [
-                    Cursor::at(&accel, accel_last),
-                    Cursor::at(&decel, decel.len_steps().saturating_sub(1)),
-                ],
-                fall: planning::search::fall(&accel, &decel, decel_slack, one),
+                tops: [Cursor::at(&accel, accel_last), side.top],
+                fall: side.fall,
             },
             endless: false,
             extended: 0,
@@ -274,6 +274,8 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             plan: Plan::EMPTY,
             rested: true,
             avoid: &[],
+            spare: None,
+            aborting: false,
             layout: PhantomData,
         }
     }
@@ -333,6 +335,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
 
     /// Starts a move of `steps` steps from rest to the cruise position.
     pub(crate) fn begin(&mut self, steps: u32) {
+        self.restore_decel();
         self.endless = false;
         self.extended = 0;
         // A ramp of no steps has no top.
@@ -387,86 +390,6 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
                 self.follow(last);
             }
         }
-    }
-
-    /// Decelerates from the current speed to rest: the deceleration ramp is
-    /// entered at its last entry whose period is not shorter than the
-    /// current one (the fastest not faster), and the move ends when the
-    /// ramp's slowest entry has played (at once, when the motor already
-    /// runs slower than that entry). A stop never lengthens a move.
-    pub fn stop(&mut self) {
-        self.endless = false;
-        let remaining = self.remaining();
-        if remaining == 0 {
-            return;
-        }
-        let (acc, _, current) = self.now();
-        let mut at = None;
-        let needed = self.stop_steps_at(current, Some(&mut at));
-        if needed == 0 {
-            // Not moving yet, or already slower than the ramp's slowest
-            // entry: at rest now.
-            self.plan.clear();
-            self.follow(current);
-        } else if needed < remaining {
-            let sides = sides!(self);
-            // Where the search left a cursor at the entry: taken.
-            sides.crossed.set(at);
-            let stretch = sides.decelerate(needed - 1, acc);
-            self.plan.clear();
-            self.plan.push(stretch);
-            self.follow(current);
-        }
-    }
-
-    /// The steps a stop plays when the period of the last step played is
-    /// `current`: from the deceleration ramp's last entry not shorter than
-    /// it down to rest; 0 before the first step (`current` 0) or when
-    /// the motor already runs slower than the ramp's slowest entry.
-    fn stop_steps(&self, current: u32) -> u32 {
-        self.stop_steps_at(current, None)
-    }
-
-    /// [`Player::stop_steps`], the cursor at the deceleration ramp's entry
-    /// the stop plays first put in `at`, if given, where the search has
-    /// it at hand. The entry is the last whose period is not shorter than
-    /// `current`, exactly as a walk down from the ramp's top finds it: a
-    /// search past the steps the ramp's slack rules out, then on an
-    /// indexed ramp each run in closed form, else the steps one by one.
-    fn stop_steps_at(&self, current: u32, at: Option<&mut Option<Cursor>>) -> u32 {
-        if current == 0 {
-            return 0;
-        }
-        let (last, slack) = (self.decel_last, self.decel_slack);
-        if let Ramp::Indexed(index) = self.decel {
-            let mut read = RunRead::new(index);
-            if read.ticks(0).is_none_or(|t| t < current) {
-                return 0;
-            }
-            let entry = read.last_at_least(last, current, slack, 0).unwrap_or(0);
-            if let Some(at) = at {
-                *at = read.cursor(entry);
-            }
-            return entry + 1;
-        }
-        if self.decel_ticks(0).unwrap_or(0) < current {
-            return 0;
-        }
-        let entry = match self.decel.per_step() {
-            Some(d) => {
-                planning::search::last_at_least(|pos| ticks_at(d, pos), last, slack, current)
-            }
-            // (Step 0 is that long: checked above.)
-            None => planning::threshold::last_at_least_on(
-                &self.decel,
-                self.known.tops[1],
-                last,
-                slack,
-                current,
-            )
-            .unwrap_or(0),
-        };
-        entry + 1
     }
 
     /// The deceleration ramp's period at step `pos`, in ticks; `None`

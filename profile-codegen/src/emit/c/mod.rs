@@ -223,6 +223,7 @@ pub fn split(
     for p in profiles {
         let _ = writeln!(c, "/* Profile {}: see {header_name}. */", p.name);
         table(&mut c, p, "const", style, true);
+        stop_steps(&mut c, p, "const", style, true);
         avoid(&mut c, p, "const", true, false);
         c.push('\n');
     }
@@ -270,6 +271,7 @@ fn header_of(
         profile_comment(&mut out, p);
         figures(&mut out, p);
         table(&mut out, p, qualifiers, style, body);
+        stop_steps(&mut out, p, qualifiers, style, body);
         avoid(&mut out, p, qualifiers, body, true);
         out.push('\n');
     }
@@ -361,11 +363,6 @@ fn table(out: &mut String, p: &Profile, qualifiers: &str, style: &CStyle, body: 
         Word::U16 => "uint16_t",
         Word::U32 => "uint32_t",
     };
-    let storage = storage_word(style);
-    let attribute = style
-        .attribute
-        .as_deref()
-        .map_or(String::new(), |a| format!(" {}", a.trim()));
     let (array, rows): (String, Vec<String>) = match &p.table {
         Generated::Steps(t) => (
             format!("{upper}_PERIODS[{}]", t.periods.len()),
@@ -402,6 +399,54 @@ fn table(out: &mut String, p: &Profile, qualifiers: &str, style: &CStyle, body: 
                 .collect(),
         ),
     };
+    placed(out, (qualifiers, style, body), ctype, &array, rows);
+}
+
+/// A profile's `NAME_STOP_STEPS`, when it names an emergency ramp: the
+/// steps an abort plays after each step of the table, placed as the
+/// table is, declared with `qualifiers`, defined when `body` is true.
+fn stop_steps(out: &mut String, p: &Profile, qualifiers: &str, style: &CStyle, body: bool) {
+    let Some(emergency) = &p.emergency else {
+        return;
+    };
+    let upper = p.name.to_uppercase();
+    let steps = &emergency.stop_steps;
+    let _ = writeln!(
+        out,
+        "/* Steps an abort along {} plays after each step of the table (the\n \
+         * emergency ramp from its last entry not shorter, down to rest). */",
+        emergency.profile
+    );
+    let ctype = match steps.iter().max().copied().unwrap_or(0) <= u32::from(u16::MAX) {
+        true => "uint16_t",
+        false => "uint32_t",
+    };
+    let rows = steps
+        .chunks(16)
+        .map(|chunk| {
+            let line: Vec<String> = chunk.iter().map(u32::to_string).collect();
+            line.join(", ")
+        })
+        .collect();
+    let array = format!("{upper}_STOP_STEPS[{}]", steps.len());
+    placed(out, (qualifiers, style, body), ctype, &array, rows);
+}
+
+/// An array `array` of `ctype` placed by `style` (its storage word and
+/// attribute), declared with `qualifiers`, defined with `rows` when
+/// `body` is true.
+fn placed(
+    out: &mut String,
+    (qualifiers, style, body): (&str, &CStyle, bool),
+    ctype: &str,
+    array: &str,
+    rows: Vec<String>,
+) {
+    let storage = storage_word(style);
+    let attribute = style
+        .attribute
+        .as_deref()
+        .map_or(String::new(), |a| format!(" {}", a.trim()));
     let declarator = format!("{qualifiers} {storage}{ctype} {array}{attribute}");
     if !body {
         let _ = writeln!(out, "{declarator};");

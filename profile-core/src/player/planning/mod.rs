@@ -4,8 +4,9 @@
 //! where the deceleration takes over (`crossing.rs`, `direct.rs` on two
 //! per-step tables), a move that reaches its cruise before it
 //! (`cruising.rs`), how far ahead of one ramp another is faster
-//! (`threshold.rs`), a ramp read for the searches (`reader.rs`), and `run`,
-//! `set_cruise_period` and `retarget` (`motion.rs`).
+//! (`threshold.rs`), a ramp read for the searches (`reader.rs`), `run`,
+//! `set_cruise_period` and `retarget` (`motion.rs`), and stops, an abort's
+//! along an emergency ramp too (`stops.rs`).
 
 pub(in crate::player) mod crossing;
 pub(in crate::player) mod cruising;
@@ -14,4 +15,5 @@ pub(in crate::player) mod motion;
 pub(in crate::player) mod plan;
 pub(in crate::player) mod reader;
 pub(in crate::player) mod search;
+pub(in crate::player) mod stops;
 pub(in crate::player) mod threshold;

@@ -38,8 +38,8 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// [`Player::retarget`] does) and no longer ends.
     pub fn run(&mut self) {
         if self.remaining() > 0 {
-            self.retarget(LAP);
-            self.endless = true;
+            // (An abort refuses it.)
+            self.endless = self.retarget(LAP);
         } else {
             self.run_lap(LAP);
         }
@@ -210,23 +210,13 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         }
     }
 
-    /// Steps a [`Player::stop`] now would play: the deceleration ramp from
-    /// its last entry not shorter than the current period, or the
-    /// steps that remain when fewer. 0 at rest, before the first step, and
-    /// when the motor already runs slower than the ramp's slowest entry.
-    pub fn steps_to_stop(&self) -> u32 {
-        match self.remaining() {
-            0 => 0,
-            remaining => self.stop_steps(self.now().2).min(remaining),
-        }
-    }
-
     /// Ends the move `steps` steps from now, at rest, if it can stop in
     /// that many ([`Player::steps_to_stop`]); returns `false`, changing
     /// nothing, when it cannot. A retarget to the steps that remain is
     /// taken and changes nothing (but that a run, [`Player::run`], then
     /// ends there). At rest there is no move to end later: only
-    /// `retarget(0)` is taken; [`Player::start`] starts a move.
+    /// `retarget(0)` is taken; [`Player::start`] starts a move. Nor is
+    /// there while an abort plays ([`Player::abort`]).
     ///
     /// The move goes on from where it stands: accelerating, cruising or
     /// decelerating, it plays on along the acceleration ramp towards the
@@ -258,7 +248,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
             self.endless = false;
             return true;
         }
-        if remaining == 0 {
+        if remaining == 0 || self.aborting {
             return false;
         }
         // As `steps_to_stop`, where the move stands read once; a move

@@ -442,10 +442,20 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     /// lead ends short of its target, and each follower where the rule has
     /// taken it by then.
     pub fn stop(&mut self) {
+        self.shorten(Player::stop);
+    }
+
+    /// [`Axes::stop`] along the emergency ramp ([`Player::abort`]).
+    pub fn abort(&mut self) {
+        self.shorten(Player::abort);
+    }
+
+    /// Ends the move sooner by `stop` on the lead's player.
+    fn shorten(&mut self, stop: fn(&mut Player<'a, W, L>)) {
         self.then = None;
         let played = self.lead_played();
         let turn = self.at_turn();
-        self.player.stop();
+        stop(&mut self.player);
         self.lead_total = played + self.player.remaining();
         // A turn whose first edge nothing has followed stays one.
         self.turn = turn.map(|before| (before, self.player.remaining()));

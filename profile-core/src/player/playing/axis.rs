@@ -346,6 +346,14 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
         self.replan(Player::stop);
     }
 
+    /// Stops along the emergency ramp ([`Player::abort`],
+    /// [`Player::with_emergency`]); the move then ends short of its
+    /// target, and a target it was to go on to is dropped.
+    pub fn abort(&mut self) {
+        self.then = Then::Rest;
+        self.replan(Player::abort);
+    }
+
     /// Cruises slower or faster ([`Player::set_cruise`]); the target stays.
     pub fn set_cruise(&mut self, pos: u32) {
         self.replan(|p| p.set_cruise(pos));

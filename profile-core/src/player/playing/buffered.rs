@@ -62,6 +62,8 @@ pub trait Adjust: sealed::Sealed {
     type Word;
     /// Decelerates to rest ([`Player::stop`]).
     fn stop(&mut self);
+    /// Stops along the emergency ramp ([`Player::abort`]).
+    fn abort(&mut self);
     /// Cruises at step `pos` of the acceleration ramp
     /// ([`Player::set_cruise`]).
     fn set_cruise(&mut self, pos: u32);
@@ -80,6 +82,9 @@ macro_rules! adjust_by_inherent {
             type Word = W;
             fn stop(&mut self) {
                 <$ty>::stop(self);
+            }
+            fn abort(&mut self) {
+                <$ty>::abort(self);
             }
             fn set_cruise(&mut self, pos: u32) {
                 <$ty>::set_cruise(self, pos);
@@ -396,6 +401,13 @@ impl<S: Adjust> Buffered<S> {
     /// not yet in the timer's hands.
     pub fn stop(&mut self) {
         self.inner.stop();
+    }
+
+    /// Stops along the emergency ramp ([`Player::abort`],
+    /// [`Axis::abort`], [`Axes::abort`](crate::player::Axes::abort)), from
+    /// the first period not yet in the timer's hands.
+    pub fn abort(&mut self) {
+        self.inner.abort();
     }
 
     /// Cruises at step `pos` of the acceleration ramp
