@@ -19,6 +19,7 @@
 
 use core_test_support as common;
 
+use common::watch::{Watch, play};
 use common::{cases, falling};
 use profile_core::player::{Axis, Direction, Player, Ramp};
 use proptest::prelude::*;
@@ -43,101 +44,6 @@ fn ops() -> impl Strategy<Value = Vec<Op>> {
         6 => (0u32..150).prop_map(Op::Play),
     ];
     proptest::collection::vec(op, 1..14)
-}
-
-/// The positions of the table holding `period`.
-fn positions(table: &[u16], period: u16) -> impl Iterator<Item = usize> + '_ {
-    table
-        .iter()
-        .enumerate()
-        .filter(move |&(_, &p)| p == period)
-        .map(|(i, _)| i)
-}
-
-/// `y` follows `x` without a jump: the same, or entries next to each other.
-fn neighbours(table: &[u16], x: u16, y: u16) -> bool {
-    x == y || positions(table, x).any(|i| positions(table, y).any(|j| i.abs_diff(j) <= 1))
-}
-
-/// What the test knows of the motion so far.
-struct Watch<'t> {
-    table: &'t [u16],
-    position: i64,
-    /// The last step's period and direction; `None` at rest.
-    last: Option<(u16, Direction)>,
-    steps: u64,
-}
-
-impl Watch<'_> {
-    /// One step played, its period `period`, the pin's direction `dir`.
-    fn step(&mut self, period: u16, dir: Direction, axis_position: i64) -> Result<(), String> {
-        let slowest = self.table[0];
-        self.position += dir.sign();
-        self.steps += 1;
-        if axis_position != self.position {
-            return Err(format!(
-                "step {}: the axis says {axis_position}, the steps counted {}",
-                self.steps, self.position
-            ));
-        }
-        match self.last {
-            None if period != slowest => Err(format!(
-                "step {}: from rest at {period}, not the slowest entry {slowest}",
-                self.steps
-            )),
-            Some((before, turned)) if turned != dir && (before != slowest || period != slowest) => {
-                Err(format!(
-                    "step {}: reversed between {before} and {period}, not at rest ({slowest})",
-                    self.steps
-                ))
-            }
-            Some((before, _)) if !neighbours(self.table, before, period) => Err(format!(
-                "step {}: a jump from {before} to {period}",
-                self.steps
-            )),
-            _ => {
-                self.last = Some((period, dir));
-                Ok(())
-            }
-        }
-    }
-
-    /// The move ended: at rest, after the slowest entry.
-    fn rest(&mut self) -> Result<(), String> {
-        if let Some((period, _)) = self.last.take() {
-            if period != self.table[0] {
-                return Err(format!(
-                    "step {}: ended at {period}, not at rest",
-                    self.steps
-                ));
-            }
-        }
-        Ok(())
-    }
-}
-
-/// Plays up to `n` steps; stops early when the axis is done.
-fn play(axis: &mut Axis<'_, u16>, watch: &mut Watch<'_>, n: u32) -> Result<Vec<u16>, String> {
-    let mut periods = vec![];
-    for _ in 0..n {
-        let mut period = 0;
-        // What the direction pin is set to a period ahead of the step.
-        let pin = axis.next_direction();
-        if !axis.step(|p| period = p) {
-            watch.rest()?;
-            break;
-        }
-        if axis.direction() != pin {
-            return Err(format!(
-                "step {}: next_direction said {pin:?} a step ahead, the step went {:?}",
-                periods.len(),
-                axis.direction()
-            ));
-        }
-        watch.step(period, axis.direction(), axis.position())?;
-        periods.push(period);
-    }
-    Ok(periods)
 }
 
 /// The last entry not shorter than `period` (on a table ordered slow to

@@ -92,6 +92,7 @@ pub use playing::buffered::{Adjust, AxesStart, Buffered, Steps};
 pub use playing::rated::Rated;
 #[cfg(feature = "fugit")]
 pub use playing::rated::{OffsetMismatch, Timed};
+pub use playing::targets::{QUEUE, QueueFull};
 pub use ramps::layout::{AnyLayout, Compressed, IntoRamp, Layout};
 pub use ramps::ramp::Ramp;
 use ramps::ramp::{Cursor, ticks_at};

@@ -1,6 +1,7 @@
 //! Where the motor is: a player that knows its position and its direction.
 
 use crate::base::timer::TableWord;
+use crate::player::playing::targets::Targets;
 use crate::player::{AnyLayout, Layout, Player};
 
 /// The way a move turns the motor, for the driver's direction pin.
@@ -50,7 +51,7 @@ impl core::fmt::Display for Moving {
 
 /// What an [`Axis`] plays when the move playing ends.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Then {
+pub(crate) enum Then {
     /// Rest.
     Rest,
     /// A move to this position: the target was behind, or nearer than the
@@ -109,12 +110,14 @@ pub struct Axis<'a, W, L = AnyLayout> {
     player: Player<'a, W, L>,
     /// Where the move playing ends, in steps (before a run's laps); like
     /// the position, it wraps past the ends of `i64`.
-    end: i64,
+    pub(crate) end: i64,
     direction: Direction,
     /// The move after this one.
-    then: Then,
+    pub(crate) then: Then,
     /// The last reversal.
     turn: Option<Turn>,
+    /// Targets queued after `then` ([`Axis::queue`]).
+    pub(crate) targets: Targets,
 }
 
 /// A reversal: the direction before it, and where the player stood once it
@@ -137,6 +140,7 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
             direction: Direction::Forward,
             then: Then::Rest,
             turn: None,
+            targets: Targets::EMPTY,
         }
     }
 
@@ -229,6 +233,7 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
     /// the type's docs say; the target the move already ends at changes
     /// nothing.
     pub fn move_to(&mut self, target: i64) -> Direction {
+        self.targets = Targets::EMPTY;
         if self.player.is_done() {
             self.turn = None;
             self.then = Then::Rest;
@@ -260,6 +265,7 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
     /// out every period (`Buffered`), so that the pin takes that step in
     /// the move's direction. The target the move ends at changes nothing.
     pub(crate) fn move_after(&mut self, target: i64) {
+        self.targets = Targets::EMPTY;
         if self.destination() != Some(target) {
             self.then = Then::To(target);
         }
@@ -268,6 +274,7 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
     /// Runs `direction` once the move playing has ended
     /// ([`Axis::move_after`]).
     pub(crate) fn run_after(&mut self, direction: Direction) {
+        self.targets = Targets::EMPTY;
         self.then = Then::Run(direction);
     }
 
@@ -281,6 +288,7 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
     /// [`Axis::stop`]: at once from rest or moving that way, after a stop
     /// when moving the other way. Returns the direction to set now.
     pub fn run(&mut self, direction: Direction) -> Direction {
+        self.targets = Targets::EMPTY;
         if self.player.is_done() {
             self.turn = None;
             self.then = Then::Rest;
@@ -343,6 +351,7 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
     /// is dropped.
     pub fn stop(&mut self) {
         self.then = Then::Rest;
+        self.targets = Targets::EMPTY;
         self.replan(Player::stop);
     }
 
@@ -351,6 +360,7 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
     /// target, and a target it was to go on to is dropped.
     pub fn abort(&mut self) {
         self.then = Then::Rest;
+        self.targets = Targets::EMPTY;
         self.replan(Player::abort);
     }
 
@@ -421,7 +431,11 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
         let before = self.direction;
         match core::mem::replace(&mut self.then, Then::Rest) {
             Then::Rest => return false,
-            Then::To(target) => self.start_to(target),
+            Then::To(target) => {
+                // The next turning point, if queued, follows this move.
+                self.then = self.targets.pop().map_or(Then::Rest, Then::To);
+                self.start_to(target);
+            }
             Then::Run(direction) => {
                 self.direction = direction;
                 self.replan(Player::run);

@@ -5,6 +5,7 @@ use crate::base::timer::TableWord;
 use crate::player::Player;
 use crate::player::playing::axes::Axes;
 use crate::player::playing::axis::{Axis, Direction};
+use crate::player::playing::targets::QueueFull;
 use crate::player::ramps::layout::Layout;
 
 mod axes;
@@ -474,6 +475,23 @@ impl<'a, W: TableWord, L: Layout> Buffered<Axis<'a, W, L>> {
         let direction = self.inner.move_to(target);
         let (first, next) = self.load(timer);
         (direction, first, next)
+    }
+
+    /// Queues a move to `target` ([`Axis::queue`]): the direction to set
+    /// now, and, when it starts a move from rest, its first two periods
+    /// ([`Buffered::begin`]). In the move's last interval (its periods all
+    /// in the timer's hands), a target the same way no longer joins it at
+    /// speed: it follows that step at rest, as a new target does
+    /// ([`Buffered::move_to`]).
+    pub fn queue(&mut self, target: i64) -> Result<(Direction, Option<W>, Option<W>), QueueFull> {
+        if self.last_ahead() {
+            self.inner.enqueue(target, false)?;
+            return Ok((self.inner.direction(), None, None));
+        }
+        let timer = self.timer();
+        let direction = self.inner.queue(target)?;
+        let (first, next) = self.load(timer);
+        Ok((direction, first, next))
     }
 
     /// `true` when the move's last period is in the timer's hands, its

@@ -3,6 +3,8 @@
 //! core_test_support as common;` (not published):
 //!
 //! - [`reference`](mod@reference): the unplanned reference model of the player;
+//! - [`watch`]: an axis's motion checked step by step (positions, no jumps,
+//!   reversals at rest);
 //! - [`cases`]: the number of random cases per property (`PROPTEST_CASES`);
 //! - [`any_table`] and [`any_runs`]: random per-step tables and compressed
 //!   runs; [`falling`]: random tables ordered slow to fast, as generated;
@@ -12,6 +14,7 @@
 //!   a move.
 
 pub mod reference;
+pub mod watch;
 
 use core::ops::Range;
 use profile_core::runs::LinearRun as RunWords;
