@@ -21,8 +21,8 @@ pub mod golden_tests {}
 #[doc = include_str!("guide/motor.md")]
 pub mod motor {}
 
-#[doc = include_str!("guide/stops.md")]
-pub mod stops {}
+#[doc = include_str!("guide/moves.md")]
+pub mod moves {}
 
 #[doc = include_str!("guide/rtic.md")]
 pub mod rtic {}

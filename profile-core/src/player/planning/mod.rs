@@ -5,12 +5,14 @@
 //! per-step tables), a move that reaches its cruise before it
 //! (`cruising.rs`), how far ahead of one ramp another is faster
 //! (`threshold.rs`), a ramp read for the searches (`reader.rs`), `run`,
-//! `set_cruise_period` and `retarget` (`motion.rs`), and stops, an abort's
-//! along an emergency ramp too (`stops.rs`).
+//! `set_cruise_period` and `retarget` (`motion.rs`), stops, an abort's
+//! along an emergency ramp too (`stops.rs`), and moves that end and begin
+//! at speed, for lines that join (`join.rs`).
 
 pub(in crate::player) mod crossing;
 pub(in crate::player) mod cruising;
 pub(in crate::player) mod direct;
+pub(in crate::player) mod join;
 pub(in crate::player) mod motion;
 pub(in crate::player) mod plan;
 pub(in crate::player) mod reader;

@@ -292,7 +292,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
 
     /// The first position of the acceleration ramp whose period is not
     /// longer than `current`; its top when none is.
-    fn accel_entry(&self, current: u32) -> u32 {
+    pub(in crate::player) fn accel_entry(&self, current: u32) -> u32 {
         let (last, slack) = (self.accel_last, self.accel_slack);
         match (self.accel.per_step(), self.accel) {
             (Some(a), _) => search::first_at_most(|pos| ticks_at(a, pos), last, slack, current),

@@ -2,8 +2,9 @@
 
 use crate::base::timer::TableWord;
 use crate::player::playing::axis::{Direction, Moving};
+use crate::player::playing::edges::{Edges, bit, follower_steps};
+use crate::player::playing::targets::Targets;
 use crate::player::{AnyLayout, Layout, Player};
-use core::sync::atomic::{Ordering, compiler_fence};
 
 /// `N` axes that move together on one [`Player`]'s ramp: a straight line in
 /// `N` dimensions, every axis starting and finishing with the others.
@@ -75,198 +76,33 @@ use core::sync::atomic::{Ordering, compiler_fence};
 #[derive(Clone, Debug)]
 #[repr(C)]
 pub struct Axes<'a, W, const N: usize, L = AnyLayout> {
-    edges: Edges<N>,
+    pub(in crate::player) edges: Edges<N>,
     player: Player<'a, W, L>,
     /// Each axis's position when the move began.
-    start: [i64; N],
+    pub(in crate::player) start: [i64; N],
     /// Each axis's steps in the move.
     steps: [u32; N],
     directions: [Direction; N],
     /// The lead's steps in the move as begun (the rule's `L`).
     lead_steps: u32,
     /// The lead's steps in the move as it now ends (fewer after a stop).
-    lead_total: u32,
+    pub(in crate::player) lead_total: u32,
     /// The axis leading the move.
     lead: usize,
     /// The move after this one: a target given while this one played.
-    then: Option<[i64; N]>,
+    pub(in crate::player) then: Option<[i64; N]>,
     /// The last turn to a queued move: the directions before it, and the
     /// steps the player had left once it handed out the move's first
     /// period ([`Buffered`](crate::player::Buffered) reads the pins' directions
     /// from it).
-    turn: Option<([Direction; N], u32)>,
-}
-
-/// Built for Armv6-M (the build script's cfg, on `thumbv6m` targets): eight
-/// low registers and no `ldrd`/`strd`. There each follower's accumulator
-/// is stored as soon as it is moved on, and a carry reads `L` and the bit
-/// through one register, so that the step keeps every value in a register
-/// and pushes an even number of them (no stack slot, no padding);
-/// elsewhere a pair of accumulators is stored with one `strd`.
-const LOW_REGISTERS: bool = cfg!(thumb_low_registers);
-
-/// The followers' accumulators, laid out for the step path: the mask of an
-/// edge where no follower's count changes first, then the followers
-/// (`1..N`, in the order of their axes) in pairs, each follower's increment
-/// beside its accumulator and the pair's two accumulators adjacent (one
-/// load of a follower's two words, one store of a pair's accumulators),
-/// then what a follower reads only on the edges where its count changes.
-///
-/// A follower of `d` steps of the lead's `L` has taken `n(s) = floor((d·s +
-/// h) / L)` steps after the lead's `s`-th, with `h = floor((d - 1) / 2)`:
-/// exactly `#{k : s_k <= s}` for the rule's `s_k = floor((2kL + d) / 2d)`.
-/// With `a = (d·s + h) mod L`, it steps on the lead's next step exactly
-/// when `a + d >= L`. A follower of at most `L / 2` steps keeps `a - L`
-/// (modulo 2^32) and adds `d`: the addition carries out of 32 bits exactly
-/// when it steps, and then `L` comes off. One of more steps keeps `L - 1 -
-/// a`, less `L`, and adds `L - d`, its steps left out: the addition
-/// carries exactly when it does not step (`L - 1 - a` grows by `L - d`
-/// and reaches `L` exactly when `a + d < L`), and its bit is in the mask
-/// unless it carries. Either way the edges where the accumulator carries
-/// are at most half the lead's, and each of those flips the follower's
-/// bit of the mask.
-#[derive(Clone, Copy, Debug)]
-#[repr(C)]
-struct Edges<const N: usize> {
-    /// The mask of an edge where no follower's accumulator carries: the
-    /// lead's bit and the bits of the followers of more than `L / 2` steps.
-    base: u32,
-    /// `slot[j - 1]`: follower `j`'s increment and accumulator, in that order
-    /// for an odd `j` and the other way round for an even one, so that
-    /// the accumulators of followers `j` and `j + 1` (`j` odd) are
-    /// adjacent (`slot[N - 1]` unused).
-    slot: [[u32; 2]; N],
-    /// `steps[j - 1]`: the lead's steps (`L`) and follower `j`'s bit of
-    /// the mask, read on the edges where its accumulator carries.
-    steps: [[u32; 2]; N],
-}
-
-impl<const N: usize> Edges<N> {
-    const REST: Self = Edges {
-        base: 0,
-        slot: [[0; 2]; N],
-        steps: [[0; 2]; N],
-    };
-
-    /// Where follower `j`'s accumulator is in its slot.
-    const fn acc_at(j: usize) -> usize {
-        j % 2
-    }
-
-    /// Follower `j`'s `(d·s + h) mod L` ([`Edges`]), the lead's steps
-    /// being `l` and the follower's `d`.
-    #[cfg(test)]
-    fn held(&self, j: usize, d: u32, l: u32) -> u32 {
-        let acc = self.slot[j - 1][Self::acc_at(j)];
-        if Self::dense(d, l) {
-            !acc
-        } else {
-            acc.wrapping_add(l)
-        }
-    }
-
-    /// A follower of `d` steps of the lead's `l` counts the steps it leaves
-    /// out.
-    const fn dense(d: u32, l: u32) -> bool {
-        d > l / 2
-    }
-
-    /// Sets follower `j` (`1..N`) of `d` steps, the lead's being `l`, to
-    /// `held = (d·s + h) mod L` after the lead's `s`-th step, its bit of
-    /// the mask `bit`.
-    fn set(&mut self, j: usize, d: u32, held: u32, bit: u32, l: u32) {
-        // `L - 1 - a`, less `L`, is `!a`.
-        let (inc, acc) = if Self::dense(d, l) {
-            self.base |= bit;
-            (l - d, !held)
-        } else {
-            self.base &= !bit;
-            (d, held.wrapping_sub(l))
-        };
-        self.slot[j - 1][Self::acc_at(j)] = acc;
-        self.slot[j - 1][1 - Self::acc_at(j)] = inc;
-        self.steps[j - 1] = [l, bit];
-    }
-
-    /// The mask of the axes that step on the lead's next step, the
-    /// followers' accumulators moved on by it. Written out pair of
-    /// followers by pair (the followers past `N` vanish): a loop costs more
-    /// than its body.
-    #[inline(always)]
-    fn next(&mut self) -> u32 {
-        self.next_ordered::<LOW_REGISTERS>()
-    }
-
-    /// [`Edges::next`], each accumulator stored as soon as it has moved on
-    /// if `EACH` ([`LOW_REGISTERS`]), else in pairs.
-    #[inline(always)]
-    fn next_ordered<const EACH: bool>(&mut self) -> u32 {
-        let mut mask = self.base;
-        // Follower `j`'s accumulator moved on, its bit of the mask flipped
-        // when it carries: an addition and a branch, and where it carries
-        // a load of its bit and `L`, an exclusive or and a subtraction. The
-        // fence, which emits no instruction, keeps the branch: without it
-        // the follower becomes a conditional block of at least 4
-        // instructions on every step.
-        let mut follow = |acc: u32, inc: u32, j: usize| {
-            let (sum, carry) = acc.overflowing_add(inc);
-            if carry {
-                compiler_fence(Ordering::SeqCst);
-                let steps = |j: usize| self.steps.get(j - 1).copied().unwrap_or([0; 2]);
-                if EACH {
-                    // `L` and the bit through one register, one after
-                    // the other.
-                    let sum = sum.wrapping_sub(steps(j)[0]);
-                    compiler_fence(Ordering::SeqCst);
-                    mask ^= steps(j)[1];
-                    return sum;
-                }
-                let [lead_steps, bit] = steps(j);
-                mask ^= bit;
-                return sum.wrapping_sub(lead_steps);
-            }
-            sum
-        };
-        macro_rules! pair {
-            ($($j:literal)*) => {$(
-                if let (true, Some(&[inc, acc])) = ($j < N, self.slot.get($j - 1)) {
-                    let first = follow(acc, inc, $j);
-                    let store_first = |slot: &mut [[u32; 2]; N]| {
-                        if let Some(slot) = slot.get_mut($j - 1) {
-                            slot[1] = first;
-                        }
-                    };
-                    // At once on eight low registers; else beside the
-                    // second's, one `strd`.
-                    if EACH {
-                        store_first(&mut self.slot);
-                    }
-                    let second = match self.slot.get($j) {
-                        Some(&[acc, inc]) if $j + 1 < N => Some(follow(acc, inc, $j + 1)),
-                        _ => None,
-                    };
-                    if !EACH {
-                        store_first(&mut self.slot);
-                    }
-                    if let (Some(slot), Some(acc)) = (self.slot.get_mut($j), second) {
-                        slot[0] = acc;
-                    }
-                }
-            )*};
-        }
-        pair!(1 3 5 7 9 11 13 15 17 19 21 23 25 27 29 31);
-        mask
-    }
-}
-
-/// Steps a follower of `d` steps has taken after the lead's `s`-th of `l`:
-/// `floor((d·s + floor((d - 1) / 2)) / l)` (the lead's own: `s`).
-fn follower_steps(d: u32, s: u32, l: u32) -> u32 {
-    if d == 0 || l == 0 {
-        return 0;
-    }
-    let n = (u64::from(d) * u64::from(s) + u64::from((d - 1) / 2)) / u64::from(l);
-    u32::try_from(n).unwrap_or(u32::MAX)
+    pub(in crate::player) turn: Option<([Direction; N], u32)>,
+    /// Lines queued after `then` or the line playing ([`Axes::queue`]).
+    pub(in crate::player) lines: Targets<[i64; N]>,
+    /// The steps in which the lead stops from the speed the line playing
+    /// ends at: 0 when it ends at rest.
+    pub(in crate::player) tail: u32,
+    /// The junction deviation, in steps ([`Axes::with_junction_deviation`]).
+    pub(in crate::player) deviation: f32,
 }
 
 impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
@@ -287,6 +123,9 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
             lead: 0,
             then: None,
             turn: None,
+            lines: Targets::empty([0; N]),
+            tail: 0,
+            deviation: 0.0,
         }
     }
 
@@ -334,7 +173,7 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     /// way a period of the ramp's slowest entry later
     /// ([`Axis::next_direction`](crate::player::Axis::next_direction)).
     pub fn next_directions(&self) -> [Direction; N] {
-        match self.then {
+        match self.then.or_else(|| self.lines.iter().next()) {
             Some(target) if self.player.remaining() == 0 => {
                 // As the move to it will start ([`Axes::start_by`]).
                 let position = self.position();
@@ -360,6 +199,7 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     /// stop ends) changes nothing, and a move to where they stand has no
     /// steps and keeps the directions.
     pub fn move_to(&mut self, target: [i64; N]) -> [Direction; N] {
+        self.lines.clear();
         if !self.player.is_done() {
             if self.destination() != target {
                 self.stop();
@@ -373,17 +213,16 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
             return self.directions;
         }
         self.turn = None;
-        let mut delta = [0i64; N];
-        for ((d, t), p) in delta.iter_mut().zip(target).zip(position) {
-            *d = t.saturating_sub(p);
-        }
-        self.start_by(delta);
+        self.start_to(target, None);
         self.directions
     }
 
-    /// Where the move playing ends, or the one queued after it.
-    fn destination(&self) -> [i64; N] {
-        self.then
+    /// Where the move playing ends, or the last one queued after it.
+    pub(in crate::player) fn destination(&self) -> [i64; N] {
+        self.lines
+            .iter()
+            .next_back()
+            .or(self.then)
             .unwrap_or_else(|| self.position_after(self.lead_total))
     }
 
@@ -393,6 +232,7 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     /// move's directions. The target the axes already go to changes
     /// nothing.
     pub(in crate::player) fn move_after(&mut self, target: [i64; N]) {
+        self.lines.clear();
         if self.destination() != target {
             self.then = Some(target);
         }
@@ -409,9 +249,15 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
         self.move_to(target)
     }
 
-    /// Starts a move of `delta` steps from rest.
-    fn start_by(&mut self, delta: [i64; N]) {
+    /// Starts a line to `target` from the position: from rest, or at a
+    /// speed of `entry` ticks a step of its lead ([`Player::begin_joined`]),
+    /// ending at the speed the lines queued after it allow.
+    fn start_to(&mut self, target: [i64; N], entry: Option<u32>) {
         self.start = self.position();
+        let mut delta = [0i64; N];
+        for ((d, t), p) in delta.iter_mut().zip(target).zip(self.start) {
+            *d = t.saturating_sub(p);
+        }
         let mut lead = 0;
         for (i, &d) in delta.iter().enumerate() {
             self.steps[i] = u32::try_from(d.unsigned_abs()).unwrap_or(u32::MAX);
@@ -432,8 +278,13 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
         self.edges = edges;
         self.lead_steps = l;
         self.lead = lead;
+        self.lead_total = l;
+        self.tail = match self.lines.len() {
+            0 => 0,
+            _ => self.tail(),
+        };
         // The cruise set on the axes holds.
-        self.player.begin(l);
+        self.player.begin_joined(l, self.tail, entry);
         // `l`, or none on an empty ramp.
         self.lead_total = self.player.remaining();
     }
@@ -453,6 +304,8 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     /// Ends the move sooner by `stop` on the lead's player.
     fn shorten(&mut self, stop: fn(&mut Player<'a, W, L>)) {
         self.then = None;
+        self.lines.clear();
+        self.tail = 0;
         let played = self.lead_played();
         let turn = self.at_turn();
         stop(&mut self.player);
@@ -523,11 +376,17 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     #[cold]
     #[inline(never)]
     fn then_step(&mut self, write: impl FnOnce(W, u32)) -> bool {
-        let Some(target) = self.then.take() else {
-            return false;
+        let (target, entry) = match (self.then.take(), self.lines.pop()) {
+            (Some(target), None) => (target, None),
+            (Some(target), Some(next)) => {
+                self.lines.push_front(next);
+                (target, None)
+            }
+            (None, Some(target)) => (target, self.entry_period(target)),
+            (None, None) => return false,
         };
         let before = self.directions;
-        self.move_to(target);
+        self.start_to(target, entry);
         let mask = self.edges.next();
         if !self.player.step(|period| write(period, mask)) {
             return false;
@@ -539,7 +398,7 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     /// The directions before the last turn to a queued move, when the
     /// lead has handed out nothing since the first edge after it (which
     /// may still be in a buffered register's hands, not taken).
-    fn at_turn(&self) -> Option<[Direction; N]> {
+    pub(in crate::player) fn at_turn(&self) -> Option<[Direction; N]> {
         let (before, mark) = self.turn?;
         let remaining = self.player.remaining();
         (remaining == mark && (mark > 0 || !self.player.is_ended())).then_some(before)
@@ -569,7 +428,7 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
 
     /// `true` when the move has played all its steps and no other follows.
     pub fn is_done(&self) -> bool {
-        self.player.is_done() && self.then.is_none()
+        self.player.is_done() && self.then.is_none() && self.lines.len() == 0
     }
 
     /// The player: the lead's.
@@ -584,17 +443,8 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
 
     fn idle(&self) -> Result<(), Moving> {
         match self.player.remaining() {
-            0 if self.then.is_none() => Ok(()),
+            0 if self.then.is_none() && self.lines.len() == 0 => Ok(()),
             remaining => Err(Moving { remaining }),
         }
     }
 }
-
-/// Axis `i`'s bit of the mask (`i` below 32).
-fn bit(i: usize) -> u32 {
-    1u32.wrapping_shl(i as u32)
-}
-
-#[cfg(test)]
-#[path = "axes_tests.rs"]
-mod tests;

@@ -117,7 +117,7 @@ pub struct Axis<'a, W, L = AnyLayout> {
     /// The last reversal.
     turn: Option<Turn>,
     /// Targets queued after `then` ([`Axis::queue`]).
-    pub(crate) targets: Targets,
+    pub(crate) targets: Targets<i64>,
 }
 
 /// A reversal: the direction before it, and where the player stood once it
@@ -140,7 +140,7 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
             direction: Direction::Forward,
             then: Then::Rest,
             turn: None,
-            targets: Targets::EMPTY,
+            targets: Targets::empty(0),
         }
     }
 
@@ -233,7 +233,7 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
     /// the type's docs say; the target the move already ends at changes
     /// nothing.
     pub fn move_to(&mut self, target: i64) -> Direction {
-        self.targets = Targets::EMPTY;
+        self.targets = Targets::empty(0);
         if self.player.is_done() {
             self.turn = None;
             self.then = Then::Rest;
@@ -265,7 +265,7 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
     /// out every period (`Buffered`), so that the pin takes that step in
     /// the move's direction. The target the move ends at changes nothing.
     pub(crate) fn move_after(&mut self, target: i64) {
-        self.targets = Targets::EMPTY;
+        self.targets = Targets::empty(0);
         if self.destination() != Some(target) {
             self.then = Then::To(target);
         }
@@ -274,7 +274,7 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
     /// Runs `direction` once the move playing has ended
     /// ([`Axis::move_after`]).
     pub(crate) fn run_after(&mut self, direction: Direction) {
-        self.targets = Targets::EMPTY;
+        self.targets = Targets::empty(0);
         self.then = Then::Run(direction);
     }
 
@@ -288,7 +288,7 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
     /// [`Axis::stop`]: at once from rest or moving that way, after a stop
     /// when moving the other way. Returns the direction to set now.
     pub fn run(&mut self, direction: Direction) -> Direction {
-        self.targets = Targets::EMPTY;
+        self.targets = Targets::empty(0);
         if self.player.is_done() {
             self.turn = None;
             self.then = Then::Rest;
@@ -351,7 +351,7 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
     /// is dropped.
     pub fn stop(&mut self) {
         self.then = Then::Rest;
-        self.targets = Targets::EMPTY;
+        self.targets = Targets::empty(0);
         self.replan(Player::stop);
     }
 
@@ -360,7 +360,7 @@ impl<'a, W: TableWord, L: Layout> Axis<'a, W, L> {
     /// target, and a target it was to go on to is dropped.
     pub fn abort(&mut self) {
         self.then = Then::Rest;
-        self.targets = Targets::EMPTY;
+        self.targets = Targets::empty(0);
         self.replan(Player::abort);
     }
 

@@ -2,13 +2,15 @@
 //! filling a buffer for DMA (`fill.rs`), reload registers that take effect
 //! at the next wrap (`buffered.rs`), an axis with its position
 //! (`axis.rs`), moves queued on it that join at speed (`queue.rs`, its
-//! turning points in `targets.rs`), coordinated axes (`axes.rs`), and ramps
+//! turning points in `targets.rs`), coordinated axes (`axes.rs`, the followers' steps in `edges.rs`), and ramps
 //! and periods typed by their timer's rate (`rated.rs`).
 
 pub(in crate::player) mod axes;
 pub(in crate::player) mod axis;
 pub(in crate::player) mod buffered;
+pub(in crate::player) mod edges;
 pub(in crate::player) mod fill;
+pub(in crate::player) mod junctions;
 pub(in crate::player) mod queue;
 pub(in crate::player) mod rated;
 pub(in crate::player) mod step;

@@ -5,6 +5,7 @@ use super::Buffered;
 use crate::base::timer::TableWord;
 use crate::player::playing::axes::Axes;
 use crate::player::playing::axis::Direction;
+use crate::player::playing::targets::QueueFull;
 use crate::player::ramps::layout::Layout;
 
 /// How a move of [`Buffered`] [`Axes`] begins: set the direction pins,
@@ -35,6 +36,31 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Buffered<Axes<'a, W, N, L>> {
     /// follows that edge, which the pins take in the directions of its own
     /// move.
     pub fn move_to(&mut self, target: [i64; N]) -> AxesStart<W, N> {
+        self.start_to(target)
+    }
+
+    /// Queues a line to `target` ([`Axes::queue`]): from rest it begins
+    /// the move as [`Buffered::move_to`] does; while lines play, the
+    /// directions now, mask 0 and no periods. With the line's last edge in
+    /// the timer's hands (the lead's periods all handed out) a line that
+    /// would end at rest no longer joins at speed: the new one follows
+    /// that edge from rest.
+    pub fn queue(&mut self, target: [i64; N]) -> Result<AxesStart<W, N>, QueueFull<[i64; N]>> {
+        if self.ahead == 0 && self.inner.is_done() {
+            return Ok(self.start_to(target));
+        }
+        let rejoin = self.inner.remaining() > 0;
+        self.inner.enqueue(target, rejoin)?;
+        Ok(AxesStart {
+            directions: self.inner.directions(),
+            mask: 0,
+            first: None,
+            next: None,
+        })
+    }
+
+    /// [`Buffered::move_to`].
+    fn start_to(&mut self, target: [i64; N]) -> AxesStart<W, N> {
         let mut start = AxesStart {
             directions: self.inner.directions(),
             mask: 0,
