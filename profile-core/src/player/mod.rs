@@ -431,6 +431,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     }
 
     /// The period `s` reads at position `pos`, in ticks.
+    #[inline(always)]
     fn period_read(&self, s: &planning::plan::Stretch<'a, W>, pos: u32) -> u32 {
         let ramp = if s.decel { &self.decel } else { &self.accel };
         if let Some(periods) = ramp.per_step() {

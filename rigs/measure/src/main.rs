@@ -445,6 +445,45 @@ fn axes_move(timer: &mut SYST) {
     }
 }
 
+/// Queues a line on three axes ([`Axes::queue`]): the planning call of a
+/// line that joins the one playing at speed.
+#[inline(never)]
+#[unsafe(no_mangle)]
+pub fn axes_queue(axes: &mut Axes<'_, u16, 3>, target: [i64; 3]) -> bool {
+    axes.queue(target).is_ok()
+}
+
+/// The vertices of the queued polyline: three lines of 3000, 3000 and
+/// 3000 lead steps (axis 1 leads), bending by a few degrees, no axis
+/// reversing.
+const POLYLINE: [[i64; 3]; 3] = [[1200, 3000, -400], [2500, 6000, -700], [3700, 9000, -1200]];
+
+/// Three axes on a queued polyline: the queue call that joins the second
+/// line to the first, the steps of each line but its first, and the step
+/// at each vertex (the next line's first, which starts it), measured on
+/// their own; the axes end at the last vertex.
+#[inline(never)]
+fn axes_polyline(timer: &mut SYST) {
+    let player = Player::new(Ramp::steps(&sigmoid_exact::PERIODS));
+    let mut axes = Axes::new(player, [0; 3]).with_junction_deviation(4.0);
+    let mut pins = 0u32;
+    check(axes_queue(&mut axes, POLYLINE[0]), "polyline, first line");
+    once("planning, queue, axes 3, a line joined to the one playing", || {
+        check(axes_queue(&mut axes, POLYLINE[1]), "polyline, second line");
+    });
+    check(axes_queue(&mut axes, POLYLINE[2]), "polyline, third line");
+    let label = "axes, 3, queued polyline (per-step table)";
+    steps(label, "line 1", 3000, || axes_step(&mut axes, timer, &mut pins));
+    for line in 2..=3 {
+        once("axes, 3, queued polyline, the step at a vertex", || {
+            axes_step(&mut axes, timer, &mut pins)
+        });
+        let phase = if line == 2 { "line 2 after its first step" } else { "line 3 after its first step" };
+        steps(label, phase, 2999, || axes_step(&mut axes, timer, &mut pins));
+    }
+    check(axes.position() == POLYLINE[2] && axes.is_done(), "polyline positions");
+}
+
 /// Runs `steps` calls of a step function between the markers.
 fn steps(label: &str, phase: &str, n: u32, mut step: impl FnMut()) {
     hprintln!("measure: {} {}: {} steps", label, phase, n);
@@ -687,6 +726,7 @@ fn main() -> ! {
     );
 
     axes_move(timer);
+    axes_polyline(timer);
 
     // The peer on a move of the same shape: 1000 steps to 64 kHz (the top of
     // sigmoid_exact, 156 ticks of 10 MHz) at constant acceleration, 3000 at

@@ -9,36 +9,24 @@
 //! moves after it) can still stop.
 
 use crate::base::timer::TableWord;
-use crate::player::planning::plan::{Plan, Run, Source};
+use crate::player::planning::plan::{Run, Source};
 use crate::player::{Layout, Player};
 
-impl<W: TableWord> Plan<'_, W> {
-    /// Drops the plan's last `tail` steps (none handed to a run yet).
-    pub(crate) fn cut(&mut self, mut tail: u32) {
-        while tail > 0 && self.len > 0 {
-            let s = &mut self.stretches[self.len - 1];
-            if s.total <= tail {
-                tail -= s.total;
-                self.len -= 1;
-                continue;
-            }
-            let keep = (s.total - tail) as usize;
-            if let Source::Run(run) = &mut s.source {
-                *run = match core::mem::replace(run, Run::empty()) {
-                    Run::Up(periods) => Run::Up(periods.as_slice()[..keep].iter()),
-                    // Played last to first: the first periods play last.
-                    Run::Down(periods) => {
-                        let periods = periods.as_slice();
-                        Run::Down(periods[periods.len() - keep..].iter())
-                    }
-                    Run::Hold(period, _) => Run::Hold(period, keep as u32),
-                    Run::Ended(periods) => Run::Ended(periods),
-                };
-            }
-            s.total -= tail;
-            s.count -= tail;
-            tail = 0;
+/// `run` without its last `n` steps (at most its steps).
+fn shortened<W>(run: Run<'_, W>, n: u32) -> Run<'_, W> {
+    let keep = |len: usize| len - (n as usize).min(len);
+    match run {
+        Run::Up(periods) => {
+            let periods = periods.as_slice();
+            Run::Up(periods[..keep(periods.len())].iter())
         }
+        // Played last to first: the first periods play last.
+        Run::Down(periods) => {
+            let periods = periods.as_slice();
+            Run::Down(periods[periods.len() - keep(periods.len())..].iter())
+        }
+        Run::Hold(period, left) => Run::Hold(period, left - n.min(left)),
+        Run::Ended(periods) => Run::Ended(periods),
     }
 }
 
@@ -46,50 +34,78 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// Starts a move of `steps` steps that ends at speed: as the first
     /// `steps` of a move of `steps + tail` (at rest when `tail` is 0).
     /// From rest when `entry` is `None`; else from a speed of `entry`
-    /// ticks a step, entering the acceleration ramp at its last step not
-    /// shorter (the fastest not faster), that period counted as the one
-    /// played before the move.
+    /// ticks a step, entering the acceleration ramp at its first step not
+    /// longer (as a new end does while decelerating), that period counted
+    /// as the one played before the move.
+    #[inline(never)]
     pub(crate) fn begin_joined(&mut self, steps: u32, tail: u32, entry: Option<u32>) {
-        self.restore_decel();
-        self.endless = false;
-        self.extended = 0;
-        let empty = self.known.tops[0].is_none() || self.known.tops[1].is_none();
-        if empty || steps == 0 {
-            self.plan.clear();
-            self.follow(0);
-            return;
+        let total = steps.saturating_add(tail);
+        match entry {
+            Some(ticks) if ticks > 0 && steps > 0 => {
+                // A move of one step, its step not played: the player
+                // stands at rest on the deceleration ramp, and a new end
+                // from there enters the acceleration ramp at its first
+                // entry not longer than the period played before, `ticks`
+                // ([`Player::retarget`]).
+                self.begin(1);
+                self.before = ticks;
+                if self.remaining() == 0 || !self.retarget(total) {
+                    return self.begin(total);
+                }
+            }
+            _ => self.begin(total),
         }
-        let (from, before) = match entry {
-            Some(ticks) if ticks > 0 => (self.cruise_position(ticks).0, ticks),
-            _ => (0, 0),
-        };
-        self.plan_steps(from, steps.saturating_add(tail));
-        self.plan.cut(tail.min(u32::MAX - steps));
-        self.follow(before);
+        self.cut(total - steps);
     }
 
     /// Has the move playing end at speed: as the steps that remain of a
     /// move `tail` steps longer (at rest when `tail` is 0), from where it
-    /// stands. `false`, changing nothing, at rest or while an abort plays.
+    /// stands ([`Player::retarget`], then cut). `false`, changing nothing,
+    /// at rest or while an abort plays.
+    #[inline(never)]
     pub(crate) fn rejoin(&mut self, tail: u32) -> bool {
         let remaining = self.remaining();
-        if remaining == 0 || self.aborting {
+        let longer = remaining.saturating_add(tail);
+        if remaining == 0 || !self.retarget(longer) {
             return false;
         }
-        let (acc, decelerating, current) = self.now();
-        let from = match (current, decelerating) {
-            (0, _) => 0,
-            (_, true) => self.accel_entry(current),
-            (_, false) => acc,
-        };
-        self.plan_steps(from, remaining.saturating_add(tail));
-        self.plan.cut(tail.min(u32::MAX - remaining));
-        self.follow(current);
+        self.cut(longer - remaining);
         true
+    }
+
+    /// Drops the move's last `tail` steps, fewer than it has, none played
+    /// yet of the stretches they are in but the first's: from the plan's
+    /// stretches, last first, then from the run of its first stretch
+    /// being played.
+    #[inline(never)]
+    fn cut(&mut self, mut tail: u32) {
+        while tail > 0 && self.plan.len > 0 {
+            let s = &mut self.plan.stretches[self.plan.len - 1];
+            if s.count == s.total && s.total <= tail && self.plan.len > 1 {
+                tail -= s.total;
+                self.plan.len -= 1;
+                continue;
+            }
+            // Its steps not yet handed to a run, then the run.
+            let pending = s.count.min(tail);
+            if let Source::Run(run) = &mut s.source {
+                *run = shortened(core::mem::replace(run, Run::empty()), pending);
+            }
+            s.count -= pending;
+            s.total -= pending;
+            tail -= pending;
+            let handed = tail.min(self.run.left());
+            if handed > 0 {
+                self.run = shortened(core::mem::replace(&mut self.run, Run::empty()), handed);
+                s.total -= handed;
+            }
+            break;
+        }
     }
 
     /// The period of the move's last step, in ticks, as planned (0 for a
     /// move of no steps): where a move that joins the next ends.
+    #[inline(never)]
     pub(crate) fn last_step_period(&self) -> u32 {
         let stretches = &self.plan.stretches[..self.plan.len];
         match stretches.last() {

@@ -419,6 +419,9 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
 
     /// Plans `r` steps of a move that is not decelerating, the acceleration
     /// side at `p`, into `plan` (in place: a plan is large to copy).
+    // Inlined into `Player::plan_steps`, its one caller, with the
+    // fields `sides!` borrows.
+    #[inline(always)]
     pub(crate) fn plan(&self, plan: &mut Plan<'a, W>, mut p: u32, mut r: u32) {
         plan.clear();
         let l = self.decel_last;
@@ -476,6 +479,7 @@ impl<'a, W: TableWord> Sides<'_, 'a, W> {
     /// The last `r` steps, the deceleration ramp within reach: the
     /// acceleration side plays until the deceleration ramp, read at the steps
     /// that remain, is not faster; then the deceleration ramp plays to the end.
+    #[inline(always)]
     fn within_reach(&self, plan: &mut Plan<'a, W>, p: u32, r: u32) {
         let j = self.crossing(p, r);
         // The walk's steps towards the cruise position go on the walk

@@ -3,6 +3,7 @@
 use crate::base::timer::TableWord;
 use crate::player::playing::axis::{Direction, Moving};
 use crate::player::playing::edges::{Edges, bit, follower_steps};
+use crate::player::playing::lines::{Line, Queued};
 use crate::player::playing::targets::Targets;
 use crate::player::{AnyLayout, Layout, Player};
 
@@ -97,7 +98,11 @@ pub struct Axes<'a, W, const N: usize, L = AnyLayout> {
     /// from it).
     pub(in crate::player) turn: Option<([Direction; N], u32)>,
     /// Lines queued after `then` or the line playing ([`Axes::queue`]).
-    pub(in crate::player) lines: Targets<[i64; N]>,
+    pub(in crate::player) lines: Targets<Queued<N>>,
+    /// The line playing's figures, when lines are queued after it.
+    pub(in crate::player) line: Line<N>,
+    /// The acceleration ramp's mean acceleration, for the junctions.
+    pub(in crate::player) accel: f32,
     /// The steps in which the lead stops from the speed the line playing
     /// ends at: 0 when it ends at rest.
     pub(in crate::player) tail: u32,
@@ -123,7 +128,9 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
             lead: 0,
             then: None,
             turn: None,
-            lines: Targets::empty([0; N]),
+            lines: Targets::empty(Queued::NONE),
+            line: Line::NONE,
+            accel: 0.0,
             tail: 0,
             deviation: 0.0,
         }
@@ -173,7 +180,10 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     /// way a period of the ramp's slowest entry later
     /// ([`Axis::next_direction`](crate::player::Axis::next_direction)).
     pub fn next_directions(&self) -> [Direction; N] {
-        match self.then.or_else(|| self.lines.iter().next()) {
+        match self
+            .then
+            .or_else(|| self.lines.iter().next().map(|q| q.target))
+        {
             Some(target) if self.player.remaining() == 0 => {
                 // As the move to it will start ([`Axes::start_by`]).
                 let position = self.position();
@@ -213,7 +223,7 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
             return self.directions;
         }
         self.turn = None;
-        self.start_to(target, None);
+        self.start_to(target, None, None);
         self.directions
     }
 
@@ -222,8 +232,22 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
         self.lines
             .iter()
             .next_back()
+            .map(|q| q.target)
             .or(self.then)
-            .unwrap_or_else(|| self.position_after(self.lead_total))
+            .unwrap_or_else(|| self.line_end())
+    }
+
+    /// Where the line playing ends: its target unless a stop ends it
+    /// sooner, then where the rule has taken each axis.
+    pub(in crate::player) fn line_end(&self) -> [i64; N] {
+        if self.lead_total != self.lead_steps {
+            return self.position_after(self.lead_total);
+        }
+        let mut end = self.start;
+        for (i, e) in end.iter_mut().enumerate() {
+            *e = e.saturating_add(self.directions[i].sign() * i64::from(self.steps[i]));
+        }
+        end
     }
 
     /// Moves to `target` once the move playing has ended: for a register
@@ -252,8 +276,13 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     /// Starts a line to `target` from the position: from rest, or at a
     /// speed of `entry` ticks a step of its lead ([`Player::begin_joined`]),
     /// ending at the speed the lines queued after it allow.
-    fn start_to(&mut self, target: [i64; N], entry: Option<u32>) {
+    fn start_to(&mut self, target: [i64; N], entry: Option<u32>, line: Option<Line<N>>) {
         self.start = self.position();
+        self.line = match line {
+            Some(line) => line,
+            None if self.lines.len() > 0 => Line::between(self.start, target),
+            None => Line::NONE,
+        };
         let mut delta = [0i64; N];
         for ((d, t), p) in delta.iter_mut().zip(target).zip(self.start) {
             *d = t.saturating_sub(p);
@@ -376,17 +405,17 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     #[cold]
     #[inline(never)]
     fn then_step(&mut self, write: impl FnOnce(W, u32)) -> bool {
-        let (target, entry) = match (self.then.take(), self.lines.pop()) {
-            (Some(target), None) => (target, None),
+        let (target, entry, line) = match (self.then.take(), self.lines.pop()) {
+            (Some(target), None) => (target, None, None),
             (Some(target), Some(next)) => {
                 self.lines.push_front(next);
-                (target, None)
+                (target, None, None)
             }
-            (None, Some(target)) => (target, self.entry_period(target)),
+            (None, Some(q)) => (q.target, self.entry_period(&q.line), Some(q.line)),
             (None, None) => return false,
         };
         let before = self.directions;
-        self.start_to(target, entry);
+        self.start_to(target, entry, line);
         let mask = self.edges.next();
         if !self.player.step(|period| write(period, mask)) {
             return false;

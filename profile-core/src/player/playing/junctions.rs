@@ -23,84 +23,14 @@
 //! Path speed `v` and a line's lead step rate differ by the line's
 //! `ρ = L / |d|` (its lead's steps over its length): the lead steps at
 //! `v·ρ`. At a vertex the path speed holds and the new lead enters the
-//! acceleration ramp at its fastest entry not faster than `v·ρ'`.
-
-use libm::sqrtf;
+//! ramp at its fastest entry not faster than `v·ρ'` (on the deceleration
+//! ramp, the one the acceleration ramp mirrors when they are one).
 
 use crate::base::timer::TableWord;
 use crate::player::playing::axis::Direction;
+use crate::player::playing::lines::{Line, Queued, period_of, tail_from};
 use crate::player::playing::targets::QueueFull;
 use crate::player::{Axes, Layout};
-
-/// A line of a polyline: its steps on each axis, its lead's steps and
-/// its `ρ = L / |d|`.
-#[derive(Clone, Copy)]
-struct Line<const N: usize> {
-    delta: [i64; N],
-    lead: u32,
-    rho: f32,
-}
-
-impl<const N: usize> Line<N> {
-    fn between(from: [i64; N], to: [i64; N]) -> Self {
-        let mut delta = [0i64; N];
-        let (mut lead, mut square) = (0u32, 0f32);
-        for i in 0..N {
-            delta[i] = to[i].saturating_sub(from[i]);
-            let steps = u32::try_from(delta[i].unsigned_abs()).unwrap_or(u32::MAX);
-            lead = lead.max(steps);
-            square += (steps as f32) * (steps as f32);
-        }
-        let rho = match lead {
-            0 => 1.0,
-            _ => lead as f32 / sqrtf(square),
-        };
-        Line { delta, lead, rho }
-    }
-
-    /// `sin(φ/2)` of the junction from `self` to `next`: `(1 + cos θ) / 2`
-    /// under the root, `θ` the angle between the two; 0 where an axis
-    /// reverses or a line has no steps.
-    fn junction_sine(&self, next: &Line<N>) -> f32 {
-        let (mut dot, mut a, mut b) = (0f32, 0f32, 0f32);
-        for i in 0..N {
-            let (x, y) = (self.delta[i] as f32, next.delta[i] as f32);
-            if x * y < 0.0 {
-                return 0.0;
-            }
-            dot += x * y;
-            a += x * x;
-            b += y * y;
-        }
-        if a == 0.0 || b == 0.0 {
-            return 0.0;
-        }
-        let cos = (dot / (sqrtf(a) * sqrtf(b))).clamp(-1.0, 1.0);
-        sqrtf((1.0 + cos) / 2.0)
-    }
-}
-
-/// The tail of a line that ends at a speed from which a stop takes
-/// `stop` steps: its last step has that many after it, the stop's first
-/// step its entry (the step a move plays with `r` steps left, itself
-/// included, is no faster than the deceleration ramp's entry `r - 1`).
-fn tail_from(stop: u32) -> u32 {
-    stop.saturating_sub(1)
-}
-
-/// The period of a lead stepping at `rate` steps a tick, rounded up (no
-/// faster); `u32::MAX` at rest.
-fn period_of(rate: f32) -> u32 {
-    if rate <= 0.0 {
-        return u32::MAX;
-    }
-    let p = libm::ceilf(1.0 / rate);
-    if p >= u32::MAX as f32 {
-        u32::MAX
-    } else {
-        (p as u32).max(1)
-    }
-}
 
 impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     /// The same axes with a junction deviation of `steps` (grbl's
@@ -116,6 +46,7 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
         } else {
             0.0
         };
+        self.accel = self.mean_accel();
         self
     }
 
@@ -172,10 +103,30 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
         target: [i64; N],
         rejoin: bool,
     ) -> Result<(), QueueFull<[i64; N]>> {
-        if self.destination() == target {
+        let from = self.destination();
+        if from == target {
             return Ok(());
         }
-        self.lines.push(target)?;
+        // The line before: the last queued, or the one playing (or that a
+        // stop ends and a new target follows).
+        let before = match (self.lines.iter().next_back(), self.then) {
+            (Some(last), _) => last.line,
+            (None, Some(then)) => Line::between(self.line_end(), then),
+            (None, None) if self.line.norm == 0.0 => {
+                self.line = Line::between(self.start, from);
+                self.line
+            }
+            (None, None) => self.line,
+        };
+        let line = Line::between(from, target);
+        let junction = before.junction(&line, self.accel, self.deviation);
+        self.lines
+            .push(Queued {
+                target,
+                line,
+                junction,
+            })
+            .map_err(|_| QueueFull { target })?;
         if rejoin && self.then.is_none() {
             let tail = self.tail();
             if tail > self.tail {
@@ -194,31 +145,22 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     /// from the speed its end allows, by the backward pass over the lines
     /// queued after it.
     pub(in crate::player) fn tail(&self) -> u32 {
-        let current = Line::between(self.start, self.position_after(self.lead_total));
-        let mut from = self.position_after(self.lead_total);
-        let mut lines = [current; crate::player::QUEUE + 1];
-        let mut n = 1;
-        for target in self.lines.iter() {
-            lines[n] = Line::between(from, target);
-            from = target;
-            n += 1;
-        }
-        let speed = self.vertex_speeds(&lines[..n]);
+        let speed = self.vertex_speed();
         tail_from(
             self.player()
-                .stop_steps_from(period_of(speed * current.rho)),
+                .stop_steps_from(period_of(speed * self.line.rho)),
         )
     }
 
-    /// The path speed at the end of the first of `lines` by the backward
-    /// pass: at rest at the end of the last.
-    fn vertex_speeds(&self, lines: &[Line<N>]) -> f32 {
+    /// The path speed at the end of the line playing by the backward pass
+    /// over the lines queued after it: at rest at the end of the last.
+    fn vertex_speed(&self) -> f32 {
         let player = self.player();
         let cruise = player.cruise_period().max(1) as f32;
-        let accel = self.mean_accel();
         let mut end = 0f32;
-        for j in (1..lines.len()).rev() {
-            let (before, line) = (&lines[j - 1], &lines[j]);
+        let mut lines = self.lines.iter().rev().peekable();
+        while let Some(q) = lines.next() {
+            let line = &q.line;
             // The line's lead from the vertex's speed can slow to the next
             // vertex's within the line.
             let tail = tail_from(player.stop_steps_from(period_of(end * line.rho)));
@@ -228,14 +170,9 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
                 Some(_) => 0.0,
                 None => f32::INFINITY,
             };
-            let sine = before.junction_sine(line);
-            let junction = if sine >= 1.0 {
-                f32::INFINITY
-            } else {
-                sqrtf(accel * self.deviation * sine / (1.0 - sine))
-            };
-            let fastest = 1.0 / (cruise * before.rho.max(line.rho));
-            end = stop.min(junction).min(fastest);
+            let before = lines.peek().map_or(self.line.rho, |b| b.line.rho);
+            let fastest = 1.0 / (cruise * before.max(line.rho));
+            end = stop.min(q.junction).min(fastest);
         }
         end
     }
@@ -253,20 +190,26 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
 
     /// The speed, in ticks a step of the next line's lead, at which the
     /// line now ending hands over: its last step's path speed on the next
-    /// line (`to` its end).
-    pub(in crate::player) fn entry_period(&self, to: [i64; N]) -> Option<u32> {
+    /// line.
+    pub(in crate::player) fn entry_period(&self, next: &Line<N>) -> Option<u32> {
         if self.tail == 0 {
             return None;
         }
-        let end = self.position_after(self.lead_total);
-        let before = Line::between(self.start, end);
-        let next = Line::between(end, to);
+        let before = &self.line;
         let last = self.player().last_step_period() as f32;
         let p = libm::ceilf(last * before.rho / next.rho);
-        Some(if p >= u32::MAX as f32 {
+        let p = if p >= u32::MAX as f32 {
             u32::MAX
         } else {
             p as u32
-        })
+        };
+        // The ramp's entry not faster than that (the deceleration ramp's
+        // last entry not shorter, which on one ramp both ways is the
+        // acceleration ramp's too): the new lead's first step is no
+        // faster along the path. Slower than every entry: from rest.
+        match self.player().stop_steps_from(p) {
+            0 => None,
+            n => self.player().decel_period(n - 1),
+        }
     }
 }
