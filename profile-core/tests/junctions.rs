@@ -269,3 +269,50 @@ fn buffered_queued_lines_hand_out_the_same_edges() {
     assert_eq!(got, want);
     assert_eq!(buffered.position(), [400, 60]);
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(cases()))]
+
+    /// Queued lines on compressed runs, plain and indexed, hand out the
+    /// edges the same lines hand out on the runs' expansion, lines queued
+    /// while others play included: a line cut to end at speed, and the
+    /// next begun at it, alike on every layout.
+    #[test]
+    fn queued_lines_on_runs_play_as_on_their_expansion(
+        runs in common::falling_runs(3 << 16),
+        vertices in vertices(),
+        delta in 0.0f32..30.0,
+        at in 0usize..300,
+    ) {
+        use profile_core::runs::{Expand, RunIndex};
+        let steps: Vec<u16> = Expand::new(&runs).map(|p| p as u16).collect();
+        let all = common::padded::<40>(&runs);
+        let index = RunIndex::new(&all);
+        let mut expanded = Axes::new(Player::new(Ramp::steps(&steps)), [0, 0]).with_junction_deviation(delta);
+        let mut plain = Axes::new(Player::<u16, _>::new(&runs[..]), [0, 0]).with_junction_deviation(delta);
+        let mut indexed = Axes::new(Player::<u16, _>::new(&index), [0, 0]).with_junction_deviation(delta);
+        let mut k = 0;
+        // Two lines, some steps, then the rest queued while they play.
+        for (i, v) in vertices.iter().take(QUEUE + 1).enumerate() {
+            if i == 2 {
+                for _ in 0..at {
+                    let want = expanded.next_step();
+                    prop_assert_eq!(plain.next_step(), want, "edge {}", k);
+                    prop_assert_eq!(indexed.next_step(), want, "edge {}", k);
+                    k += 1;
+                }
+            }
+            let want = expanded.queue(*v).is_ok();
+            prop_assert_eq!(plain.queue(*v).is_ok(), want);
+            prop_assert_eq!(indexed.queue(*v).is_ok(), want);
+        }
+        while let Some(want) = expanded.next_step() {
+            prop_assert_eq!(plain.next_step(), Some(want), "edge {}", k);
+            prop_assert_eq!(indexed.next_step(), Some(want), "edge {}", k);
+            k += 1;
+        }
+        prop_assert_eq!(plain.next_step(), None);
+        prop_assert_eq!(indexed.next_step(), None);
+        prop_assert_eq!(plain.position(), expanded.position());
+    }
+}
