@@ -5,9 +5,13 @@
 //! words, empty runs included) and the generated tables of a profiles file,
 //! each with or without its own deceleration table, and random sequences of
 //! operations (starts of 0 to 400 steps, of the profiles' lengths and of
-//! `u32::MAX`, steps played, stops, cruise changes). It writes them into a C
+//! `u32::MAX`, steps played, stops, cruise changes), and on the same random
+//! tables an axis at 0 (`_axis_`, `Axis`) given random targets queued
+//! between steps (`_axis_queue`, `Axis::queue`: moves that join at speed,
+//! reversals at rest, a full queue refused). It writes them into a C
 //! program that plays every sequence with the header's player and prints
-//! every period and the steps remaining after each operation, compiles it
+//! every period and the steps remaining after each operation (an axis: each
+//! target taken or not, its position and direction), compiles it
 //! with the machine's C compiler (`cc`, or `$CC`) and compares its output
 //! with the same sequences played by `Player::new(..).with_decel(..)` (per-step tables)
 //! and `Player::new(&RUNS).with_decel(..)` (runs).
@@ -34,7 +38,7 @@ use common::lcg::Lcg;
 use profile_codegen::Generated;
 use profile_codegen::profiles::{CStyle, Profiles};
 use profile_core::TableWord;
-use profile_core::player::{Layout, Player, Ramp};
+use profile_core::player::{Axis, Layout, Player, Ramp};
 use profile_core::runs::LinearRun;
 
 /// A table the players play.
@@ -51,6 +55,8 @@ enum Op {
     Play(u32),
     Stop,
     Cruise(u32),
+    /// An axis's queued target (`Axis::queue`, `_axis_queue`).
+    Queue(i32),
 }
 
 /// A sequence: its tables (the deceleration table the acceleration table's
@@ -63,6 +69,9 @@ struct Case {
     /// Bands of periods the cruise keeps out of (`Player::avoiding`,
     /// `_avoid`).
     avoid: Vec<(u32, u32)>,
+    /// Played as an axis at 0 with a queue (`Axis`, `_axis_`): its
+    /// operations are queued targets and steps.
+    axis: bool,
 }
 
 /// The profiles whose header holds all three players, and whose tables are
@@ -182,6 +191,7 @@ fn edge_cases() -> Vec<Case> {
         decel: None,
         ops: vec![Op::Start(20), Op::Play(2), Op::Stop, Op::Play(10)],
         avoid: vec![],
+        axis: false,
     });
     for k in 1..6 {
         out.push(Case {
@@ -189,6 +199,7 @@ fn edge_cases() -> Vec<Case> {
             decel: None,
             ops: vec![Op::Start(30), Op::Play(k), Op::Stop, Op::Play(40)],
             avoid: vec![],
+            axis: false,
         });
         out.push(Case {
             accel: Table::U16(plateau.clone()),
@@ -200,6 +211,7 @@ fn edge_cases() -> Vec<Case> {
                 Op::Play(80),
             ],
             avoid: vec![],
+            axis: false,
         });
     }
     // A cruise longer than 65 535 steps, played across the step path's
@@ -213,6 +225,7 @@ fn edge_cases() -> Vec<Case> {
             decel: None,
             ops: vec![Op::Start(140_000), Op::Play(66_000), Op::Stop, Op::Play(20)],
             avoid: vec![],
+            axis: false,
         });
     }
     for played in 0..5 {
@@ -221,6 +234,7 @@ fn edge_cases() -> Vec<Case> {
             decel: Some(Table::U16(vec![4000, 2500])),
             ops: vec![Op::Start(40), Op::Play(played), Op::Cruise(4), Op::Play(50)],
             avoid: vec![],
+            axis: false,
         });
     }
     // Bands: a cruise inside one gives way to the fastest entry slower than
@@ -251,6 +265,7 @@ fn edge_cases() -> Vec<Case> {
                     Op::Play(40),
                 ],
                 avoid: avoid.clone(),
+                axis: false,
             });
         }
     }
@@ -313,10 +328,20 @@ fn cases(cases: u32, profiles: &Profiles) -> Vec<Case> {
             };
             let avoid = bands(&mut rng, top);
             out.push(Case {
-                accel,
-                decel,
+                accel: accel.clone(),
+                decel: decel.clone(),
                 ops,
                 avoid,
+                axis: false,
+            });
+            // The same tables as an axis with a queue (no bands: an
+            // axis's moves keep the player's).
+            out.push(Case {
+                accel,
+                decel,
+                ops: axis_ops(&mut rng, 0),
+                avoid: vec![],
+                axis: true,
             });
         }
     }
@@ -359,6 +384,7 @@ fn cases(cases: u32, profiles: &Profiles) -> Vec<Case> {
                 decel,
                 ops,
                 avoid,
+                axis: false,
             });
         }
     }
@@ -382,9 +408,46 @@ fn play<W: TableWord, L: Layout>(out: &mut String, player: &mut Player<'_, W, L>
             }
             Op::Stop => player.stop(),
             Op::Cruise(pos) => player.set_cruise(pos),
+            Op::Queue(_) => unreachable!("an axis's operation"),
         }
         let _ = writeln!(out, " | {}", player.remaining());
     }
+}
+
+/// Plays `ops` on an axis at 0 on `player`, as the C program prints them:
+/// whether each target is taken, the periods of each `Play` (0 once every
+/// move is done), then the position and the direction.
+fn play_axis<W: TableWord, L: Layout>(out: &mut String, player: Player<'_, W, L>, ops: &[Op]) {
+    let mut axis = Axis::new(player, 0);
+    for op in ops {
+        match *op {
+            Op::Queue(target) => {
+                let _ = write!(out, " q{}", u8::from(axis.queue(target.into()).is_ok()));
+            }
+            Op::Play(n) => {
+                for _ in 0..n {
+                    let p = axis.next_period().map_or(0, TableWord::into_ticks);
+                    let _ = write!(out, " {p}");
+                    if p == 0 {
+                        break;
+                    }
+                }
+            }
+            _ => unreachable!("a player's operation"),
+        }
+        let _ = writeln!(out, " | {} {}", axis.position(), axis.direction().sign());
+    }
+}
+
+/// Random operations on an axis: targets within 300 steps of 0, queued
+/// between steps played.
+fn axis_ops(rng: &mut Lcg, long: u32) -> Vec<Op> {
+    (0..1 + below(rng, 16))
+        .map(|_| match below(rng, 5) {
+            0..=2 => Op::Queue(below(rng, 601) as i32 - 300),
+            _ => Op::Play(below(rng, 200.max(long))),
+        })
+        .collect()
 }
 
 /// What the C program must print: every case played by the Rust player.
@@ -393,6 +456,27 @@ fn expected(cases: &[Case]) -> String {
     for (i, case) in cases.iter().enumerate() {
         let _ = writeln!(out, "case {i}");
         let decel = case.decel.as_ref().unwrap_or(&case.accel);
+        if case.axis {
+            match (&case.accel, decel) {
+                (Table::U16(a), Table::U16(d)) => play_axis(
+                    &mut out,
+                    Player::new(Ramp::steps(a)).with_decel(Ramp::steps(d)),
+                    &case.ops,
+                ),
+                (Table::U32(a), Table::U32(d)) => play_axis(
+                    &mut out,
+                    Player::new(Ramp::steps(a)).with_decel(Ramp::steps(d)),
+                    &case.ops,
+                ),
+                (Table::Runs(a), Table::Runs(d)) => play_axis(
+                    &mut out,
+                    Player::<u16, _>::new(&a[..]).with_decel(&d[..]),
+                    &case.ops,
+                ),
+                _ => unreachable!("one kind per case"),
+            }
+            continue;
+        }
         match (&case.accel, decel) {
             (Table::U16(a), Table::U16(d)) => play(
                 &mut out,
@@ -486,6 +570,8 @@ fn program(cases: &[Case], prelude: &str, qualifiers: &str, scramble: bool) -> S
                 Op::Play(n) => (1, n),
                 Op::Stop => (2, 0),
                 Op::Cruise(pos) => (3, pos),
+                // A target, offset to be positive.
+                Op::Queue(t) => (4, (t + 1_000_000) as u32),
             };
             let _ = write!(c, " {code}, {arg}ul,");
         }
@@ -539,6 +625,25 @@ fn program(cases: &[Case], prelude: &str, qualifiers: &str, scramble: bool) -> S
              }} else {{\n            {player}_set_cruise(&p, o[1]);\n        }}\n        \
              printf(\" | %lu\\n\", (unsigned long){player}_remaining(&p));\n    }}\n}}\n"
         );
+        // The same tables as an axis at 0: targets queued, steps played.
+        let _ = writeln!(
+            c,
+            "static void axis_{kind}(const {storage}{table}a{close}, {len} na,\n    \
+             const {storage}{table}d{close}, {len} nd, const unsigned long *o)\n{{\n    \
+             {player}_axis_t x;\n    unsigned long k;\n    {word} v;\n    \
+             {player}_init(&x.player, a, na, d, nd);\n    \
+             {player}_axis_init(&x, 0);\n    \
+             for (; o[0] != 9; o += 2) {{\n        \
+             if (o[0] == 4) {{\n            \
+             printf(\" q%d\", (int){player}_axis_queue(&x, (int32_t)((long)o[1] - 1000000L)));\n        \
+             }} else {{\n            \
+             for (k = 0; k < o[1]; k++) {{\n                \
+             if (!{player}_axis_step(&x, &v)) {{\n                    v = 0;\n                }}\n                \
+             printf(\" %lu\", (unsigned long)v);\n                \
+             if (v == 0) {{\n                    break;\n                }}\n            }}\n        }}\n        \
+             printf(\" | %ld %d\\n\", (long){player}_axis_position(&x), \
+             (int){player}_axis_direction(&x));\n    }}\n}}\n"
+        );
     }
     c.push_str("int main(void)\n{\n");
     for (i, case) in cases.iter().enumerate() {
@@ -553,6 +658,15 @@ fn program(cases: &[Case], prelude: &str, qualifiers: &str, scramble: bool) -> S
             0 => "0, 0".to_string(),
             k => format!("B{i}, {k}"),
         };
+        if case.axis {
+            let _ = writeln!(
+                c,
+                "    printf(\"case {i}\\n\");\n    axis_{kind}(A{i}, {}, {d}{i}, {}, O{i});",
+                n(&format!("A{i}")),
+                n(&format!("{d}{i}"))
+            );
+            continue;
+        }
         let _ = writeln!(
             c,
             "    printf(\"case {i}\\n\");\n    play_{kind}(A{i}, {}, {d}{i}, {}, O{i}, {bands});",
@@ -677,7 +791,8 @@ fn the_c_players_play_as_the_rust_player() {
     compare("program memory, C99 -O2", &printed, &want, &cases);
     let periods = want.split(' ').filter(|w| w.parse::<u32>().is_ok()).count();
     println!(
-        "C players == Rust Player: {} sequences, {} operations, {periods} periods and counts compared, twice",
+        "C players == Rust Player (and C axes == Rust Axis, {} of the sequences): {} sequences, {} operations, {periods} periods and counts compared, twice",
+        cases.iter().filter(|c| c.axis).count(),
         cases.len(),
         cases.iter().map(|c| c.ops.len()).sum::<usize>()
     );

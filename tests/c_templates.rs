@@ -26,23 +26,39 @@ const PLAYERS: &[Player] = &[
     Player {
         name: "player",
         word: "uint16_t",
-        files: &["steps.h", "steps.c", "plan.c", "steps_init.c"],
+        files: &[
+            "steps.h",
+            "axis.h",
+            "steps.c",
+            "plan.c",
+            "steps_init.c",
+            "axis.c",
+        ],
     },
     Player {
         name: "player32",
         word: "uint32_t",
-        files: &["steps.h", "steps.c", "plan.c", "steps_init.c"],
+        files: &[
+            "steps.h",
+            "axis.h",
+            "steps.c",
+            "plan.c",
+            "steps_init.c",
+            "axis.c",
+        ],
     },
     Player {
         name: "runs_player",
         word: "uint16_t",
         files: &[
             "runs.h",
+            "axis.h",
             "runs_refill.c",
             "cursor.c",
             "runs.c",
             "plan.c",
             "runs_init.c",
+            "axis.c",
         ],
     },
 ];

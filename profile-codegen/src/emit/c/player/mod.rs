@@ -54,6 +54,9 @@
 //!   `set_cruise` with the planner of `player::plan`, written against a few
 //!   functions each kind defines (`_period_`, `_place_`, `_settle_`,
 //!   `_crossing_`, `_capped_walk_`, `_last_`, `_enter_`, `_first_`).
+//! - `axis.h`, `axis.c`: an axis on either player, `Axis::queue`'s rules:
+//!   a position, a direction and a queue of moves that join at speed (the
+//!   move playing extended as `Player::retarget` extends it).
 //!
 //! In them, `tpl` stands for the player's prefix (`ramps_player`),
 //! `TPL_WORD` for the period's type, `TPL_STORAGE ` for the storage word
@@ -81,6 +84,8 @@ mod c {
     pub(super) const CURSOR: &str = include_str!("cursor.c");
     pub(super) const RUNS: &str = include_str!("runs.c");
     pub(super) const RUNS_INIT: &str = include_str!("runs_init.c");
+    pub(super) const AXIS_API: &str = include_str!("axis.h");
+    pub(super) const AXIS: &str = include_str!("axis.c");
 }
 
 /// Which players a header holds: one per kind of table among its profiles.
@@ -202,20 +207,27 @@ fn omit(prefix: &str, player: &str) -> String {
 /// A player's templates: its API, for the header, and its definitions, in
 /// the order C defines them.
 struct Templates {
-    api: &'static str,
+    api: &'static [&'static str],
     definitions: &'static [&'static str],
 }
 
 /// The per-step player's templates.
 const STEPS: Templates = Templates {
-    api: c::STEPS_API,
-    definitions: &[c::STEPS, c::PLAN, c::STEPS_INIT],
+    api: &[c::STEPS_API, c::AXIS_API],
+    definitions: &[c::STEPS, c::PLAN, c::STEPS_INIT, c::AXIS],
 };
 
 /// The runs player's templates.
 const RUNS: Templates = Templates {
-    api: c::RUNS_API,
-    definitions: &[c::RUNS_REFILL, c::CURSOR, c::RUNS, c::PLAN, c::RUNS_INIT],
+    api: &[c::RUNS_API, c::AXIS_API],
+    definitions: &[
+        c::RUNS_REFILL,
+        c::CURSOR,
+        c::RUNS,
+        c::PLAN,
+        c::RUNS_INIT,
+        c::AXIS,
+    ],
 };
 
 /// The players of `kinds`, each with its templates.
@@ -257,7 +269,7 @@ pub(super) fn api(names: &Names, style: &CStyle, kinds: Kinds) -> String {
              * and where its definitions are compiled. */\n",
             fill.omit
         ));
-        out.push_str(&fill.guarded(&[templates.api]));
+        out.push_str(&fill.guarded(templates.api));
     }
     out
 }
