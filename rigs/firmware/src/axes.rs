@@ -17,7 +17,7 @@ use stepper_profiles::player::{Axes, Buffered, Player};
 
 use crate::Report;
 use crate::moves::{Event, Model, Table, check_pin, check_turns};
-use crate::profiles::sigmoid_exact;
+use crate::profiles::{linear_exact, sigmoid_exact};
 use crate::step::{self, Players, Stepper};
 
 /// A move of the three axes.
@@ -58,7 +58,103 @@ pub fn run(
     for m in &MOVES {
         (timer, log) = play(m, timer, log, report);
     }
-    timer
+    polyline(timer, log, report)
+}
+
+/// The polyline's vertices from (0, 0, 0): four lines bending by a few
+/// degrees, no axis reversing.
+const VERTICES: [[i64; 3]; 4] = [
+    [600, 200, -130],
+    [1200, 470, -230],
+    [1800, 600, -400],
+    [2400, 870, -470],
+];
+
+/// The lines after the first, queued at the move's first interrupt.
+const QUEUED: [(u32, Event); 3] = [
+    (2, Event::Queue(VERTICES[1])),
+    (2, Event::Queue(VERTICES[2])),
+    (2, Event::Queue(VERTICES[3])),
+];
+
+/// A queued polyline (`Buffered<Axes>::queue`, junction deviation 4
+/// steps) on `linear_exact` (500 Hz to 5 kHz): each line's edges at the
+/// times and on the lead's steps its own rule names, from its vertex; every
+/// edge at the sum of the periods before it; the interior vertices passed
+/// at speed (the lead's period there shorter than the ramp's slowest
+/// entry); the axes at the last vertex. The step at a vertex plans the next
+/// line in the interrupt (5000 to 6500 instructions on the M3,
+/// `docs/performance.md`): its period must be longer, as it is here (a
+/// vertex at the S-curve's 64 kHz is not: its edge comes late).
+fn polyline(timer: SYST, log: &'static mut [u16; step::MAX_STEPS], report: &mut Report) -> SYST {
+    let name = "3 axes, a queued polyline of 4 lines";
+    let table = Table::Steps(&linear_exact::PERIODS, 1);
+    let axes = Axes::new(Player::new(table.ramp()), [0; 3]).with_junction_deviation(4.0);
+    let pins_before = step::step_pins();
+    let s = step::run(
+        Stepper {
+            player: Players::Axes(Buffered::new(axes), VERTICES[0]),
+            timer,
+            events: &QUEUED,
+            log,
+            steps: 0,
+            taken: 0,
+            after_events: [0; 4],
+            toggles: 0,
+            finished: false,
+        },
+        0,
+    );
+    let loaded = &s.log[..s.steps.min(step::MAX_STEPS)];
+    let (mut from, mut first, mut toggles) = ([0i64; 3], 0usize, [0u32; 3]);
+    let mut joined = 0u32;
+    for (k, vertex) in VERTICES.iter().enumerate() {
+        let delta = [0, 1, 2].map(|i| vertex[i] - from[i]);
+        let steps = delta.map(|d| d.unsigned_abs());
+        let lead = steps.iter().copied().max().unwrap_or(0) as usize;
+        let line = Line {
+            first,
+            end: first + lead,
+            steps,
+            events: &[],
+        };
+        let more = check_line(name, table, &line, loaded, &[], false, report);
+        for i in 0..3 {
+            toggles[i] += more[i];
+        }
+        // Each interior vertex at speed: the line's last period shorter
+        // than the ramp's slowest entry.
+        if k + 1 < VERTICES.len() && loaded.get(line.end - 1) < Some(&linear_exact::PERIODS[0]) {
+            joined += 1;
+        }
+        (from, first) = (*vertex, line.end);
+    }
+    report.equal("polyline edges", s.taken as u64, first as u64);
+    report.equal("polyline vertices joined at speed", joined.into(), 3);
+    check_pin(name, loaded, s.taken, report);
+    check_turns(name, s.taken, report);
+    let position = s.player.axes_position();
+    let pins_now = step::step_pins() ^ pins_before;
+    for i in 0..3 {
+        report.equal(
+            "axis position at the pins",
+            position[i] as u64,
+            VERTICES[3][i] as u64,
+        );
+        report.equal(
+            "axis pin level",
+            u64::from(pins_now >> i & 1),
+            u64::from(toggles[i] & 1),
+        );
+    }
+    report.equal("axes done after the polyline", s.player.is_done().into(), 1);
+    hprintln!(
+        "  {:<40} {:>6} edges, {} of 3 vertices joined at speed",
+        name,
+        s.taken,
+        joined
+    );
+    s.timer
 }
 
 /// One straight line of a move: its edges `first..end`, each axis's
@@ -127,7 +223,7 @@ fn play(
         events: m.events,
     };
     let mut want = [0i64; 3];
-    let mut toggles = check_line(m.name, table, &first, loaded, &s.after_events, report);
+    let mut toggles = check_line(m.name, table, &first, loaded, &s.after_events, true, report);
     if let Some((_, _, target)) = target {
         let at_stop = rule_positions(&steps, &signs, first_end);
         let delta = [0, 1, 2].map(|i| target[i] - at_stop[i]);
@@ -137,7 +233,7 @@ fn play(
             steps: delta.map(|d| d.unsigned_abs()),
             events: &[],
         };
-        let more = check_line(m.name, table, &second, loaded, &[], report);
+        let more = check_line(m.name, table, &second, loaded, &[], true, report);
         for i in 0..3 {
             toggles[i] += more[i];
         }
@@ -176,19 +272,37 @@ fn play(
     (s.timer, s.log)
 }
 
-/// Checks one line: the lead's periods against [`Model`], and every edge
-/// of every axis at the time of the lead's step the rule names. Returns
-/// each axis's steps.
+/// Checks one line: the lead's periods against [`Model`] (when `model`:
+/// a line that starts and ends at rest), and every edge of every axis at
+/// the time of the lead's step the rule names. Returns each axis's steps.
 fn check_line(
     name: &str,
     table: Table<'static>,
     line: &Line<'_>,
     loaded: &[u16],
     after_events: &[u32],
+    model: bool,
     report: &mut Report,
 ) -> [u32; 3] {
     let lead_steps = line.steps.iter().copied().max().unwrap_or(0);
     let periods = &loaded[line.first..line.end.min(loaded.len())];
+    if model {
+        check_lead(name, table, line, periods, after_events, report);
+    }
+    check_rule(name, line, loaded, lead_steps, report)
+}
+
+/// The lead's periods of a line against [`Model`], with the events where
+/// the handler applied them (a new target is the model's stop).
+fn check_lead(
+    name: &str,
+    table: Table<'static>,
+    line: &Line<'_>,
+    periods: &[u16],
+    after_events: &[u32],
+    report: &mut Report,
+) {
+    let lead_steps = line.steps.iter().copied().max().unwrap_or(0);
     // The lead's periods: the model's, with the events where the handler
     // applied them (a new target is the model's stop).
     let mut model = Model::new(table, table, lead_steps as u32);
@@ -213,6 +327,17 @@ fn check_line(
     }
     mismatches += u32::from(model.next().is_some());
     report.equal("the lead's periods against the model", mismatches.into(), 0);
+}
+
+/// Every edge of every axis of a line at the time of the lead's step the
+/// rule names, and no other. Returns each axis's steps.
+fn check_rule(
+    name: &str,
+    line: &Line<'_>,
+    loaded: &[u16],
+    lead_steps: u64,
+    report: &mut Report,
+) -> [u32; 3] {
     let (mut off, mut toggles) = (0u32, [0u32; 3]);
     critical_section::with(|cs| {
         let stamps = step::STAMPS.borrow_ref(cs);

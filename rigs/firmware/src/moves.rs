@@ -6,7 +6,9 @@ use cortex_m::peripheral::SYST;
 use cortex_m_semihosting::hprintln;
 use stepper_profiles::player::{Axis, Buffered, Direction, Player, Ramp};
 
-use crate::profiles::{exponential_segments, microstep_runs, sigmoid_exact, sigmoid_orange};
+use crate::profiles::{
+    exponential_segments, linear_estop, linear_exact, microstep_runs, sigmoid_exact, sigmoid_orange,
+};
 use crate::step::{self, Players, Stepper};
 use crate::{DECEL, Report};
 
@@ -100,6 +102,10 @@ pub enum Event {
     /// `Axes::move_to(target)` while moving: a stop, then a straight line
     /// to `target`.
     Target([i64; 3]),
+    /// `Axes::queue(target)`: a line joined at speed to the one before.
+    Queue([i64; 3]),
+    /// `Player::abort()`: a stop along the emergency ramp.
+    Abort,
 }
 
 /// The move as the player's contract describes it, read off the tables with
@@ -111,6 +117,8 @@ pub enum Event {
 pub struct Model<'a> {
     accel: Table<'a>,
     decel: Table<'a>,
+    /// The emergency ramp an abort plays, if any.
+    pub emergency: Option<Table<'a>>,
     pos: u32,
     cruise: u32,
     remaining: u32,
@@ -129,6 +137,7 @@ impl<'a> Model<'a> {
         Model {
             accel,
             decel,
+            emergency: None,
             pos: 0,
             cruise: top,
             remaining: steps,
@@ -158,6 +167,28 @@ impl<'a> Model<'a> {
             }
             // The axes' new target: their player's stop, checked as a stop.
             Event::Target(_) => self.apply(Event::Stop, chosen),
+            // A line queued: the axes' own rules, not this model's.
+            Event::Queue(_) => true,
+            // An abort: a stop on the emergency ramp, which plays from
+            // then on when it shortens the move (else the move's own
+            // deceleration stays).
+            Event::Abort => match self.emergency.take() {
+                None => self.apply(Event::Stop, chosen),
+                Some(emergency) => {
+                    let kept = (self.decel, self.decel_fastest);
+                    self.decel = emergency;
+                    self.decel_fastest = (0..emergency.len_steps())
+                        .map(|p| emergency.at(p))
+                        .min()
+                        .unwrap_or(0);
+                    let remaining = self.remaining;
+                    let ok = self.apply(Event::Stop, chosen);
+                    if chosen >= remaining {
+                        (self.decel, self.decel_fastest) = kept;
+                    }
+                    ok
+                }
+            },
             Event::Stop if self.last == 0 => {
                 self.remaining = 0;
                 chosen == 0
@@ -241,6 +272,9 @@ pub struct Move<'a> {
     /// Played by a `Buffered<Axis>` at the first position, moved to the
     /// second (`steps` apart).
     pub axis: Option<(i64, i64)>,
+    /// The emergency ramp (`Player::with_emergency`) an `Event::Abort`
+    /// plays.
+    pub emergency: Option<Table<'a>>,
 }
 
 /// What a move amounted to.
@@ -278,9 +312,13 @@ pub fn play(
         (true, Table::Runs(a), Table::Runs(d)) => {
             Players::Compressed(Buffered::new(Player::new(a).with_decel(d)))
         }
-        _ => Players::Any(Buffered::new(
-            Player::new(m.accel.ramp()).with_decel(m.decel.ramp()),
-        )),
+        _ => {
+            let player = Player::new(m.accel.ramp()).with_decel(m.decel.ramp());
+            Players::Any(Buffered::new(match m.emergency {
+                Some(emergency) => player.with_emergency(emergency.ramp()),
+                None => player,
+            }))
+        }
     };
     let s = step::run(
         Stepper {
@@ -298,6 +336,7 @@ pub fn play(
     );
     // The model, step by step, with the events where the handler applied them.
     let mut model = Model::new(m.accel, m.decel, m.steps);
+    model.emergency = m.emergency;
     let mut out = Played {
         min: u16::MAX,
         stop_ok: true,
@@ -307,7 +346,7 @@ pub fn play(
     for (k, &got) in s.log[..s.steps.min(step::MAX_STEPS)].iter().enumerate() {
         for (i, &(_, event)) in m.events.iter().enumerate().filter(|(_, e)| e.0 == k as u32) {
             out.stop_ok &= model.apply(event, s.after_events[i]);
-            stopped |= matches!(event, Event::Stop);
+            stopped |= matches!(event, Event::Stop | Event::Abort);
         }
         let want = model.next();
         if Some(got) != want {
@@ -510,7 +549,7 @@ impl Expect {
 /// trapezoid, a triangle, stops, a held ramp, the diffused default table,
 /// an asymmetric move, cruise changes, a segment table and compressed runs
 /// played by both players.
-fn scenarios() -> [Scenario<'static>; 19] {
+fn scenarios() -> [Scenario<'static>; 20] {
     // Monotone tables first: the C-compatible orange S-curve (truncated, so
     // its periods never rise).
     let o: &'static [u16] = &sigmoid_orange::PERIODS;
@@ -528,6 +567,7 @@ fn scenarios() -> [Scenario<'static>; 19] {
         events,
         compressed: false,
         axis: None,
+        emergency: None,
     };
     // The default mode: diffused rounding keeps every pulse edge within half
     // a tick, so the table is not monotone near the top (156, 157, 156, ...);
@@ -762,6 +802,30 @@ fn scenarios() -> [Scenario<'static>; 19] {
                 top: None,
                 end: a_rest,
                 stops: true,
+            },
+        },
+        // A cancel: at step 600, cruising, an abort plays the emergency
+        // ramp from the top, its `STOP_STEPS` at the top: every entry.
+        Scenario {
+            play: Move {
+                emergency: Some(Table::Steps(&linear_estop::PERIODS, 1)),
+                ..mv(
+                    "abort while cruising (linear_exact, emergency linear_estop)",
+                    Table::Steps(&linear_exact::PERIODS, 1),
+                    Table::Steps(&linear_exact::PERIODS, 1),
+                    2000,
+                    &[(600, Event::Abort)],
+                )
+            },
+            expect: Expect {
+                stops: true,
+                ..Expect::exact(
+                    600 + u32::from(linear_exact::STOP_STEPS[linear_exact::LEN - 1]),
+                    linear_exact::TOTAL_TICKS
+                        + 400 * u64::from(linear_exact::LAST_TICKS)
+                        + linear_estop::TOTAL_TICKS,
+                    linear_estop::PERIODS[0],
+                )
             },
         },
         // An axis through `Buffered`: to 2500 from 0 (forward), then from

@@ -84,7 +84,10 @@ pub static PINS: Mutex<RefCell<[u8; MAX_STEPS]>> = Mutex::new(RefCell::new([0; M
 
 /// The player the interrupt plays from, for SysTick's buffered reload: of
 /// any layout, or of compressed tables only, or an axis with the position
-/// its move goes to.
+/// its move goes to. One at a time, moved into the stepper and back: the
+/// axes' variant, with their queue of lines, is the largest, and no other
+/// is kept beside it.
+#[allow(clippy::large_enum_variant)]
 pub enum Players {
     Any(Buffered<Player<'static, u16>>),
     Compressed(Buffered<Player<'static, u16, Compressed>>),
@@ -352,6 +355,12 @@ fn SysTick() {
                             p.move_to(target);
                         }
                     }
+                    Event::Queue(target) => {
+                        if let Players::Axes(p, _) = &mut s.player {
+                            _ = p.queue(target);
+                        }
+                    }
+                    Event::Abort => with_player!(&mut s.player, p => p.abort()),
                     Event::Run => match &mut s.player {
                         Players::Any(p) => _ = p.run(),
                         Players::Compressed(p) => _ = p.run(),

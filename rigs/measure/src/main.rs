@@ -468,20 +468,34 @@ fn axes_polyline(timer: &mut SYST) {
     let mut axes = Axes::new(player, [0; 3]).with_junction_deviation(4.0);
     let mut pins = 0u32;
     check(axes_queue(&mut axes, POLYLINE[0]), "polyline, first line");
-    once("planning, queue, axes 3, a line joined to the one playing", || {
-        check(axes_queue(&mut axes, POLYLINE[1]), "polyline, second line");
-    });
+    once(
+        "planning, queue, axes 3, a line joined to the one playing",
+        || {
+            check(axes_queue(&mut axes, POLYLINE[1]), "polyline, second line");
+        },
+    );
     check(axes_queue(&mut axes, POLYLINE[2]), "polyline, third line");
     let label = "axes, 3, queued polyline (per-step table)";
-    steps(label, "line 1", 3000, || axes_step(&mut axes, timer, &mut pins));
+    steps(label, "line 1", 3000, || {
+        axes_step(&mut axes, timer, &mut pins)
+    });
     for line in 2..=3 {
         once("axes, 3, queued polyline, the step at a vertex", || {
             axes_step(&mut axes, timer, &mut pins)
         });
-        let phase = if line == 2 { "line 2 after its first step" } else { "line 3 after its first step" };
-        steps(label, phase, 2999, || axes_step(&mut axes, timer, &mut pins));
+        let phase = if line == 2 {
+            "line 2 after its first step"
+        } else {
+            "line 3 after its first step"
+        };
+        steps(label, phase, 2999, || {
+            axes_step(&mut axes, timer, &mut pins)
+        });
     }
-    check(axes.position() == POLYLINE[2] && axes.is_done(), "polyline positions");
+    check(
+        axes.position() == POLYLINE[2] && axes.is_done(),
+        "polyline positions",
+    );
 }
 
 /// Runs `steps` calls of a step function between the markers.
