@@ -397,20 +397,24 @@ fn play<W: TableWord, L: Layout>(out: &mut String, player: &mut Player<'_, W, L>
     for op in ops {
         match *op {
             Op::Start(n) => player.start(n),
-            Op::Play(n) => {
-                for _ in 0..n {
-                    let p = player.next_period().map_or(0, TableWord::into_ticks);
-                    let _ = write!(out, " {p}");
-                    if p == 0 {
-                        break;
-                    }
-                }
-            }
+            Op::Play(n) => print_periods(out, n, || player.next_period()),
             Op::Stop => player.stop(),
             Op::Cruise(pos) => player.set_cruise(pos),
             Op::Queue(_) => unreachable!("an axis's operation"),
         }
         let _ = writeln!(out, " | {}", player.remaining());
+    }
+}
+
+/// Up to `n` periods from `next`, as the C program prints them: each in
+/// ticks, and a 0 once the move is done.
+fn print_periods<W: TableWord>(out: &mut String, n: u32, mut next: impl FnMut() -> Option<W>) {
+    for _ in 0..n {
+        let p = next().map_or(0, TableWord::into_ticks);
+        let _ = write!(out, " {p}");
+        if p == 0 {
+            break;
+        }
     }
 }
 
@@ -424,15 +428,7 @@ fn play_axis<W: TableWord, L: Layout>(out: &mut String, player: Player<'_, W, L>
             Op::Queue(target) => {
                 let _ = write!(out, " q{}", u8::from(axis.queue(target.into()).is_ok()));
             }
-            Op::Play(n) => {
-                for _ in 0..n {
-                    let p = axis.next_period().map_or(0, TableWord::into_ticks);
-                    let _ = write!(out, " {p}");
-                    if p == 0 {
-                        break;
-                    }
-                }
-            }
+            Op::Play(n) => print_periods(out, n, || axis.next_period()),
             _ => unreachable!("a player's operation"),
         }
         let _ = writeln!(out, " | {} {}", axis.position(), axis.direction().sign());

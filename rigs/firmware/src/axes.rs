@@ -92,17 +92,12 @@ fn polyline(timer: SYST, log: &'static mut [u16; step::MAX_STEPS], report: &mut 
     let axes = Axes::new(Player::new(table.ramp()), [0; 3]).with_junction_deviation(4.0);
     let pins_before = step::step_pins();
     let s = step::run(
-        Stepper {
-            player: Players::Axes(Buffered::new(axes), VERTICES[0]),
+        Stepper::new(
+            Players::Axes(Buffered::new(axes), VERTICES[0]),
             timer,
-            events: &QUEUED,
+            &QUEUED,
             log,
-            steps: 0,
-            taken: 0,
-            after_events: [0; 4],
-            toggles: 0,
-            finished: false,
-        },
+        ),
         0,
     );
     let loaded = &s.log[..s.steps.min(step::MAX_STEPS)];
@@ -189,17 +184,12 @@ fn play(
     let axes = Axes::new(Player::new(table.ramp()), [0; 3]);
     let pins_before = step::step_pins();
     let s = step::run(
-        Stepper {
-            player: Players::Axes(Buffered::new(axes), m.delta),
+        Stepper::new(
+            Players::Axes(Buffered::new(axes), m.delta),
             timer,
-            events: m.events,
+            m.events,
             log,
-            steps: 0,
-            taken: 0,
-            after_events: [0; 4],
-            toggles: 0,
-            finished: false,
-        },
+        ),
         0,
     );
     let loaded = &s.log[..s.steps.min(step::MAX_STEPS)];

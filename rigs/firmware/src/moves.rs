@@ -320,20 +320,7 @@ pub fn play(
             }))
         }
     };
-    let s = step::run(
-        Stepper {
-            player,
-            timer,
-            events: m.events,
-            log,
-            steps: 0,
-            taken: 0,
-            after_events: [0; 4],
-            toggles: 0,
-            finished: false,
-        },
-        m.steps,
-    );
+    let s = step::run(Stepper::new(player, timer, m.events, log), m.steps);
     // The model, step by step, with the events where the handler applied them.
     let mut model = Model::new(m.accel, m.decel, m.steps);
     model.emergency = m.emergency;

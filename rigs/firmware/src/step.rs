@@ -242,6 +242,29 @@ impl<T> Handover<T> {
     }
 }
 
+impl Stepper {
+    /// A stepper for a move of `player` on `timer`, `events` before given
+    /// steps, recording into `log`: nothing played yet.
+    pub fn new(
+        player: Players,
+        timer: SYST,
+        events: &'static [(u32, Event)],
+        log: &'static mut [u16; MAX_STEPS],
+    ) -> Self {
+        Stepper {
+            player,
+            timer,
+            events,
+            log,
+            steps: 0,
+            taken: 0,
+            after_events: [0; 4],
+            toggles: 0,
+            finished: false,
+        }
+    }
+}
+
 // SAFETY: SysTick and the log are the program's, used by one context at a
 // time.
 unsafe impl Send for Stepper {}

@@ -453,6 +453,36 @@ pub fn axes_queue(axes: &mut Axes<'_, u16, 3>, target: [i64; 3]) -> bool {
     axes.queue(target).is_ok()
 }
 
+/// Queues a target on an axis ([`Axis::queue`]): the planning call of a
+/// target the same way, which the move playing goes on to at speed.
+#[inline(never)]
+#[unsafe(no_mangle)]
+pub fn axis_queue(axis: &mut Axis<'_, u16>, target: i64) -> bool {
+    axis.queue(target).is_ok()
+}
+
+/// An axis's queue: a target the same way queued while the move plays at
+/// its top (the move goes on to it, joined at speed), measured; the axis
+/// ends there.
+#[inline(never)]
+fn axis_joined(timer: &mut SYST) {
+    let mut axis = Axis::new(Player::new(Ramp::steps(&sigmoid_exact::PERIODS)), 0);
+    check(axis_queue(&mut axis, 3000), "axis queue, first target");
+    for _ in 0..1500 {
+        axis_step(&mut axis, timer);
+    }
+    once(
+        "planning, queue, axis, a target the same way joined to the move playing",
+        || {
+            check(axis_queue(&mut axis, 6000), "axis queue, joined");
+        },
+    );
+    while !axis.is_done() {
+        axis_step(&mut axis, timer);
+    }
+    check(axis.position() == 6000, "axis queue, position");
+}
+
 /// The vertices of the queued polyline: three lines of 3000, 3000 and
 /// 3000 lead steps (axis 1 leads), bending by a few degrees, no axis
 /// reversing.
@@ -741,6 +771,7 @@ fn main() -> ! {
 
     axes_move(timer);
     axes_polyline(timer);
+    axis_joined(timer);
 
     // The peer on a move of the same shape: 1000 steps to 64 kHz (the top of
     // sigmoid_exact, 156 ticks of 10 MHz) at constant acceleration, 3000 at
