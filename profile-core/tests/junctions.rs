@@ -7,8 +7,8 @@
 //!   `floor((2kL + d) / 2d)` is at most `s`, so every vertex is passed
 //!   exactly, and the axes end at the last target;
 //! - within a line the lead's period moves by at most one table entry a
-//!   step, a move from rest starts at the slowest entry and the polyline
-//!   ends there;
+//!   step, a move from rest (the first line, a line after a reversal)
+//!   starts at the slowest entry and the polyline ends there;
 //! - where an axis reverses, the lead's periods on both sides are the
 //!   slowest entry: a reversal passes through rest;
 //! - the path speed at a vertex (the lead's rate over its line's
@@ -138,12 +138,14 @@ fn check(table: &[u16], vertices: &[[i64; 2]], delta: f32) -> Result<(), String>
         };
         let speed_after = 1.0 / (f64::from(after) * rho(next));
         // (The slowest entry is a start from rest, always allowed.)
-        if end != table[0] && after != table[0] && speed_after > speed * 1.000_001 {
+        if after != table[0] && speed_after > speed * 1.000_001 {
             return Err(format!(
                 "vertex {k}: faster after ({speed_after} > {speed})"
             ));
         }
-        if end == table[0] {
+        // At rest there (a reversal, or a start from the slowest entry):
+        // the next line starts as a move from rest does.
+        if end == table[0] && (reverses || after == table[0]) {
             last = None;
         }
     }
