@@ -38,7 +38,7 @@
 # player's move; or when a line queued on three axes (`Axes::queue`,
 # joined at speed to the one playing) takes more than 6100 instructions to
 # plan on the M3 or M4F (a bound against regressions, a tenth above the
-# 5535 measured on the M3; the goal of 2000 is not met: the junction's
+# 5540 measured on the M3; the goal of 2000 is not met: the junction's
 # single-precision arithmetic is in software there), or a target queued
 # on an axis the same way as the move playing more than 2000 (the goal:
 # the move extended as a retarget extends it), or a queued

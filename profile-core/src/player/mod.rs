@@ -396,7 +396,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// The deceleration ramp's period at step `pos`, in ticks; `None`
     /// past its last step.
     #[inline(always)]
-    fn decel_ticks(&self, pos: u32) -> Option<u32> {
+    pub(in crate::player) fn decel_ticks(&self, pos: u32) -> Option<u32> {
         match (self.decel.per_step(), self.decel) {
             (Some(d), _) => ticks_at(d, pos),
             (None, Ramp::Indexed(index)) => RunRead::new(index).ticks(pos),

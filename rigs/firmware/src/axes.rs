@@ -83,7 +83,7 @@ const QUEUED: [(u32, Event); 3] = [
 /// edge at the sum of the periods before it; the interior vertices passed
 /// at speed (the lead's period there shorter than the ramp's slowest
 /// entry); the axes at the last vertex. The step at a vertex plans the next
-/// line in the interrupt (5000 to 6500 instructions on the M3,
+/// line in the interrupt (4966 to 6514 instructions on the M3,
 /// `docs/performance.md`): its period must be longer, as it is here (a
 /// vertex at the S-curve's 64 kHz is not: its edge comes late).
 fn polyline(timer: SYST, log: &'static mut [u16; step::MAX_STEPS], report: &mut Report) -> SYST {
@@ -128,20 +128,7 @@ fn polyline(timer: SYST, log: &'static mut [u16; step::MAX_STEPS], report: &mut 
     report.equal("polyline vertices joined at speed", joined.into(), 3);
     check_pin(name, loaded, s.taken, report);
     check_turns(name, s.taken, report);
-    let position = s.player.axes_position();
-    let pins_now = step::step_pins() ^ pins_before;
-    for i in 0..3 {
-        report.equal(
-            "axis position at the pins",
-            position[i] as u64,
-            VERTICES[3][i] as u64,
-        );
-        report.equal(
-            "axis pin level",
-            u64::from(pins_now >> i & 1),
-            u64::from(toggles[i] & 1),
-        );
-    }
+    check_end(&s.player, VERTICES[3], toggles, pins_before, report);
     report.equal("axes done after the polyline", s.player.is_done().into(), 1);
     hprintln!(
         "  {:<40} {:>6} edges, {} of 3 vertices joined at speed",
@@ -150,6 +137,32 @@ fn polyline(timer: SYST, log: &'static mut [u16; step::MAX_STEPS], report: &mut 
         joined
     );
     s.timer
+}
+
+/// The axes at the end of a move: at `want` at the pins, each step pin at
+/// the parity of its `toggles` since `pins_before`.
+fn check_end(
+    player: &Players,
+    want: [i64; 3],
+    toggles: [u32; 3],
+    pins_before: u32,
+    report: &mut Report,
+) {
+    let position = player.axes_position();
+    let pins_now = step::step_pins() ^ pins_before;
+    for i in 0..3 {
+        report.check(
+            position[i] == want[i],
+            "axis position at the pins",
+            position[i] as u64,
+            want[i] as u64,
+        );
+        report.equal(
+            "axis pin level",
+            u64::from(pins_now >> i & 1),
+            u64::from(toggles[i] & 1),
+        );
+    }
 }
 
 /// One straight line of a move: its edges `first..end`, each axis's
@@ -235,21 +248,7 @@ fn play(
     }
     check_pin(m.name, loaded, s.taken, report);
     check_turns(m.name, s.taken, report);
-    let position = s.player.axes_position();
-    let pins_now = step::step_pins() ^ pins_before;
-    for i in 0..3 {
-        report.check(
-            position[i] == want[i],
-            "axis position at the pins",
-            position[i] as u64,
-            want[i] as u64,
-        );
-        report.equal(
-            "axis pin level",
-            u64::from(pins_now >> i & 1),
-            u64::from(toggles[i] & 1),
-        );
-    }
+    check_end(&s.player, want, toggles, pins_before, report);
     report.equal("player done after the move", s.player.is_done().into(), 1);
     hprintln!(
         "  {:<40} {:>6} edges, steps {} {} {}",

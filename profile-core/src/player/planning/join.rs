@@ -114,18 +114,6 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
         }
     }
 
-    /// Steps a stop from a speed of `ticks` a step takes on the
-    /// deceleration ramp (0 when it is slower than every entry).
-    pub(crate) fn stop_steps_from(&self, ticks: u32) -> u32 {
-        self.stop_steps(ticks)
-    }
-
-    /// The deceleration ramp's period at step `pos`, in ticks (`None`
-    /// past its last step).
-    pub(crate) fn decel_period(&self, pos: u32) -> Option<u32> {
-        self.decel_ticks(pos)
-    }
-
     /// The acceleration ramp's slowest and fastest periods in ticks and
     /// its steps: what the mean acceleration of a junction's rule is read
     /// from.

@@ -146,10 +146,7 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     /// queued after it.
     pub(in crate::player) fn tail(&self) -> u32 {
         let speed = self.vertex_speed();
-        tail_from(
-            self.player()
-                .stop_steps_from(period_of(speed * self.line.rho)),
-        )
+        tail_from(self.player().stop_steps(period_of(speed * self.line.rho)))
     }
 
     /// The path speed at the end of the line playing by the backward pass
@@ -163,9 +160,9 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
             let line = &q.line;
             // The line's lead from the vertex's speed can slow to the next
             // vertex's within the line.
-            let tail = tail_from(player.stop_steps_from(period_of(end * line.rho)));
+            let tail = tail_from(player.stop_steps(period_of(end * line.rho)));
             let reach = line.lead.saturating_add(tail);
-            let stop = match player.decel_period(reach.saturating_sub(1)) {
+            let stop = match player.decel_ticks(reach.saturating_sub(1)) {
                 Some(p) if reach > 0 => 1.0 / (p as f32 * line.rho),
                 Some(_) => 0.0,
                 None => f32::INFINITY,
@@ -207,9 +204,9 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
         // last entry not shorter, which on one ramp both ways is the
         // acceleration ramp's too): the new lead's first step is no
         // faster along the path. Slower than every entry: from rest.
-        match self.player().stop_steps_from(p) {
+        match self.player().stop_steps(p) {
             0 => None,
-            n => self.player().decel_period(n - 1),
+            n => self.player().decel_ticks(n - 1),
         }
     }
 }
