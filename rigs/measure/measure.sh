@@ -32,7 +32,7 @@
 # more than 1000 instructions on the table or on the indexed ramp (the
 # goal), or 18 750 on the plain compressed ramp (a bound against
 # regressions, about an eighth above the largest figure measured,
-# 16 635; the goal is not met without the index) on the M3 or M4F; or, on
+# 16 659; the goal is not met without the index) on the M3 or M4F; or, on
 # any core, when the step after a call on a compressed ramp (which decodes
 # the plan's first run) takes more than the largest step of the compressed
 # player's move; or when a line queued on three axes (`Axes::queue`,
