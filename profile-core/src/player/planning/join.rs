@@ -66,7 +66,7 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     pub(crate) fn rejoin(&mut self, tail: u32) -> bool {
         let remaining = self.remaining();
         let longer = remaining.saturating_add(tail);
-        if remaining == 0 || !self.retarget(longer) {
+        if remaining == 0 || !self.retarget_from(remaining, longer) {
             return false;
         }
         self.cut(longer - remaining);

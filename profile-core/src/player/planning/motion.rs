@@ -242,7 +242,11 @@ impl<'a, W: TableWord, L: Layout> Player<'a, W, L> {
     /// assert!(!player.retarget(5) && player.next_period().is_none());
     /// ```
     pub fn retarget(&mut self, steps: u32) -> bool {
-        let remaining = self.remaining();
+        self.retarget_from(self.remaining(), steps)
+    }
+
+    /// [`Player::retarget`] with the steps that remain, `remaining`, read.
+    pub(crate) fn retarget_from(&mut self, remaining: u32, steps: u32) -> bool {
         if steps == remaining {
             // Where the move ends already (a run's end, no longer put off).
             self.endless = false;

@@ -90,6 +90,9 @@ pub struct Axes<'a, W, const N: usize, L = AnyLayout> {
     pub(in crate::player) lead_total: u32,
     /// The axis leading the move.
     lead: usize,
+    /// Where the move ends as begun: its target, or where its steps, each
+    /// clamped to a `u32`, take the axes.
+    target: [i64; N],
     /// The move after this one: a target given while this one played.
     pub(in crate::player) then: Option<[i64; N]>,
     /// The last turn to a queued move: the directions before it, and the
@@ -101,13 +104,16 @@ pub struct Axes<'a, W, const N: usize, L = AnyLayout> {
     pub(in crate::player) lines: Targets<Queued<N>>,
     /// The line playing's figures, when lines are queued after it.
     pub(in crate::player) line: Line<N>,
-    /// The acceleration ramp's mean acceleration, for the junctions.
-    pub(in crate::player) accel: f32,
+    /// `1/√(a·δ)` for the junctions, `a` the acceleration ramp's mean
+    /// acceleration and `δ` the junction deviation
+    /// ([`Axes::with_junction_deviation`]), in Q8 ticks; `u32::MAX` for
+    /// none.
+    pub(in crate::player) scale: u32,
+    /// The cruise position's period, in ticks, for the junctions.
+    pub(in crate::player) cruise: u32,
     /// The steps in which the lead stops from the speed the line playing
     /// ends at: 0 when it ends at rest.
     pub(in crate::player) tail: u32,
-    /// The junction deviation, in steps ([`Axes::with_junction_deviation`]).
-    pub(in crate::player) deviation: f32,
 }
 
 impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
@@ -118,6 +124,7 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     pub fn new(player: Player<'a, W, L>, position: [i64; N]) -> Self {
         let () = Self::AXES;
         Axes {
+            cruise: player.cruise_period(),
             player,
             edges: Edges::REST,
             start: position,
@@ -125,14 +132,14 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
             directions: [Direction::Forward; N],
             lead_steps: 0,
             lead_total: 0,
+            target: position,
             lead: 0,
             then: None,
             turn: None,
             lines: Targets::empty(Queued::NONE),
             line: Line::NONE,
-            accel: 0.0,
+            scale: u32::MAX,
             tail: 0,
-            deviation: 0.0,
         }
     }
 
@@ -243,11 +250,7 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
         if self.lead_total != self.lead_steps {
             return self.position_after(self.lead_total);
         }
-        let mut end = self.start;
-        for (i, e) in end.iter_mut().enumerate() {
-            *e = e.saturating_add(self.directions[i].sign() * i64::from(self.steps[i]));
-        }
-        end
+        self.target
     }
 
     /// Moves to `target` once the move playing has ended: for a register
@@ -283,14 +286,15 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
             None if self.lines.len() > 0 => Line::between(self.start, target),
             None => Line::NONE,
         };
-        let mut delta = [0i64; N];
-        for ((d, t), p) in delta.iter_mut().zip(target).zip(self.start) {
-            *d = t.saturating_sub(p);
-        }
         let mut lead = 0;
-        for (i, &d) in delta.iter().enumerate() {
+        for (i, &to) in target.iter().enumerate() {
+            let d = to.saturating_sub(self.start[i]);
             self.steps[i] = u32::try_from(d.unsigned_abs()).unwrap_or(u32::MAX);
             self.directions[i] = Direction::of(d);
+            self.target[i] = match u64::from(self.steps[i]) == d.unsigned_abs() {
+                true => to,
+                false => self.start[i].saturating_add(d.signum() * i64::from(u32::MAX)),
+            };
             if self.steps[i] > self.steps[lead] {
                 lead = i;
             }
@@ -347,12 +351,14 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     /// the next; the targets stay.
     pub fn set_cruise(&mut self, pos: u32) {
         self.player.set_cruise(pos);
+        self.cruise = self.player.cruise_period();
     }
 
     /// Cruises at a period in ticks ([`Player::set_cruise_period`]) for
     /// this move and the next; the targets stay.
     pub fn set_cruise_period(&mut self, period: W) {
         self.player.set_cruise_period(period);
+        self.cruise = self.player.cruise_period();
     }
 
     /// Plays the next edge: hands the period until the one after it and

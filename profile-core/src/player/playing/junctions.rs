@@ -28,7 +28,9 @@
 
 use crate::base::timer::TableWord;
 use crate::player::playing::axis::Direction;
-use crate::player::playing::lines::{Line, Queued, period_of, tail_from};
+use crate::player::playing::lines::{
+    Line, Queued, REST, handed_period, lead_period, path_period, tail_from,
+};
 use crate::player::playing::targets::QueueFull;
 use crate::player::{Axes, Layout};
 
@@ -41,12 +43,20 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     /// every vertex but where the lines go on straight.
     #[must_use]
     pub fn with_junction_deviation(mut self, steps: f32) -> Self {
-        self.deviation = if steps.is_finite() && steps > 0.0 {
+        let deviation = if steps.is_finite() && steps > 0.0 {
             steps
         } else {
             0.0
         };
-        self.accel = self.mean_accel();
+        // 1/√(a·δ) in Q8 ticks, rounded up (f32's error, 2⁻²³ at most in
+        // the root and the quotient, taken up by 2⁻²⁰).
+        let root = libm::sqrtf(self.mean_accel() * deviation);
+        let scale = libm::ceilf(256.0 / root * (1.0 + 1.0 / (1u32 << 20) as f32));
+        self.scale = if root > 0.0 && scale < u32::MAX as f32 {
+            scale as u32
+        } else {
+            u32::MAX
+        };
         self
     }
 
@@ -84,7 +94,11 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     /// ```
     pub fn queue(&mut self, target: [i64; N]) -> Result<[Direction; N], QueueFull<[i64; N]>> {
         if self.is_done() {
-            return Ok(self.move_to(target));
+            let from = self.position();
+            let directions = self.move_to(target);
+            // The line's figures, for the lines queued after it.
+            self.line = Line::between(from, target);
+            return Ok(directions);
         }
         self.enqueue(target, true)?;
         Ok(self.directions())
@@ -107,19 +121,19 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
         if from == target {
             return Ok(());
         }
-        // The line before: the last queued, or the one playing (or that a
-        // stop ends and a new target follows).
-        let before = match (self.lines.iter().next_back(), self.then) {
-            (Some(last), _) => last.line,
-            (None, Some(then)) => Line::between(self.line_end(), then),
-            (None, None) if self.line.norm == 0.0 => {
-                self.line = Line::between(self.start, from);
-                self.line
-            }
-            (None, None) => self.line,
-        };
         let line = Line::between(from, target);
-        let junction = before.junction(&line, self.accel, self.deviation);
+        // Its junction with the line before: the last queued, or the one
+        // playing (or that a stop ends and a new target follows).
+        let junction = match (self.lines.iter().next_back(), self.then) {
+            (Some(last), _) => last.line.junction(&line, self.scale),
+            (None, Some(then)) => Line::between(self.line_end(), then).junction(&line, self.scale),
+            (None, None) => {
+                if self.line.lead == 0 {
+                    self.line = Line::between(self.start, from);
+                }
+                self.line.junction(&line, self.scale)
+            }
+        };
         self.lines
             .push(Queued {
                 target,
@@ -130,12 +144,11 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
         if rejoin && self.then.is_none() {
             let tail = self.tail();
             if tail > self.tail {
-                let remaining = self.player().remaining();
-                let turn = self.at_turn();
+                let turn = self.at_turn().map(|b| (b, self.player().remaining()));
                 if self.player_mut().rejoin(tail) {
                     self.tail = tail;
                 }
-                self.turn = turn.map(|before| (before, remaining));
+                self.turn = turn;
             }
         }
         Ok(())
@@ -145,31 +158,40 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     /// from the speed its end allows, by the backward pass over the lines
     /// queued after it.
     pub(in crate::player) fn tail(&self) -> u32 {
-        let speed = self.vertex_speed();
-        tail_from(self.player().stop_steps(period_of(speed * self.line.rho)))
+        self.tail_on(self.vertex_period(), self.line.per_lead)
     }
 
-    /// The path speed at the end of the line playing by the backward pass
-    /// over the lines queued after it: at rest at the end of the last.
-    fn vertex_speed(&self) -> f32 {
+    /// The tail of a line of `per_lead` (`1/ρ`) that ends at the path
+    /// period `path`.
+    fn tail_on(&self, path: u64, per_lead: u32) -> u32 {
+        match path {
+            REST => 0,
+            _ => tail_from(self.player().stop_steps(lead_period(path, per_lead))),
+        }
+    }
+
+    /// The path period at the end of the line playing by the backward
+    /// pass over the lines queued after it: at rest at the end of the
+    /// last.
+    fn vertex_period(&self) -> u64 {
         let player = self.player();
-        let cruise = player.cruise_period().max(1) as f32;
-        let mut end = 0f32;
+        let cruise = self.cruise.max(1);
+        let mut end = REST;
         let mut lines = self.lines.iter().rev().peekable();
         while let Some(q) = lines.next() {
             let line = &q.line;
             // The line's lead from the vertex's speed can slow to the next
             // vertex's within the line.
-            let tail = tail_from(player.stop_steps(period_of(end * line.rho)));
+            let tail = self.tail_on(end, line.per_lead);
             let reach = line.lead.saturating_add(tail);
             let stop = match player.decel_ticks(reach.saturating_sub(1)) {
-                Some(p) if reach > 0 => 1.0 / (p as f32 * line.rho),
-                Some(_) => 0.0,
-                None => f32::INFINITY,
+                Some(p) if reach > 0 => path_period(p, line.rho),
+                Some(_) => REST,
+                None => 0,
             };
             let before = lines.peek().map_or(self.line.rho, |b| b.line.rho);
-            let fastest = 1.0 / (cruise * before.max(line.rho));
-            end = stop.min(q.junction).min(fastest);
+            let fastest = path_period(cruise, before.max(line.rho));
+            end = stop.max(q.junction).max(fastest);
         }
         end
     }
@@ -192,14 +214,8 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
         if self.tail == 0 {
             return None;
         }
-        let before = &self.line;
-        let last = self.player().last_step_period() as f32;
-        let p = libm::ceilf(last * before.rho / next.rho);
-        let p = if p >= u32::MAX as f32 {
-            u32::MAX
-        } else {
-            p as u32
-        };
+        let last = self.player().last_step_period();
+        let p = handed_period(last, self.line.rho, next.per_lead);
         // The ramp's entry not faster than that (the deceleration ramp's
         // last entry not shorter, which on one ramp both ways is the
         // acceleration ramp's too): the new lead's first step is no
