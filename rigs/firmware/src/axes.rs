@@ -83,7 +83,7 @@ const QUEUED: [(u32, Event); 3] = [
 /// edge at the sum of the periods before it; the interior vertices passed
 /// at speed (the lead's period there shorter than the ramp's slowest
 /// entry); the axes at the last vertex. The step at a vertex plans the next
-/// line in the interrupt (4682 to 5481 instructions on the M3,
+/// line in the interrupt (3270 to 4763 instructions on the M3,
 /// `docs/performance.md`): its period must be longer, as it is here (a
 /// vertex at the S-curve's 64 kHz is not: its edge comes late).
 fn polyline(timer: SYST, log: &'static mut [u16; step::MAX_STEPS], report: &mut Report) -> SYST {

@@ -111,6 +111,9 @@ pub struct Axes<'a, W, const N: usize, L = AnyLayout> {
     pub(in crate::player) scale: u32,
     /// The cruise position's period, in ticks, for the junctions.
     pub(in crate::player) cruise: u32,
+    /// The queued lines' tails hold: the last backward pass was over them
+    /// all, at the cruise set now.
+    pub(in crate::player) tails: bool,
     /// The steps in which the lead stops from the speed the line playing
     /// ends at: 0 when it ends at rest.
     pub(in crate::player) tail: u32,
@@ -139,6 +142,7 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
             lines: Targets::empty(Queued::NONE),
             line: Line::NONE,
             scale: u32::MAX,
+            tails: false,
             tail: 0,
         }
     }
@@ -279,10 +283,10 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     /// Starts a line to `target` from the position: from rest, or at a
     /// speed of `entry` ticks a step of its lead ([`Player::begin_joined`]),
     /// ending at the speed the lines queued after it allow.
-    fn start_to(&mut self, target: [i64; N], entry: Option<u32>, line: Option<Line<N>>) {
+    fn start_to(&mut self, target: [i64; N], entry: Option<u32>, queued: Option<Queued<N>>) {
         self.start = self.position();
-        self.line = match line {
-            Some(line) => line,
+        self.line = match queued {
+            Some(q) => q.line,
             None if self.lines.len() > 0 => Line::between(self.start, target),
             None => Line::NONE,
         };
@@ -312,8 +316,19 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
         self.lead_steps = l;
         self.lead = lead;
         self.lead_total = l;
-        self.tail = match self.lines.len() {
-            0 => 0,
+        // A queued line's tail as the last backward pass found it, if that
+        // was over every line after it at this cruise.
+        self.tail = match (self.lines.len(), queued) {
+            (0, _) => 0,
+            (_, Some(q)) if self.tails => {
+                // What the backward pass finds now, in the tests' builds.
+                #[cfg(debug_assertions)]
+                {
+                    let tail = self.tail();
+                    debug_assert_eq!(q.tail, tail, "a queued line's tail kept");
+                }
+                q.tail
+            }
             _ => self.tail(),
         };
         // The cruise set on the axes holds.
@@ -352,6 +367,7 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     pub fn set_cruise(&mut self, pos: u32) {
         self.player.set_cruise(pos);
         self.cruise = self.player.cruise_period();
+        self.tails = false;
     }
 
     /// Cruises at a period in ticks ([`Player::set_cruise_period`]) for
@@ -359,6 +375,7 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     pub fn set_cruise_period(&mut self, period: W) {
         self.player.set_cruise_period(period);
         self.cruise = self.player.cruise_period();
+        self.tails = false;
     }
 
     /// Plays the next edge: hands the period until the one after it and
@@ -417,7 +434,7 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
                 self.lines.push_front(next);
                 (target, None, None)
             }
-            (None, Some(q)) => (q.target, self.entry_period(&q.line), Some(q.line)),
+            (None, Some(q)) => (q.target, self.entry_period(&q.line), Some(q)),
             (None, None) => return false,
         };
         let before = self.directions;

@@ -139,8 +139,12 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
                 target,
                 line,
                 junction,
+                tail: 0,
             })
             .map_err(|_| QueueFull { target })?;
+        // The lines' tails change with the line queued: the backward pass
+        // below finds them again, or they are found at their vertices.
+        self.tails = false;
         if rejoin && self.then.is_none() {
             let tail = self.tail();
             if tail > self.tail {
@@ -157,8 +161,9 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     /// The tail of the line playing: the steps in which its lead stops
     /// from the speed its end allows, by the backward pass over the lines
     /// queued after it.
-    pub(in crate::player) fn tail(&self) -> u32 {
-        self.tail_on(self.vertex_period(), self.line.per_lead)
+    pub(in crate::player) fn tail(&mut self) -> u32 {
+        let path = self.vertex_period();
+        self.tail_on(path, self.line.per_lead)
     }
 
     /// The tail of a line of `per_lead` (`1/ρ`) that ends at the path
@@ -171,28 +176,35 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     }
 
     /// The path period at the end of the line playing by the backward
-    /// pass over the lines queued after it: at rest at the end of the
-    /// last.
-    fn vertex_period(&self) -> u64 {
-        let player = self.player();
+    /// pass over the lines queued after it (at rest at the end of the
+    /// last), each line's tail kept with it for its vertex.
+    fn vertex_period(&mut self) -> u64 {
         let cruise = self.cruise.max(1);
         let mut end = REST;
-        let mut lines = self.lines.iter().rev().peekable();
-        while let Some(q) = lines.next() {
-            let line = &q.line;
+        for i in (0..self.lines.len()).rev() {
+            let Some(&Queued { line, junction, .. }) = self.lines.get(i) else {
+                break;
+            };
             // The line's lead from the vertex's speed can slow to the next
             // vertex's within the line.
             let tail = self.tail_on(end, line.per_lead);
+            if let Some(kept) = self.lines.get_mut(i) {
+                kept.tail = tail;
+            }
             let reach = line.lead.saturating_add(tail);
-            let stop = match player.decel_ticks(reach.saturating_sub(1)) {
+            let stop = match self.player().decel_ticks(reach.saturating_sub(1)) {
                 Some(p) if reach > 0 => path_period(p, line.rho),
                 Some(_) => REST,
                 None => 0,
             };
-            let before = lines.peek().map_or(self.line.rho, |b| b.line.rho);
+            let before = match i {
+                0 => self.line.rho,
+                _ => self.lines.get(i - 1).map_or(self.line.rho, |b| b.line.rho),
+            };
             let fastest = path_period(cruise, before.max(line.rho));
-            end = stop.max(q.junction).max(fastest);
+            end = stop.max(junction).max(fastest);
         }
+        self.tails = true;
         end
     }
 

@@ -163,13 +163,17 @@ fn bend(z: u32) -> u32 {
     }
     (acc + 12) as u32
 }
-/// A line queued after the one playing: where it ends, its figures, and
-/// the path period its junction with the line before it allows.
+/// A line queued after the one playing: where it ends, its figures, the
+/// path period its junction with the line before it allows, and its tail
+/// as the last backward pass found it.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Queued<const N: usize> {
     pub(crate) target: [i64; N],
     pub(crate) line: Line<N>,
     pub(crate) junction: u64,
+    /// The steps in which its lead stops from the speed its end allows
+    /// (`Axes::tails` says whether it holds).
+    pub(crate) tail: u32,
 }
 
 impl<const N: usize> Queued<N> {
@@ -178,6 +182,7 @@ impl<const N: usize> Queued<N> {
         target: [0; N],
         line: Line::NONE,
         junction: REST,
+        tail: 0,
     };
 }
 

@@ -101,6 +101,17 @@ impl<T: Copy> Targets<T> {
         self.targets[slot] = target;
     }
 
+    /// The `i`-th target.
+    pub(crate) fn get(&self, i: usize) -> Option<&T> {
+        (i < self.len()).then(|| &self.targets[self.slot(i)])
+    }
+
+    /// The `i`-th target, to be changed in place.
+    pub(crate) fn get_mut(&mut self, i: usize) -> Option<&mut T> {
+        let slot = self.slot(i);
+        (i < self.len()).then(|| &mut self.targets[slot])
+    }
+
     /// The targets in order.
     pub(crate) fn iter(&self) -> impl DoubleEndedIterator<Item = T> + '_ {
         (0..self.len()).map(|i| self.targets[self.slot(i)])
