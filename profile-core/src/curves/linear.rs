@@ -171,11 +171,11 @@ impl IntegerLinear {
 
 /// `f(t) = fmin + a t` up to `fmax`, then `fmax`.
 pub(crate) struct LinearInTime {
-    fmin: f64,
+    pub(super) fmin: f64,
     fmax: f64,
-    accel: f64,
+    pub(super) accel: f64,
     rise: f64,
-    rise_steps: f64,
+    pub(super) rise_steps: f64,
 }
 
 impl LinearInTime {

@@ -19,11 +19,13 @@ mod kind;
 mod exponential;
 mod jerk_limited;
 mod linear;
+mod proved;
 mod sigmoid;
 mod three_stage;
 mod torque_limited;
 
 pub(crate) use kind::{CurveKind, CurveSchema, IndexEntry, Length, Modes};
+pub(crate) use proved::LinearEdges;
 
 impl CurveSchema {
     /// The schema of the curve named `name`.

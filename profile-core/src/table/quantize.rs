@@ -296,6 +296,22 @@ impl Quantizer {
         Ok(ticks)
     }
 
+    /// Entry `index` of a quantizer keeping no figures, rounded by
+    /// diffusion, whose end is `edge` ticks from the start as the nearest
+    /// tick to the exact edge ([`push`](Self::push) with that edge gives
+    /// the same period): `None`, changing nothing, where that period does
+    /// not fit the word, for `push` to say why.
+    pub(crate) fn push_nearest_edge(&mut self, index: u32, edge: u64) -> Option<u32> {
+        debug_assert!(!self.keep && self.rounding == Rounding::Diffuse);
+        let ticks = u32::try_from(edge.checked_sub(self.emitted)?).ok()?;
+        if ticks == 0 || ticks > self.timer.word.max() || self.stored(index, ticks, "").is_err() {
+            return None;
+        }
+        self.exact_edge = edge as f64;
+        self.emitted = edge;
+        Some(ticks)
+    }
+
     /// Rounds an entry of `entry` exact ticks that is played `repeat` times
     /// in a row, the last time ending `edge` ticks from the start (the
     /// running sum of exact entries when `None`), and checks it against the
