@@ -17,3 +17,15 @@ pub(crate) mod timer;
 /// 65 536 entries are 128 KiB of `u16` flash, more than most microcontrollers
 /// spend on one ramp; the limit keeps compile-time expansion bounded.
 pub const MAX_LEN: u32 = 65_536;
+
+/// The crate's unit tests' random numbers: xorshift64 from `seed`
+/// (not 0).
+#[cfg(test)]
+pub(crate) fn xorshift(mut seed: u64) -> impl FnMut() -> u64 {
+    move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        seed
+    }
+}

@@ -165,13 +165,7 @@ mod tests {
     /// edges it leaves to the solver are few.
     #[test]
     fn proved_edges_are_the_closed_forms_rounded() {
-        let mut s = 0x0DDB_A11C_AFE5_EED5u64;
-        let mut next = move || {
-            s ^= s << 13;
-            s ^= s >> 7;
-            s ^= s << 17;
-            s
-        };
+        let mut next = crate::base::xorshift(0x0DDB_A11C_AFE5_EED5);
         let (mut proved, mut solved) = (0u64, 0u64);
         for case in 0..400 {
             let timers = [1e5, 1e6, 8e6, 1e7, 16e6, 72e6, 1.6e8];

@@ -281,6 +281,20 @@ mod tests {
         )
     }
 
+    /// The table of `spec` (`len` words `W`) by `generate` and by
+    /// `generate_periods`: the same periods or the same error; `true` for
+    /// a table.
+    fn same<W: TableWord + Default + PartialEq + core::fmt::Debug>(spec: &Spec, len: u32) -> bool {
+        let (mut a, mut b) = (
+            std::vec![W::default(); len as usize],
+            std::vec![W::default(); len as usize],
+        );
+        let whole = spec.generate(&mut a).map(|_| ());
+        assert_eq!(spec.generate_periods(&mut b), whole, "{spec:?}");
+        assert!(whole.is_err() || a == b, "{spec:?}");
+        whole.is_ok()
+    }
+
     /// `generate_periods` against `generate` on random linear ramps (whose
     /// edges it proves rather than solves) of both words, with and without
     /// a reload offset, the ramps out of the word's reach included: the
@@ -288,14 +302,7 @@ mod tests {
     #[test]
     fn periods_alone_are_the_tables_periods() {
         use crate::{Linear, LinearExtent};
-        use std::{format, vec};
-        let mut s = 0x5EED_0F11_AE77_1234u64;
-        let mut next = move || {
-            s ^= s << 13;
-            s ^= s >> 7;
-            s ^= s << 17;
-            s
-        };
+        let mut next = crate::base::xorshift(0x5EED_0F11_AE77_1234);
         let mut tables = 0;
         for case in 0..300 {
             let timer_hz = [1_000_000, 8_000_000, 10_000_000, 16_000_000, 72_000_000][case % 5];
@@ -323,23 +330,11 @@ mod tests {
             )
             .with_word(word)
             .with_reload_offset((next() % 3) as i32);
-            let what = format!("{spec:?}");
-            match word {
-                Word::U16 => {
-                    let (mut a, mut b) = (vec![0u16; len as usize], vec![0u16; len as usize]);
-                    let whole = spec.generate(&mut a).map(|_| ());
-                    assert_eq!(spec.generate_periods(&mut b), whole, "{what}");
-                    assert!(whole.is_err() || a == b, "{what}");
-                    tables += u32::from(whole.is_ok());
-                }
-                Word::U32 => {
-                    let (mut a, mut b) = (vec![0u32; len as usize], vec![0u32; len as usize]);
-                    let whole = spec.generate(&mut a).map(|_| ());
-                    assert_eq!(spec.generate_periods(&mut b), whole, "{what}");
-                    assert!(whole.is_err() || a == b, "{what}");
-                    tables += u32::from(whole.is_ok());
-                }
-            }
+            let whole = match word {
+                Word::U16 => same::<u16>(&spec, len),
+                Word::U32 => same::<u32>(&spec, len),
+            };
+            tables += u32::from(whole);
         }
         // Most are tables, some errors.
         assert!(tables > 200, "{tables} tables of 300");

@@ -109,12 +109,10 @@ mod tests {
     }
 
     fn inputs() -> impl Iterator<Item = u64> {
-        let mut s = 0x9E37_79B9_7F4A_7C15u64;
+        let mut next = crate::base::xorshift(0x9E37_79B9_7F4A_7C15);
+        // Every magnitude: the random bits shifted down at random.
         let random = core::iter::from_fn(move || {
-            s ^= s << 13;
-            s ^= s >> 7;
-            s ^= s << 17;
-            // Every magnitude: the random bits shifted down at random.
+            let s = next();
             Some(s >> (s % 64))
         });
         // Each guess's interval's ends and middle, at every even shift.

@@ -246,13 +246,7 @@ mod tests {
     }
 
     fn random() -> impl FnMut() -> u64 {
-        let mut s = 0x2545_F491_4F6C_DD1Du64;
-        move || {
-            s ^= s << 13;
-            s ^= s >> 7;
-            s ^= s << 17;
-            s
-        }
+        crate::base::xorshift(0x2545_F491_4F6C_DD1D)
     }
 
     /// A random line of three axes, of every length to 2³².
