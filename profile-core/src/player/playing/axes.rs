@@ -172,6 +172,7 @@ impl<'a, W: TableWord, const N: usize, L: Layout> Axes<'a, W, N, L> {
     pub fn set_position(&mut self, position: [i64; N]) -> Result<(), Moving> {
         self.idle()?;
         self.start = position;
+        self.target = position;
         self.steps = [0; N];
         self.lead_steps = 0;
         self.lead_total = 0;
