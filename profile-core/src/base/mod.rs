@@ -18,14 +18,14 @@ pub(crate) mod timer;
 /// spend on one ramp; the limit keeps compile-time expansion bounded.
 pub const MAX_LEN: u32 = 65_536;
 
-/// The crate's unit tests' random numbers: xorshift64 from `seed`
+/// The crate's unit tests' random numbers: xorshift64 from `state`
 /// (not 0).
 #[cfg(test)]
-pub(crate) fn xorshift(mut seed: u64) -> impl FnMut() -> u64 {
+pub(crate) fn xorshift(mut state: u64) -> impl FnMut() -> u64 {
     move || {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        seed
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        state
     }
 }
