@@ -22,30 +22,26 @@ struct Player {
     files: &'static [&'static str],
 }
 
+/// The per-step players' files, for either word.
+const STEP_FILES: &[&str] = &[
+    "steps.h",
+    "axis.h",
+    "steps.c",
+    "plan.c",
+    "steps_init.c",
+    "axis.c",
+];
+
 const PLAYERS: &[Player] = &[
     Player {
         name: "player",
         word: "uint16_t",
-        files: &[
-            "steps.h",
-            "axis.h",
-            "steps.c",
-            "plan.c",
-            "steps_init.c",
-            "axis.c",
-        ],
+        files: STEP_FILES,
     },
     Player {
         name: "player32",
         word: "uint32_t",
-        files: &[
-            "steps.h",
-            "axis.h",
-            "steps.c",
-            "plan.c",
-            "steps_init.c",
-            "axis.c",
-        ],
+        files: STEP_FILES,
     },
     Player {
         name: "runs_player",
